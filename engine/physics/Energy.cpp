@@ -1,0 +1,29 @@
+#include "engine/physics/Energy.h"
+
+#include "engine/physics/ForceCoupling.h"
+#include "engine/physics/ForceDrivenSystem.h"
+
+namespace hemiroll::physics {
+
+using namespace force_slot;
+
+EnergyTerms mechanicalEnergy(const RollingDynamics& dynamics, const StateVector<12>& x) {
+  const ModelConstants& c = dynamics.constants();
+  const HemisphereParams& p = c.params;
+  const RollingGeometry g = geometryOf(c, x);
+  const Vec3 omega = x.segment<3>(w_x);
+  // The contact point is the instantaneous centre of rotation: T_s = w J_c w / 2.
+  const double shell = 0.5 * omega.dot(dynamics.contactInertia(g.faceNormal) * omega);
+  const Vec3 vp = pointKinematics(g, p.radius, x[u_a], x[v_a], omega).velocity;
+  const double zShell = p.radius - c.comDepth * g.faceNormal.z();
+  const double zPoint = p.radius + g.rhoP.z();
+  return {shell + 0.5 * p.pointMass * vp.squaredNorm(), p.gravity * (p.shellMass * zShell + p.pointMass * zPoint)};
+}
+
+double externalPower(const RollingDynamics& dynamics, const StateVector<12>& x, const Vec3& force) {
+  const ModelConstants& c = dynamics.constants();
+  const RollingGeometry g = geometryOf(c, x);
+  return force.dot(pointKinematics(g, c.params.radius, x[u_a], x[v_a], x.segment<3>(w_x)).velocity);
+}
+
+}  // namespace hemiroll::physics

@@ -1,0 +1,56 @@
+#pragma once
+// Force couplings between the haptic proxy and the mass point, Sec. 3.2.
+// F_h is the force on the mass point; the device renders -F_h to the hand.
+//   M1: F_h = -k_r (r_p - r_h) - k_v (v_p - v_h); only its in-face part drives
+//       the model (eq. 42).
+//   M2: the same F_h, all of it: in-face to the mass point, the normal part
+//       through the face to the hemisphere.
+//   M3: as M2 with anisotropic gains K = R diag(k, k, alpha k) R^T (eqs. 43-45);
+//       the damping gets the same anisotropy.
+// Visual only (Sec. 4.1): the model is driven exactly as by the chosen method,
+// but no force is rendered.
+
+#include "engine/physics/RollingDynamics.h"
+
+namespace hemiroll::physics {
+
+enum class ForceMethod { M1, M2, M3 };
+
+struct CouplingDef {
+  ForceMethod method = ForceMethod::M3;
+  double stiffness = 250.0;  // k_r [N/m] (in-face stiffness for M3)
+  double damping = 10.0;     // k_v [N s/m]
+  double alpha = 2.0;        // M3 only: k_rz / k_rx (and k_vz / k_vx) [-]
+  bool visualOnly = false;   // drive the model, render no force
+};
+
+// Empty when valid, else a sentence naming the field.
+std::string validateCoupling(const CouplingDef& def);
+
+// Position and velocity of the haptic proxy in the base frame [m], [m/s].
+struct ProxyPose {
+  Vec3 position = Vec3::Zero();
+  Vec3 velocity = Vec3::Zero();
+};
+
+struct CouplingForces {
+  Vec3 handForce;    // F_h on the mass point [N], base frame
+  Vec3 modelForce;   // the part of F_h the model receives [N]
+  Vec3 deviceForce;  // force to render on the device [N]: -F_h, or zero if visual only
+};
+
+// Absolute position and velocity of the mass point, r_p = r_o + rho_p and
+// v_p = w x (rho_p - rho_c) + rho_p' (Sec. 3.2).
+struct PointKinematics {
+  Vec3 position;
+  Vec3 velocity;
+};
+PointKinematics pointKinematics(const RollingGeometry& g, double radius, double u_a, double v_a,
+                                const Vec3& omega);
+
+CouplingForces computeCoupling(const CouplingDef& def, const RollingGeometry& g, const PointKinematics& point,
+                               const ProxyPose& proxy);
+
+const char* forceMethodName(ForceMethod m);
+
+}  // namespace hemiroll::physics

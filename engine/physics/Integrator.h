@@ -1,0 +1,45 @@
+#pragma once
+// One-step integrators behind one interface, so that the stepper, the servo
+// loop and the tools select them by name. Fixed-size state, no allocation.
+
+#include <string_view>
+
+#include "engine/physics/OdeSystem.h"
+
+namespace hemiroll::physics {
+
+template <int N>
+class Integrator {
+ public:
+  virtual ~Integrator() = default;
+  virtual std::string_view name() const = 0;
+  virtual int order() const = 0;
+  // Advances x from t to t + h. h may be any positive value: the stepper
+  // shortens steps to locate events.
+  virtual void step(const OdeSystem<N>& system, double t, StateVector<N>& x, double h) = 0;
+};
+
+// The classical fourth-order Runge-Kutta method, the paper's choice (h = 1 ms).
+template <int N>
+class RungeKutta4 final : public Integrator<N> {
+ public:
+  std::string_view name() const override { return "rk4"; }
+  int order() const override { return 4; }
+
+  void step(const OdeSystem<N>& f, double t, StateVector<N>& x, double h) override {
+    const double half = 0.5 * h;
+    f.derivative(t, x, k1_);
+    stage_ = x + half * k1_;
+    f.derivative(t + half, stage_, k2_);
+    stage_ = x + half * k2_;
+    f.derivative(t + half, stage_, k3_);
+    stage_ = x + h * k3_;
+    f.derivative(t + h, stage_, k4_);
+    x += (h / 6.0) * (k1_ + 2.0 * (k2_ + k3_) + k4_);
+  }
+
+ private:
+  StateVector<N> k1_, k2_, k3_, k4_, stage_;
+};
+
+}  // namespace hemiroll::physics

@@ -1,0 +1,45 @@
+#include "engine/physics/Orientation.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace hemiroll::physics {
+
+Orientation makeOrientation(double u_o, double v_o, double psi) {
+  Orientation o;
+  o.cu = std::cos(u_o);
+  o.su = std::sin(u_o);
+  o.cv = std::cos(v_o);
+  o.sv = std::sin(v_o);
+  o.cpsi = std::cos(psi);
+  o.spsi = std::sin(psi);
+  // Columns are i_o, j_o, k_o; written out from Rz(psi)^T Rx(v)^T Ry(u)^T.
+  o.R << o.cu * o.cpsi + o.su * o.sv * o.spsi, o.cv * o.spsi, -o.su * o.cpsi + o.cu * o.sv * o.spsi,
+      -o.cu * o.spsi + o.su * o.sv * o.cpsi, o.cv * o.cpsi, o.su * o.spsi + o.cu * o.sv * o.cpsi,
+      o.su * o.cv, -o.sv, o.cu * o.cv;
+  return o;
+}
+
+ContactRates contactRates(const Orientation& o, double radius, const Vec3& w) {
+  const double a = w.x() * o.spsi + w.y() * o.cpsi;
+  const double secV = 1.0 / o.cv;
+  return ContactRates{
+      radius * w.y(),
+      -radius * w.x(),
+      -a * secV,
+      -w.x() * o.cpsi + w.y() * o.spsi,
+      -w.z() - a * o.sv * secV,
+  };
+}
+
+ContactAngles contactAnglesFromMatrix(const Mat3& R, double psiNear) {
+  ContactAngles a;
+  a.u_o = std::atan2(R(2, 0), R(2, 2));
+  a.v_o = std::atan2(-R(2, 1), std::hypot(R(2, 0), R(2, 2)));
+  const double psi = std::atan2(R(0, 1), R(1, 1));
+  const double turn = 2.0 * std::numbers::pi;
+  a.psi = psi + turn * std::round((psiNear - psi) / turn);
+  return a;
+}
+
+}  // namespace hemiroll::physics

@@ -1,0 +1,37 @@
+#pragma once
+// Orientation of the hemisphere and the contact kinematics, eqs. (1), (6),
+// (11)-(15). The body frame sits at the centre of the flat face, z along the
+// face normal; the sphere centre is r_o = (u_a, v_a, R).
+
+#include "engine/physics/StateLayout.h"
+
+namespace hemiroll::physics {
+
+// Trigonometry of (u_o, v_o, psi) and the matrix R of eq. (6), computed once
+// per evaluation and shared by the kinematics, the dynamics and the couplings.
+struct Orientation {
+  double cu, su, cv, sv, cpsi, spsi;
+  Mat3 R;  // body frame -> base frame, R = Rz(psi)^T Rx(v_o)^T Ry(u_o)^T
+
+  Vec3 faceNormal() const { return R.col(2); }  // k_o in the base frame
+  double cosTilt() const { return cu * cv; }    // k_o . e_z
+};
+
+Orientation makeOrientation(double u_o, double v_o, double psi);
+
+// Contact kinematics, eqs. (11)-(15): rates of (u_a, v_a, u_o, v_o, psi) for
+// angular velocity w (base frame). Eq. (31) as printed multiplies u_o' by
+// cos v_o; it must divide (physics-notes.md).
+struct ContactRates {
+  double u_a, v_a, u_o, v_o, psi;
+};
+ContactRates contactRates(const Orientation& o, double radius, const Vec3& omega);
+
+// Inverse of eq. (6) on the lower hemisphere (|u_o|, |v_o| < pi/2). psi is
+// returned in (-pi, pi]; pass the previous value to get the continuous branch.
+struct ContactAngles {
+  double u_o, v_o, psi;
+};
+ContactAngles contactAnglesFromMatrix(const Mat3& R, double psiNear = 0.0);
+
+}  // namespace hemiroll::physics

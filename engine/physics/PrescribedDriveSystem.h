@@ -1,0 +1,41 @@
+#pragma once
+// The 8-state prescribed drive, eqs. (46)-(48): the mass point follows a
+// given trajectory p(t) exactly, and the force that makes it do so is
+// recovered from eq. (46) afterwards.
+
+#include "engine/physics/OdeSystem.h"
+#include "engine/physics/RollingDynamics.h"
+
+namespace hemiroll::physics {
+
+class MassPointTrajectory {
+ public:
+  struct Sample {
+    Vec2 p, pDot, pDDot;  // [m], [m/s], [m/s^2], face coordinates
+  };
+  virtual ~MassPointTrajectory() = default;
+  virtual Sample at(double t) const = 0;
+};
+
+class PrescribedDriveSystem final : public OdeSystem<8> {
+ public:
+  PrescribedDriveSystem(const HemisphereParams& params, const MassPointTrajectory& trajectory,
+                        const DomainLimits& limits = {});
+
+  void derivative(double t, const BodyState& x, BodyState& dxdt) const override;
+  DomainMargins margins(double t, const BodyState& x) const override;
+
+  // f of eq. (46): the in-face force on the mass point that realises p''(t).
+  Vec2 drivingForce(double t, const BodyState& x) const;
+  // The same instant as a 12-state vector, with p and p' from the trajectory.
+  ForceDrivenState fullState(double t, const BodyState& x) const;
+
+  const RollingDynamics& dynamics() const { return dynamics_; }
+
+ private:
+  RollingDynamics dynamics_;
+  const MassPointTrajectory& trajectory_;
+  DomainLimits limits_;
+};
+
+}  // namespace hemiroll::physics
