@@ -1,18 +1,21 @@
 #include "engine/physics/Orientation.h"
 
+#include "engine/physics/SinCos.h"
+
 #include <cmath>
 #include <numbers>
 
 namespace hemiroll::physics {
 
 Orientation makeOrientation(double u_o, double v_o, double psi) {
+  const SinCos u = sinCos(u_o), v = sinCos(v_o), p = sinCos(psi);
   Orientation o;
-  o.cu = std::cos(u_o);
-  o.su = std::sin(u_o);
-  o.cv = std::cos(v_o);
-  o.sv = std::sin(v_o);
-  o.cpsi = std::cos(psi);
-  o.spsi = std::sin(psi);
+  o.cu = u.cos;
+  o.su = u.sin;
+  o.cv = v.cos;
+  o.sv = v.sin;
+  o.cpsi = p.cos;
+  o.spsi = p.sin;
   // Columns are i_o, j_o, k_o; written out from Rz(psi)^T Rx(v)^T Ry(u)^T.
   o.R << o.cu * o.cpsi + o.su * o.sv * o.spsi, o.cv * o.spsi, -o.su * o.cpsi + o.cu * o.sv * o.spsi,
       -o.cu * o.spsi + o.su * o.sv * o.cpsi, o.cv * o.cpsi, o.su * o.spsi + o.cu * o.sv * o.cpsi,

@@ -1,0 +1,68 @@
+#pragma once
+// sin and cos of one angle together, computed by the engine itself.
+//
+// Why not std::sin/std::cos: the three angles of the orientation are the
+// largest single cost of a right-hand side (libm's sincos is ~110 instructions
+// a call, a third of an evaluation), and libm's last bit differs between C
+// library versions, which would break bit-for-bit replays across machines.
+// This version is a Cody-Waite reduction by pi/2 (three-part constant, exact
+// for |x| < 2^20 pi/2) followed by Taylor polynomials on [-pi/4, pi/4],
+// truncated where the next term is below 1e-17. Accuracy is checked against
+// libm in tests/physics/SinCosTest.cpp. Beyond the exact reduction range
+// (|x| > 1.6e6 rad, far beyond any physical run) it defers to libm.
+
+#include <cmath>
+
+namespace hemiroll::physics {
+
+struct SinCos {
+  double sin, cos;
+};
+
+namespace detail {
+// pi/2 split into 33 + 33 + 53 significant bits: n * kPiOver2Hi and
+// n * kPiOver2Mid are exact for |n| < 2^20.
+inline constexpr double kPiOver2Hi = 0x1.921fb544p+0;
+inline constexpr double kPiOver2Mid = 0x1.0b4611a6p-34;
+inline constexpr double kPiOver2Lo = 0x1.3198a2e037073p-69;
+inline constexpr double kTwoOverPi = 0.6366197723675814;
+inline constexpr double kExactReductionLimit = 1.6e6;
+inline constexpr double kRoundingShift = 0x1.8p52;
+
+// Taylor series on |r| <= pi/4 (plus a little slack from the rounding of n).
+inline double sinKernel(double r) {
+  const double z = r * r;
+  const double p = -1.0 / 6 + z * (1.0 / 120 + z * (-1.0 / 5040 + z * (2.7557319223985893e-06 +
+                   z * (-2.505210838544172e-08 + z * (1.6059043836821613e-10 +
+                   z * (-7.647163731819816e-13 + z * 2.8114572543455206e-15))))));
+  return r + r * z * p;
+}
+inline double cosKernel(double r) {
+  const double z = r * r;
+  const double q = 1.0 / 24 + z * (-1.0 / 720 + z * (2.48015873015873e-05 + z * (-2.755731922398589e-07 +
+                   z * (2.08767569878681e-09 + z * (-1.1470745597729725e-11 +
+                   z * (4.779477332387385e-14 + z * -1.5619206968586225e-16))))));
+  const double half = 0.5 * z;
+  // 1 - z/2 loses bits when z/2 is near 1/4..1/2; take the exact part first.
+  const double w = 1.0 - half;
+  return w + (((1.0 - w) - half) + z * z * q);
+}
+}  // namespace detail
+
+inline SinCos sinCos(double x) {
+  using namespace detail;
+  if (!(std::fabs(x) < kExactReductionLimit)) return {std::sin(x), std::cos(x)};
+  // Round to nearest by the 1.5 * 2^52 shift: no libm call, same bits
+  // everywhere (the build forbids fast-math, so the sum is not folded away).
+  const double n = (x * kTwoOverPi + kRoundingShift) - kRoundingShift;
+  const double r = ((x - n * kPiOver2Hi) - n * kPiOver2Mid) - n * kPiOver2Lo;
+  const double s = sinKernel(r), c = cosKernel(r);
+  switch (static_cast<long>(n) & 3) {
+    case 0: return {s, c};
+    case 1: return {c, -s};
+    case 2: return {-s, -c};
+    default: return {-c, s};
+  }
+}
+
+}  // namespace hemiroll::physics

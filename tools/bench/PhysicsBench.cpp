@@ -1,0 +1,105 @@
+// Cost of one right-hand side and one RK4 step for both models, on states
+// typical of play (tilted, spinning, mass point off centre). Targets on the
+// 2-core development machine: one RK4 step of the 12-state model <= 250 ns.
+#include <benchmark/benchmark.h>
+
+#include "engine/physics/Physics.h"
+
+namespace {
+
+using namespace hemiroll::physics;
+
+ForceDrivenState typicalState() {
+  ForceDrivenState x;
+  x << 0.012, -0.006, 0.03, 0.02, 0.4, -0.3, 1.2, 0.01, -0.02, 0.25, -0.15, 0.7;
+  return x;
+}
+
+ProxyPose typicalProxy() {
+  ProxyPose pose;
+  pose.position = Vec3(0.015, -0.004, 0.045);
+  pose.velocity = Vec3(0.01, 0.02, 0.0);
+  return pose;
+}
+
+void configure(ForceDrivenSystem& system, int mode) {
+  if (mode == 0) system.setFree();
+  if (mode == 1) {
+    system.setCoupling(CouplingDef{});  // M3, paper gains
+    system.holdProxy(typicalProxy());
+  }
+}
+
+void BM_ForceDrivenDerivative(benchmark::State& state) {
+  ForceDrivenSystem system{HemisphereParams{}};
+  configure(system, static_cast<int>(state.range(0)));
+  ForceDrivenState x = typicalState(), dx;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(x);
+    system.derivative(0.0, x, dx);
+    benchmark::DoNotOptimize(dx);
+  }
+}
+BENCHMARK(BM_ForceDrivenDerivative)->Arg(0)->Arg(1)->ArgName("coupledM3");
+
+void BM_ForceDrivenRk4Step(benchmark::State& state) {
+  ForceDrivenSystem system{HemisphereParams{}};
+  configure(system, static_cast<int>(state.range(0)));
+  RungeKutta4<12> rk4;
+  const ForceDrivenState x0 = typicalState();
+  ForceDrivenState x = x0;
+  for (auto _ : state) {
+    rk4.step(system, 0.0, x, 1e-3);
+    benchmark::DoNotOptimize(x);
+    x = x0;  // stay on a typical state rather than drift away from it
+  }
+}
+BENCHMARK(BM_ForceDrivenRk4Step)->Arg(0)->Arg(1)->ArgName("coupledM3");
+
+BodyState typicalBody() { return typicalState().tail<8>(); }
+
+void BM_PrescribedDerivative(benchmark::State& state) {
+  RoseDrive rose{RoseDef{}};
+  PrescribedDriveSystem system{HemisphereParams{}, rose};
+  BodyState x = typicalBody(), dx;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(x);
+    system.derivative(1.3, x, dx);
+    benchmark::DoNotOptimize(dx);
+  }
+}
+BENCHMARK(BM_PrescribedDerivative);
+
+void BM_PrescribedRk4Step(benchmark::State& state) {
+  RoseDrive rose{RoseDef{}};
+  PrescribedDriveSystem system{HemisphereParams{}, rose};
+  RungeKutta4<8> rk4;
+  const BodyState x0 = typicalBody();
+  BodyState x = x0;
+  for (auto _ : state) {
+    rk4.step(system, 1.3, x, 1e-3);
+    benchmark::DoNotOptimize(x);
+    x = x0;
+  }
+}
+BENCHMARK(BM_PrescribedRk4Step);
+
+// The stepper on top of RK4: domain checks every step, as the servo loop runs it.
+void BM_StepperAdvance(benchmark::State& state) {
+  ForceDrivenSystem system{HemisphereParams{}};
+  configure(system, 1);
+  RungeKutta4<12> rk4;
+  const ForceDrivenState x0 = typicalState();
+  Stepper<12> stepper(system, rk4, x0);
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(stepper.advance(1e-3));
+    state.PauseTiming();
+    stepper.reset(x0, 0.0);
+    state.ResumeTiming();
+  }
+}
+BENCHMARK(BM_StepperAdvance);
+
+}  // namespace
+
+BENCHMARK_MAIN();

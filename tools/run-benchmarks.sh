@@ -1,0 +1,14 @@
+#!/usr/bin/env bash
+# `make bench`: runs every benchmark with repetitions and reports medians
+# (the machine is shared and noisy). Results also go to out/bench/*.json.
+set -euo pipefail
+build=${1:-build}
+mkdir -p out/bench
+for b in "$build"/bench/*_bench; do
+  name=$(basename "$b")
+  echo "== $name (median of 7 repetitions)"
+  "$b" --benchmark_repetitions=7 --benchmark_report_aggregates_only=true \
+       --benchmark_display_aggregates_only=true \
+       --benchmark_out="out/bench/$name.json" --benchmark_out_format=json 2>/dev/null |
+    grep -E 'Benchmark|_median'
+done
