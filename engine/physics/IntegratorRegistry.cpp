@@ -1,0 +1,40 @@
+#include "engine/physics/IntegratorRegistry.h"
+
+namespace hemiroll::physics {
+
+const IntegratorRegistry& IntegratorRegistry::builtin() {
+  // Built on first use (thread-safe static initialisation), never modified after.
+  static const IntegratorRegistry registry = [] {
+    IntegratorRegistry r;
+    r.add<RungeKutta4>("rk4", "classical fourth-order Runge-Kutta, fixed step (the paper's choice at 1 ms)");
+    return r;
+  }();
+  return registry;
+}
+
+std::vector<IntegratorInfo> IntegratorRegistry::list() const {
+  std::vector<IntegratorInfo> out;
+  out.reserve(entries_.size());
+  for (const Entry& e : entries_) out.push_back(e.info);
+  return out;
+}
+
+bool IntegratorRegistry::contains(std::string_view name) const { return find(name) != nullptr; }
+
+const IntegratorRegistry::Entry* IntegratorRegistry::find(std::string_view name) const {
+  for (const Entry& e : entries_)
+    if (e.info.name == name) return &e;
+  return nullptr;
+}
+
+std::unique_ptr<Integrator<12>> IntegratorRegistry::makeForceDriven(std::string_view name) const {
+  const Entry* e = find(name);
+  return e ? e->make12() : nullptr;
+}
+
+std::unique_ptr<Integrator<8>> IntegratorRegistry::makePrescribed(std::string_view name) const {
+  const Entry* e = find(name);
+  return e ? e->make8() : nullptr;
+}
+
+}  // namespace hemiroll::physics

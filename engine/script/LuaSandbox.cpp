@@ -1,0 +1,322 @@
+#include "engine/script/LuaSandbox.h"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <lua.hpp>
+#include <sstream>
+
+#include "engine/script/ScriptError.h"
+
+namespace hemiroll::script {
+
+namespace {
+
+// The count hook runs every this many VM instructions: cheap enough to leave
+// on for every call, fine-grained enough that the quota overshoots by < 0.1%.
+constexpr int kHookInterval = 1000;
+
+// ---- C functions that run inside Lua. They must hold no C++ objects with
+// destructors, because any Lua API call in them may raise (longjmp).
+
+// print() writes to stderr: stdout may carry the CSV of a run.
+int sandboxPrint(lua_State* L) {
+  const int n = lua_gettop(L);
+  for (int i = 1; i <= n; ++i) {
+    std::size_t length = 0;
+    const char* text = luaL_tolstring(L, i, &length);
+    if (i > 1) std::fputc('\t', stderr);
+    std::fwrite(text, 1, length, stderr);
+    lua_pop(L, 1);
+  }
+  std::fputc('\n', stderr);
+  return 0;
+}
+
+// setmetatable() without __gc: finalizers would run Lua code whenever the
+// collector runs, including during host-side work outside any protected call
+// and outside the quota. Everything else matches the base library.
+int sandboxSetmetatable(lua_State* L) {
+  const int metatableType = lua_type(L, 2);
+  luaL_checktype(L, 1, LUA_TTABLE);
+  luaL_argexpected(L, metatableType == LUA_TNIL || metatableType == LUA_TTABLE, 2, "nil or table");
+  if (metatableType == LUA_TTABLE) {
+    lua_pushliteral(L, "__gc");
+    if (lua_rawget(L, 2) != LUA_TNIL) return luaL_error(L, "__gc metamethods are not available in the sandbox");
+    lua_pop(L, 1);
+  }
+  if (luaL_getmetafield(L, 1, "__metatable") != LUA_TNIL) return luaL_error(L, "cannot change a protected metatable");
+  lua_settop(L, 2);
+  lua_setmetatable(L, 1);
+  return 1;
+}
+
+// Makes every error a one-line string that starts with "file:line:". Errors
+// raised with error(msg, 0) or with a non-string value carry no position, so
+// the innermost Lua line on the stack is added.
+int messageHandler(lua_State* L) {
+  const char* message = lua_tostring(L, 1);
+  if (message == nullptr) {
+    if (luaL_callmeta(L, 1, "__tostring") && lua_type(L, -1) == LUA_TSTRING)
+      message = lua_tostring(L, -1);
+    else
+      message = lua_pushfstring(L, "(error object is a %s value)", luaL_typename(L, 1));
+  }
+  lua_Debug ar;
+  for (int level = 1; lua_getstack(L, level, &ar); ++level) {
+    lua_getinfo(L, "Sl", &ar);
+    if (ar.currentline <= 0) continue;
+    const std::size_t sourceLength = std::strlen(ar.short_src);
+    if (std::strncmp(message, ar.short_src, sourceLength) == 0 && message[sourceLength] == ':') break;
+    lua_pushfstring(L, "%s:%d: %s", ar.short_src, ar.currentline, message);
+    return 1;
+  }
+  lua_pushstring(L, message);
+  return 1;
+}
+
+// Copies library `lib` into a fresh table, leaving out the names in `excluded`
+// (nullptr-terminated). Copies keep the originals unreachable: a script that
+// replaces string.format changes only its own view.
+void pushLibraryCopy(lua_State* L, int lib, const char* const* excluded) {
+  lua_newtable(L);
+  const int copy = lua_gettop(L);
+  lua_pushnil(L);
+  while (lua_next(L, lib) != 0) {
+    bool keep = true;
+    if (lua_type(L, -2) == LUA_TSTRING) {
+      const char* key = lua_tostring(L, -2);
+      for (const char* const* name = excluded; *name != nullptr; ++name)
+        if (std::strcmp(key, *name) == 0) keep = false;
+    }
+    if (keep) {
+      lua_pushvalue(L, -2);
+      lua_insert(L, -2);
+      lua_rawset(L, copy);
+    } else {
+      lua_pop(L, 1);
+    }
+  }
+}
+
+// Builds the allow-list environment and returns it. Run under lua_pcall so
+// that even an allocation failure here becomes an ordinary error.
+int openSandbox(lua_State* L) {
+  luaL_requiref(L, LUA_GNAME, luaopen_base, 0);
+  const int globals = lua_gettop(L);
+  luaL_requiref(L, LUA_STRLIBNAME, luaopen_string, 0);
+  const int stringLib = lua_gettop(L);
+  luaL_requiref(L, LUA_TABLIBNAME, luaopen_table, 0);
+  const int tableLib = lua_gettop(L);
+  luaL_requiref(L, LUA_MATHLIBNAME, luaopen_math, 0);
+  const int mathLib = lua_gettop(L);
+  luaL_requiref(L, LUA_UTF8LIBNAME, luaopen_utf8, 0);
+  const int utf8Lib = lua_gettop(L);
+
+  lua_newtable(L);
+  const int env = lua_gettop(L);
+
+  // Base functions that cannot reach the host, load code, or bypass
+  // metatables. Left out on purpose: load, loadfile, dofile, require
+  // (code loading), collectgarbage (GC control), rawget/rawset (bypass
+  // protections levels may put on API tables), print/setmetatable (replaced).
+  static const char* const kBaseAllowed[] = {"assert",   "error",  "getmetatable", "ipairs", "next",
+                                             "pairs",    "pcall",  "rawequal",     "rawlen", "select",
+                                             "tonumber", "tostring", "type",       "xpcall", "_VERSION"};
+  for (const char* name : kBaseAllowed) {
+    lua_getfield(L, globals, name);
+    lua_setfield(L, env, name);
+  }
+  lua_pushcfunction(L, sandboxPrint);
+  lua_setfield(L, env, "print");
+  lua_pushcfunction(L, sandboxSetmetatable);
+  lua_setfield(L, env, "setmetatable");
+
+  static const char* const kNothing[] = {nullptr};
+  static const char* const kStringExcluded[] = {"dump", nullptr};  // bytecode out
+  static const char* const kMathExcluded[] = {"random", "randomseed", nullptr};  // runs must be reproducible
+  pushLibraryCopy(L, stringLib, kStringExcluded);
+  lua_setfield(L, env, "string");
+  pushLibraryCopy(L, tableLib, kNothing);
+  lua_setfield(L, env, "table");
+  pushLibraryCopy(L, mathLib, kMathExcluded);
+  lua_setfield(L, env, "math");
+  pushLibraryCopy(L, utf8Lib, kNothing);
+  lua_setfield(L, env, "utf8");
+  lua_pushvalue(L, env);
+  lua_setfield(L, env, "_G");
+
+  // Strings index the ORIGINAL string library through their shared
+  // metatable ("x"):rep(3). Hide that metatable (getmetatable("") returns
+  // false) and drop dump from the original too.
+  lua_pushnil(L);
+  lua_setfield(L, stringLib, "dump");
+  lua_pushliteral(L, "");
+  if (lua_getmetatable(L, -1)) {
+    lua_pushboolean(L, 0);
+    lua_setfield(L, -2, "__metatable");
+  }
+  lua_settop(L, env);
+  return 1;
+}
+
+std::string describeBytes(std::size_t bytes) {
+  std::ostringstream out;
+  if (bytes % (std::size_t{1} << 20) == 0)
+    out << (bytes >> 20) << " MiB";
+  else
+    out << bytes << " bytes";
+  return out.str();
+}
+
+}  // namespace
+
+LuaSandbox::LuaSandbox(const SandboxLimits& limits) : limits_(limits) {
+  L_ = lua_newstate(&LuaSandbox::allocate, this);
+  if (L_ == nullptr) throw ScriptError("cannot create a Lua state (out of memory)");
+  *static_cast<LuaSandbox**>(lua_getextraspace(L_)) = this;
+
+  lua_pushcfunction(L_, openSandbox);
+  if (lua_pcall(L_, 0, 1, 0) != LUA_OK) {
+    const std::string message = lua_tostring(L_, -1) ? lua_tostring(L_, -1) : "unknown error";
+    lua_close(L_);
+    throw ScriptError("cannot build the Lua sandbox: " + message);
+  }
+  environmentRef_ = luaL_ref(L_, LUA_REGISTRYINDEX);
+}
+
+LuaSandbox::~LuaSandbox() {
+  disarm();
+  lua_close(L_);
+}
+
+LuaSandbox& LuaSandbox::of(lua_State* L) { return **static_cast<LuaSandbox**>(lua_getextraspace(L)); }
+
+void* LuaSandbox::allocate(void* ud, void* block, std::size_t oldSize, std::size_t newSize) {
+  auto* self = static_cast<LuaSandbox*>(ud);
+  const std::size_t old = block != nullptr ? oldSize : 0;  // for new blocks oldSize is a type tag
+  if (newSize == 0) {
+    std::free(block);
+    self->bytesInUse_ -= old;
+    return nullptr;
+  }
+  // Refusing (returning nullptr) makes Lua collect garbage, retry, and then
+  // raise a memory error inside the protected call. Shrinking never fails.
+  if (self->armed_ && newSize > old && self->bytesInUse_ - old + newSize > self->limits_.memoryLimitBytes)
+    return nullptr;
+  void* resized = std::realloc(block, newSize);
+  if (resized == nullptr) return nullptr;
+  self->bytesInUse_ = self->bytesInUse_ - old + newSize;
+  return resized;
+}
+
+void LuaSandbox::countHook(lua_State* L, lua_Debug* ar) {
+  LuaSandbox& self = of(L);
+  self.instructionsUsed_ += kHookInterval;
+  if (self.instructionsUsed_ <= self.instructionBudget_) return;
+  // From now on fire on every instruction: a script that catches the error
+  // with its own pcall fails again at its very next instruction, so it
+  // cannot swallow the quota and carry on.
+  lua_sethook(L, &LuaSandbox::countHook, LUA_MASKCOUNT, 1);
+  lua_getinfo(L, "Sl", ar);
+  lua_pushfstring(L, "%s:%d: instruction quota of %I instructions exceeded (endless loop?)", ar->short_src,
+                  ar->currentline, static_cast<lua_Integer>(self.instructionBudget_));
+  lua_error(L);
+}
+
+void LuaSandbox::arm(std::uint64_t quota) {
+  instructionBudget_ = quota;
+  instructionsUsed_ = 0;
+  lua_sethook(L_, &LuaSandbox::countHook, LUA_MASKCOUNT, kHookInterval);
+  armed_ = true;
+}
+
+void LuaSandbox::disarm() {
+  armed_ = false;
+  lua_sethook(L_, nullptr, 0, 0);
+}
+
+int LuaSandbox::protectedCall(int nargs, int nresults, std::uint64_t quota, std::string_view where,
+                              std::string& error) {
+  lua_State* L = L_;
+  const int function = lua_gettop(L) - nargs;
+  if (!lua_checkstack(L, 2)) {
+    error = std::string(where) + ": Lua stack overflow";
+    lua_settop(L, function - 1);
+    return LUA_ERRRUN;
+  }
+  lua_pushcfunction(L, messageHandler);
+  lua_insert(L, function);
+  arm(quota);
+  const int status = lua_pcall(L, nargs, nresults, function);
+  disarm();
+  if (status == LUA_OK) {
+    lua_remove(L, function);
+    return LUA_OK;
+  }
+  if (status == LUA_ERRMEM) {
+    error = std::string(where) + ": memory limit of " + describeBytes(limits_.memoryLimitBytes) + " exceeded";
+  } else if (lua_type(L, -1) == LUA_TSTRING) {
+    error = lua_tostring(L, -1);
+    if (status == LUA_ERRERR) error = std::string(where) + ": " + error;
+  } else {
+    error = std::string(where) + ": unknown Lua error";
+  }
+  lua_settop(L, function - 1);
+  return status;
+}
+
+void LuaSandbox::runChunk(std::string_view source, const std::string& chunkName, int nresults) {
+  // lua_load decides text or binary by the first byte; refuse bytecode here
+  // with a clear sentence (the "t" mode below refuses it as well).
+  if (!source.empty() && source.front() == LUA_SIGNATURE[0])
+    throw ScriptError(chunkName + ": precompiled (binary) Lua chunks are refused; give Lua source text");
+  lua_State* L = L_;
+  if (!lua_checkstack(L, nresults + 4)) throw ScriptError(chunkName + ": Lua stack overflow");
+
+  const std::string name = "@" + chunkName;
+  arm(limits_.chunkInstructionQuota);  // the memory cap also bounds what the parser may build
+  const int loaded = luaL_loadbufferx(L, source.data(), source.size(), name.c_str(), "t");
+  disarm();
+  if (loaded != LUA_OK) {
+    std::string message = loaded == LUA_ERRMEM || lua_type(L, -1) != LUA_TSTRING
+                              ? chunkName + ": memory limit of " + describeBytes(limits_.memoryLimitBytes) +
+                                    " exceeded while compiling"
+                              : std::string(lua_tostring(L, -1));
+    lua_pop(L, 1);
+    throw ScriptError(message);
+  }
+  // A main chunk's only upvalue is _ENV: point it at the sandbox environment.
+  lua_rawgeti(L, LUA_REGISTRYINDEX, environmentRef_);
+  if (lua_setupvalue(L, -2, 1) == nullptr) lua_pop(L, 1);
+
+  std::string error;
+  if (protectedCall(0, nresults, limits_.chunkInstructionQuota, chunkName, error) != LUA_OK) throw ScriptError(error);
+}
+
+void LuaSandbox::runFile(const std::string& path, int nresults) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ScriptError(path + ": cannot open file (" + std::strerror(errno) + ")");
+  std::ostringstream content;
+  content << in.rdbuf();
+  if (in.bad()) throw ScriptError(path + ": cannot read file");
+  std::string source = content.str();
+  if (source.size() > limits_.memoryLimitBytes)
+    throw ScriptError(path + ": file is larger than the memory limit of " + describeBytes(limits_.memoryLimitBytes));
+  // Like the stand-alone interpreter: skip a UTF-8 byte-order mark and blank
+  // out a first line starting with '#' (a shebang), keeping line numbers.
+  if (source.rfind("\xEF\xBB\xBF", 0) == 0) source.erase(0, 3);
+  if (!source.empty() && source.front() == '#') source.erase(0, source.find('\n') == std::string::npos ? source.size() : source.find('\n'));
+  runChunk(source, path, nresults);
+}
+
+int LuaSandbox::call(int nargs, int nresults, std::string_view where) {
+  const int base = lua_gettop(L_) - nargs - 1;
+  std::string error;
+  if (protectedCall(nargs, nresults, limits_.callInstructionQuota, where, error) != LUA_OK) throw ScriptError(error);
+  return lua_gettop(L_) - base;
+}
+
+}  // namespace hemiroll::script

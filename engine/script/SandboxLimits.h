@@ -1,0 +1,22 @@
+#pragma once
+// Budgets for untrusted Lua. A script that exceeds one is stopped with an
+// error that says which budget ran out; nothing in the host is harmed.
+
+#include <cstddef>
+#include <cstdint>
+
+namespace hemiroll::script {
+
+struct SandboxLimits {
+  // Lua VM instructions for running a whole chunk (a scenario file's top level).
+  // Generous for data, small enough that `while true do end` fails in well
+  // under a second.
+  std::uint64_t chunkInstructionQuota = 20'000'000;
+  // Lua VM instructions for one call from the host into a script function
+  // (e.g. a proxy trajectory evaluated at every integrator stage).
+  std::uint64_t callInstructionQuota = 1'000'000;
+  // All memory the Lua state may hold while a script runs [bytes].
+  std::size_t memoryLimitBytes = std::size_t{64} << 20;
+};
+
+}  // namespace hemiroll::script

@@ -1,0 +1,35 @@
+#pragma once
+// engine/script: the Lua 5.4 runtime of hemiroll.
+//
+// Owns: the sandboxed Lua state (LuaSandbox: allow-list environment, text-only
+// chunks, an instruction quota through a count hook, a memory cap through the
+// allocator), the conversion of every Lua error into a ScriptError that names
+// "file:line" or "file: field.path", typed reads of script data
+// (LuaTableReader), and loading scenario files into plain C++ definitions
+// (ScenarioLoader -> ScenarioDef), including proxy trajectories written in
+// Lua (LuaProxyTrajectory).
+//
+// What a script can reach: the base functions assert, error, getmetatable,
+// ipairs, next, pairs, pcall, print (to stderr), rawequal, rawlen, select,
+// setmetatable (without __gc), tonumber, tostring, type, xpcall, _VERSION, _G;
+// copies of string (no dump), table, math (no random, randomseed) and utf8.
+// Nothing else: no io, os, debug, package, coroutine, load, loadfile, dofile,
+// require, collectgarbage, rawget, rawset; the string metatable is hidden.
+//
+// Must not know: the game, commands, command-line flags, files other than the
+// script it is asked to load, threads, clocks, devices, rendering, levels'
+// rules. Depends on engine/physics (for the definitions it fills) and Lua.
+//
+// Known limit: the quota counts Lua VM instructions, so a single long call
+// into a C library function (a pathological string.find pattern) is not
+// interrupted; the memory cap still bounds what it can allocate.
+
+#include "engine/script/ConstantProxyTrajectory.h"
+#include "engine/script/DriveDef.h"
+#include "engine/script/LuaProxyTrajectory.h"
+#include "engine/script/LuaSandbox.h"
+#include "engine/script/LuaTableReader.h"
+#include "engine/script/SandboxLimits.h"
+#include "engine/script/ScenarioDef.h"
+#include "engine/script/ScenarioLoader.h"
+#include "engine/script/ScriptError.h"

@@ -1,0 +1,35 @@
+#pragma once
+// The flags of `hemiroll sim`, parsed and checked, before any file is read.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace hemiroll::game {
+
+struct SimOptions {
+  std::string scenarioPath;
+  std::optional<double> duration;          // --duration [s]; else the scenario's, else kDefaultDuration
+  std::optional<double> timeStep;          // --dt [s]; else the scenario's, else kDefaultTimeStep
+  std::optional<std::string> integrator;   // --integrator; else the scenario's, else kDefaultIntegrator
+  long long every = 1;                     // --every: a row every N steps
+  std::optional<std::string> outPath;      // --out; stdout when absent
+  bool help = false;                       // --help
+  bool listIntegrators = false;            // --integrator list
+
+  static constexpr double kDefaultDuration = 10.0;  // [s]
+  static constexpr double kDefaultTimeStep = 1e-3;  // [s], the paper's RK4 step
+  static constexpr const char* kDefaultIntegrator = "rk4";
+};
+
+struct SimOptionsResult {
+  SimOptions options;
+  std::string error;  // empty when the flags are good
+};
+
+// Parses the arguments after "sim". Accepts "--flag value" and "--flag=value".
+SimOptionsResult parseSimOptions(const std::vector<std::string>& args);
+
+const char* simUsage();
+
+}  // namespace hemiroll::game

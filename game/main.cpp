@@ -1,0 +1,53 @@
+// hemiroll: the command-line entry point. Each subcommand lives in
+// game/commands/<Name>Command.{h,cpp}; this file only dispatches.
+
+#include <iostream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "game/commands/ExitCode.h"
+#include "game/commands/SimCommand.h"
+#include "game/commands/VersionCommand.h"
+
+namespace {
+
+struct CommandEntry {
+  std::string_view name;
+  std::string_view summary;
+  int (*run)(const std::vector<std::string>& args);
+};
+
+constexpr CommandEntry kCommands[] = {
+    {"sim", "run a scenario's physics headless and write the trajectory as CSV", hemiroll::game::runSimCommand},
+    {"version", "print the version", hemiroll::game::runVersionCommand},
+};
+
+void printUsage(std::ostream& out) {
+  out << "usage: hemiroll COMMAND [ARGS...]\n"
+         "       hemiroll --help | hemiroll COMMAND --help\n"
+         "\ncommands:\n";
+  for (const CommandEntry& c : kCommands) out << "  " << c.name << std::string(10 - c.name.size(), ' ') << c.summary << "\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.empty()) {
+    std::cerr << "hemiroll: missing a command\n\n";
+    printUsage(std::cerr);
+    return hemiroll::game::kExitUsage;
+  }
+  const std::string& command = args.front();
+  if (command == "--help" || command == "-h" || command == "help") {
+    printUsage(std::cout);
+    return hemiroll::game::kExitOk;
+  }
+  if (command == "--version") return hemiroll::game::runVersionCommand({});
+  for (const CommandEntry& c : kCommands)
+    if (c.name == command) return c.run(std::vector<std::string>(args.begin() + 1, args.end()));
+  std::cerr << "hemiroll: unknown command '" << command << "'\n\n";
+  printUsage(std::cerr);
+  return hemiroll::game::kExitUsage;
+}

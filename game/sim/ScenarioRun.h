@@ -1,0 +1,57 @@
+#pragma once
+// Runs a loaded scenario headless: builds the model its drive asks for (the
+// 8-state prescribed drive for "rose", the 12-state force-driven model for
+// "free" and "proxy"), steps it with the chosen integrator through the
+// event-locating Stepper, and hands sampled rows to a callback.
+//
+// Rows: the initial state, every `every`-th step, the last step, and, when a
+// domain event stops the run, the state at the located event time.
+
+#include <functional>
+#include <string>
+
+#include "engine/physics/DomainEvents.h"
+#include "engine/script/ScenarioDef.h"
+#include "game/sim/TrajectoryRow.h"
+
+namespace hemiroll::game {
+
+struct RunSettings {
+  double duration = 10.0;        // [s]
+  double timeStep = 1e-3;        // [s]
+  std::string integrator = "rk4";
+  long long every = 1;           // a row every N steps
+};
+
+struct RunSummary {
+  long long steps = 0;           // steps taken (the event step included)
+  double endTime = 0.0;          // time of the last state [s]
+  double finalEnergy = 0.0;      // [J]
+  physics::DomainEvent event = physics::DomainEvent::None;
+};
+
+class ScenarioRun {
+ public:
+  using RowCallback = std::function<void(const TrajectoryRow&)>;
+
+  // Steps of length timeStep; the last one is shortened to end at duration.
+  static long long stepCount(const RunSettings& settings);
+
+  ScenarioRun(const script::ScenarioDef& scenario, const RunSettings& settings);
+
+  // True when rows carry F_h (the proxy drive).
+  bool hasHandForce() const { return scenario_.drive.kind == script::DriveKind::Proxy; }
+
+  // Throws script::ScriptError if a Lua proxy fails during the run, and
+  // std::invalid_argument for an unknown integrator name.
+  RunSummary run(const RowCallback& onRow) const;
+
+ private:
+  RunSummary runRose(const RowCallback& onRow) const;
+  RunSummary runForceDriven(const RowCallback& onRow) const;
+
+  script::ScenarioDef scenario_;  // a copy: shares the proxy (and its Lua state), owns the rest
+  RunSettings settings_;
+};
+
+}  // namespace hemiroll::game
