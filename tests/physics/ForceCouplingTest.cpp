@@ -66,16 +66,14 @@ TEST(ForceCoupling, MatchesSection32Literally) {
 class WithRotatingStiffnessPower final : public physics::OdeSystem<14> {
  public:
   WithRotatingStiffnessPower(const ForceDrivenSystem& sys, const CouplingDef& def, const Vec3& proxy)
-      : sys_(sys), def_(def), proxy_(proxy) {}
+      : sys_(sys), reference_(sys.dynamics().constants().params), def_(def), proxy_(proxy) {}
   void derivative(double t, const physics::StateVector<14>& x, physics::StateVector<14>& d) const override {
     const physics::ForceDrivenState s = x.head<12>();
     physics::ForceDrivenState ds;
     sys_.derivative(t, s, ds);
     d.head<12>() = ds;
-    const physics::RollingGeometry g = physics::geometryOf(sys_.dynamics().constants(), s);
-    const Vec3 k = physics::makeOrientation(s(9), s(10), s(11)).R.col(2);
-    const physics::PointKinematics pk = physics::pointKinematics(g, sys_.dynamics().constants().params.radius, s(7), s(8), s.segment<3>(4));
-    const Vec3 dr = pk.position - proxy_;
+    const Vec3 k = orientationFromAngles(s(9), s(10), s(11)).col(2);
+    const Vec3 dr = reference_.fromEngine(s).pointPosition - proxy_;
     d(12) = physics::externalPower(sys_.dynamics(), s, sys_.externalForce(t, s));
     const double extra = def_.method == ForceMethod::M3 ? def_.alpha - 1.0 : 0.0;
     d(13) = extra * def_.stiffness * k.dot(dr) * s.segment<3>(4).cross(k).dot(dr);
@@ -86,6 +84,7 @@ class WithRotatingStiffnessPower final : public physics::OdeSystem<14> {
 
  private:
   const ForceDrivenSystem& sys_;
+  NewtonEulerModel reference_;  // only for r_p, an independent route
   CouplingDef def_;
   Vec3 proxy_;
 };

@@ -17,9 +17,9 @@ void PrescribedWithWork::derivative(double t, const physics::StateVector<9>& x, 
   system_.derivative(t, body, d);
   dxdt.head<8>() = d;
   const physics::ForceDrivenState full = system_.fullState(t, body);
-  const physics::Orientation o = physics::makeOrientation(body(5), body(6), body(7));
+  const Mat3 R = orientationFromAngles(body(5), body(6), body(7));
   const Vec2 f = system_.drivingForce(t, body);
-  const Vec3 force = o.R.col(0) * f.x() + o.R.col(1) * f.y();
+  const Vec3 force = R.col(0) * f.x() + R.col(1) * f.y();
   dxdt(8) = physics::externalPower(system_.dynamics(), full, force);
 }
 
