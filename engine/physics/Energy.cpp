@@ -12,11 +12,13 @@ EnergyTerms mechanicalEnergy(const RollingDynamics& dynamics, const StateVector<
   const HemisphereParams& p = c.params;
   const RollingGeometry g = geometryOf(c, x);
   const Vec3 omega = x.segment<3>(w_x);
-  // The contact point is the instantaneous centre of rotation: T_s = w J_c w / 2.
-  const double shell = 0.5 * omega.dot(dynamics.contactInertia(g.faceNormal) * omega);
+  // The contact point is the instantaneous centre of rotation: T_s = w J_c w / 2,
+  // with w and J_c both in the heading frame.
+  const Vec3 omegaH = g.frame.toHeading(Real3::from(omega)).eigen();
+  const double shell = 0.5 * omegaH.dot(dynamics.contactInertia(g.frame.k.eigen()) * omegaH);
   const Vec3 vp = pointKinematics(g, p.radius, x[u_a], x[v_a], omega).velocity;
-  const double zShell = p.radius - c.comDepth * g.faceNormal.z();
-  const double zPoint = p.radius + g.rhoP.z();
+  const double zShell = p.radius - c.comDepth * g.frame.k.z;
+  const double zPoint = p.radius + g.rhoP.z;
   return {shell + 0.5 * p.pointMass * vp.squaredNorm(), p.gravity * (p.shellMass * zShell + p.pointMass * zPoint)};
 }
 

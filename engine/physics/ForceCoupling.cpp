@@ -13,27 +13,10 @@ std::string validateCoupling(const CouplingDef& def) {
 
 PointKinematics pointKinematics(const RollingGeometry& g, double radius, double u_a, double v_a,
                                 const Vec3& omega) {
-  return PointKinematics{Vec3(u_a, v_a, radius) + g.rhoP, omega.cross(g.lever) + g.rhoPDot};
-}
-
-CouplingForces computeCoupling(const CouplingDef& def, const RollingGeometry& g, const PointKinematics& point,
-                               const ProxyPose& proxy) {
-  const Vec3 dr = point.position - proxy.position;
-  const Vec3 dv = point.velocity - proxy.velocity;
-  const Vec3& k = g.faceNormal;
-
-  CouplingForces out;
-  out.handForce = -def.stiffness * dr - def.damping * dv;
-  if (def.method == ForceMethod::M3) {
-    // R diag(k, k, alpha k) R^T = k I + (alpha - 1) k k_o k_o^T: only the
-    // normal component is stiffer, so no rotation to the body frame is needed.
-    const double extra = (def.alpha - 1.0) * (def.stiffness * k.dot(dr) + def.damping * k.dot(dv));
-    out.handForce -= extra * k;
-  }
-  out.modelForce = out.handForce;
-  if (def.method == ForceMethod::M1) out.modelForce -= k * k.dot(out.handForce);
-  out.deviceForce = def.visualOnly ? Vec3::Zero() : Vec3(-out.handForce);
-  return out;
+  const HeadingFrame& f = g.frame;
+  const Real3 velocity = cross(f.toHeading(Real3::from(omega)), g.lever) + g.rhoPDot;
+  const Real3 centre{u_a, v_a, radius};
+  return PointKinematics{(centre + f.toBase(g.rhoP)).eigen(), f.toBase(velocity).eigen()};
 }
 
 const char* forceMethodName(ForceMethod m) {

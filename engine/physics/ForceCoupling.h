@@ -10,6 +10,8 @@
 // Visual only (Sec. 4.1): the model is driven exactly as by the chosen method,
 // but no force is rendered.
 
+#include <string>
+
 #include "engine/physics/RollingDynamics.h"
 
 namespace hemiroll::physics {
@@ -39,17 +41,34 @@ struct CouplingForces {
   Vec3 deviceForce;  // force to render on the device [N]: -F_h, or zero if visual only
 };
 
-// Absolute position and velocity of the mass point, r_p = r_o + rho_p and
-// v_p = w x (rho_p - rho_c) + rho_p' (Sec. 3.2).
+// The coupling law in any one frame: faceNormal k, the position offset
+// dr = r_p - r_h and the velocity offset dv = v_p - v_h must share it, and so
+// does the force returned. Inline: it runs in every integrator stage.
+inline Real3 handForce(const CouplingDef& def, const Real3& k, const Real3& dr, const Real3& dv) {
+  Real3 force = -def.stiffness * dr - def.damping * dv;
+  if (def.method == ForceMethod::M3) {
+    // R diag(k, k, alpha k) R^T = k I + (alpha - 1) k k_o k_o^T: only the
+    // normal component is stiffer, so no rotation to the body frame is needed.
+    force = force - ((def.alpha - 1.0) * (def.stiffness * dot(k, dr) + def.damping * dot(k, dv))) * k;
+  }
+  return force;
+}
+
+// The part of F_h that drives the model: all of it for M2 and M3, the in-face
+// part for M1 (eq. 42).
+inline Real3 modelForce(const CouplingDef& def, const Real3& k, const Real3& hand) {
+  return def.method == ForceMethod::M1 ? hand - dot(k, hand) * k : hand;
+}
+
+// Absolute position and velocity of the mass point in the base frame,
+// r_p = r_o + rho_p and v_p = w x (rho_p - rho_c) + rho_p' (Sec. 3.2), for
+// angular velocity w in the base frame.
 struct PointKinematics {
   Vec3 position;
   Vec3 velocity;
 };
 PointKinematics pointKinematics(const RollingGeometry& g, double radius, double u_a, double v_a,
                                 const Vec3& omega);
-
-CouplingForces computeCoupling(const CouplingDef& def, const RollingGeometry& g, const PointKinematics& point,
-                               const ProxyPose& proxy);
 
 const char* forceMethodName(ForceMethod m);
 

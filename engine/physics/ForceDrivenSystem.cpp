@@ -6,8 +6,14 @@ namespace hemiroll::physics {
 
 using namespace force_slot;
 
+namespace {
+Real2 pointOf(const ForceDrivenState& x) { return {x[x_p], x[y_p]}; }
+Real2 pointRateOf(const ForceDrivenState& x) { return {x[xd_p], x[yd_p]}; }
+Real3 omegaOf(const ForceDrivenState& x) { return {x[w_x], x[w_y], x[w_z]}; }
+}  // namespace
+
 RollingGeometry geometryOf(const ModelConstants& c, const ForceDrivenState& x) {
-  return makeGeometry(c, makeOrientation(x[u_o], x[v_o], x[psi]), x.segment<2>(x_p), x.segment<2>(xd_p));
+  return makeGeometry(c, makeHeadingFrame(x[u_o], x[v_o], x[psi]), pointOf(x), pointRateOf(x));
 }
 
 ForceDrivenSystem::ForceDrivenSystem(const HemisphereParams& params, const DomainLimits& limits)
@@ -36,34 +42,46 @@ void ForceDrivenSystem::setCoupling(const CouplingDef& def) {
   proxyFn_ = nullptr;
 }
 
-Vec3 ForceDrivenSystem::inputForce(const RollingGeometry& g, double t, const ForceDrivenState& x) const {
-  switch (input_) {
-    case Input::Free: return Vec3::Zero();
-    case Input::FaceForce: return g.inPlane(faceForce_);
-    case Input::Coupling: return couplingAt(g, t, x).modelForce;
-  }
-  return Vec3::Zero();
+Real3 ForceDrivenSystem::handForceAt(const RollingGeometry& g, double t, const ForceDrivenState& x,
+                                     const Real3& omegaH) const {
+  const HeadingFrame& f = g.frame;
+  const ProxyPose proxy = proxyAt(t);
+  const Real3 centre{x[u_a], x[v_a], dynamics_.constants().params.radius};
+  const Real3 dr = f.toHeading(centre - Real3::from(proxy.position)) + g.rhoP;
+  const Real3 dv = cross(omegaH, g.lever) + g.rhoPDot - f.toHeading(Real3::from(proxy.velocity));
+  return handForce(coupling_, f.k, dr, dv);
 }
 
-CouplingForces ForceDrivenSystem::couplingAt(const RollingGeometry& g, double t, const ForceDrivenState& x) const {
-  const double radius = dynamics_.constants().params.radius;
-  const PointKinematics point = pointKinematics(g, radius, x[u_a], x[v_a], x.segment<3>(w_x));
-  return computeCoupling(coupling_, g, point, proxyAt(t));
+Real3 ForceDrivenSystem::inputForce(const RollingGeometry& g, double t, const ForceDrivenState& x,
+                                    const Real3& omegaH) const {
+  switch (input_) {
+    case Input::Free: return {0.0, 0.0, 0.0};
+    case Input::FaceForce: return g.frame.inPlane(Real2::from(faceForce_));
+    case Input::Coupling: return modelForce(coupling_, g.frame.k, handForceAt(g, t, x, omegaH));
+  }
+  return {0.0, 0.0, 0.0};
 }
 
 void ForceDrivenSystem::derivative(double t, const ForceDrivenState& x, ForceDrivenState& dxdt) const {
-  const ModelConstants& c = dynamics_.constants();
-  const RollingGeometry g = geometryOf(c, x);
-  const Vec3 omega = x.segment<3>(w_x);
+  const double radius = dynamics_.constants().params.radius;
+  const RollingGeometry g = geometryOf(dynamics_.constants(), x);
+  const HeadingFrame& f = g.frame;
+  const Real3 omega = omegaOf(x);
+  const Real3 omegaH = f.toHeading(omega);
+  const Real3 force = inputForce(g, t, x, omegaH);
 
-  const Vec3 force = inputForce(g, t, x);
+  const BodyAcceleration a = dynamics_.bodyAcceleration(g, omegaH, dot(f.k, force));
+  const Real2 pDDot = dynamics_.pointAcceleration(g, a, f.toFace(force));
+  const Real3 omegaDot = f.toBase(a.omegaDot);
 
-  const BodyAcceleration a = dynamics_.bodyAcceleration(g, omega, g.faceNormal.dot(force));
-  const ContactRates rates = contactRates(g.orientation, c.params.radius, omega);
-
-  dxdt.segment<2>(x_p) = x.segment<2>(xd_p);
-  dxdt.segment<2>(xd_p) = dynamics_.pointAcceleration(g, a, g.toFace(force));
-  dxdt.segment<3>(w_x) = a.omegaDot;
+  const ContactRates rates = contactRates(f.cv, f.sv, f.cpsi, f.spsi, radius, omega);
+  dxdt[x_p] = x[xd_p];
+  dxdt[y_p] = x[yd_p];
+  dxdt[xd_p] = pDDot.x;
+  dxdt[yd_p] = pDDot.y;
+  dxdt[w_x] = omegaDot.x;
+  dxdt[w_y] = omegaDot.y;
+  dxdt[w_z] = omegaDot.z;
   dxdt[u_a] = rates.u_a;
   dxdt[v_a] = rates.v_a;
   dxdt[u_o] = rates.u_o;
@@ -74,17 +92,23 @@ void ForceDrivenSystem::derivative(double t, const ForceDrivenState& x, ForceDri
 DomainMargins ForceDrivenSystem::margins(double, const ForceDrivenState& x) const {
   const double radius = dynamics_.constants().params.radius;
   return {std::cos(x[u_o]) * std::cos(x[v_o]) - std::cos(limits_.maxTilt),
-          limits_.maxPointRadius * radius - std::hypot(x[x_p], x[y_p])};
+          limits_.maxPointRadius * radius - std::sqrt(x[x_p] * x[x_p] + x[y_p] * x[y_p])};
 }
 
 Vec3 ForceDrivenSystem::externalForce(double t, const ForceDrivenState& x) const {
-  return inputForce(geometryOf(dynamics_.constants(), x), t, x);
+  const RollingGeometry g = geometryOf(dynamics_.constants(), x);
+  return g.frame.toBase(inputForce(g, t, x, g.frame.toHeading(omegaOf(x)))).eigen();
 }
 
 CouplingForces ForceDrivenSystem::couplingForces(double t, const ForceDrivenState& x) const {
   const RollingGeometry g = geometryOf(dynamics_.constants(), x);
-  if (input_ != Input::Coupling) return {Vec3::Zero(), inputForce(g, t, x), Vec3::Zero()};
-  return couplingAt(g, t, x);
+  const HeadingFrame& f = g.frame;
+  const Real3 omegaH = f.toHeading(omegaOf(x));
+  if (input_ != Input::Coupling) return {Vec3::Zero(), f.toBase(inputForce(g, t, x, omegaH)).eigen(), Vec3::Zero()};
+  const Real3 hand = handForceAt(g, t, x, omegaH);
+  const Vec3 handBase = f.toBase(hand).eigen();
+  return {handBase, f.toBase(modelForce(coupling_, f.k, hand)).eigen(),
+          coupling_.visualOnly ? Vec3::Zero() : Vec3(-handBase)};
 }
 
 }  // namespace hemiroll::physics

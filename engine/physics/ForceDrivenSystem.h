@@ -46,8 +46,9 @@ class ForceDrivenSystem final : public OdeSystem<12> {
   enum class Input { Free, FaceForce, Coupling };
 
   ProxyPose proxyAt(double t) const { return proxyFn_ ? proxyFn_->at(t) : heldProxy_; }
-  Vec3 inputForce(const RollingGeometry& g, double t, const ForceDrivenState& x) const;
-  CouplingForces couplingAt(const RollingGeometry& g, double t, const ForceDrivenState& x) const;
+  // Both in the heading frame of g, for angular velocity omegaH (heading frame).
+  Real3 inputForce(const RollingGeometry& g, double t, const ForceDrivenState& x, const Real3& omegaH) const;
+  Real3 handForceAt(const RollingGeometry& g, double t, const ForceDrivenState& x, const Real3& omegaH) const;
 
   RollingDynamics dynamics_;
   DomainLimits limits_;
@@ -58,7 +59,8 @@ class ForceDrivenSystem final : public OdeSystem<12> {
   ProxyPose heldProxy_;
 };
 
-// Geometry of a 12-state vector (shared by the system, energy and couplings).
+// Geometry of a 12-state vector, heading frame (shared by the system, energy
+// and couplings).
 RollingGeometry geometryOf(const ModelConstants& c, const ForceDrivenState& x);
 
 }  // namespace hemiroll::physics

@@ -23,18 +23,6 @@ Orientation makeOrientation(double u_o, double v_o, double psi) {
   return o;
 }
 
-ContactRates contactRates(const Orientation& o, double radius, const Vec3& w) {
-  const double a = w.x() * o.spsi + w.y() * o.cpsi;
-  const double secV = 1.0 / o.cv;
-  return ContactRates{
-      radius * w.y(),
-      -radius * w.x(),
-      -a * secV,
-      -w.x() * o.cpsi + w.y() * o.spsi,
-      -w.z() - a * o.sv * secV,
-  };
-}
-
 ContactAngles contactAnglesFromMatrix(const Mat3& R, double psiNear) {
   ContactAngles a;
   a.u_o = std::atan2(R(2, 0), R(2, 2));

@@ -3,7 +3,7 @@
 // (11)-(15). The body frame sits at the centre of the flat face, z along the
 // face normal; the sphere centre is r_o = (u_a, v_a, R).
 
-#include "engine/physics/StateLayout.h"
+#include "engine/physics/Real3.h"
 
 namespace hemiroll::physics {
 
@@ -25,7 +25,15 @@ Orientation makeOrientation(double u_o, double v_o, double psi);
 struct ContactRates {
   double u_a, v_a, u_o, v_o, psi;
 };
-ContactRates contactRates(const Orientation& o, double radius, const Vec3& omega);
+inline ContactRates contactRates(double cosV, double sinV, double cosPsi, double sinPsi, double radius,
+                                 const Real3& w) {
+  const double a = w.x * sinPsi + w.y * cosPsi;
+  const double secV = 1.0 / cosV;
+  return ContactRates{radius * w.y, -radius * w.x, -a * secV, -w.x * cosPsi + w.y * sinPsi, -w.z - a * sinV * secV};
+}
+inline ContactRates contactRates(const Orientation& o, double radius, const Vec3& omega) {
+  return contactRates(o.cv, o.sv, o.cpsi, o.spsi, radius, Real3::from(omega));
+}
 
 // Inverse of eq. (6) on the lower hemisphere (|u_o|, |v_o| < pi/2). psi is
 // returned in (-pi, pi]; pass the previous value to get the continuous branch.

@@ -6,6 +6,12 @@ namespace hemiroll::physics {
 
 using namespace body_slot;
 
+namespace {
+RollingGeometry geometryAt(const ModelConstants& c, const BodyState& x, const MassPointTrajectory::Sample& s) {
+  return makeGeometry(c, makeHeadingFrame(x[u_o], x[v_o], x[psi]), Real2::from(s.p), Real2::from(s.pDot));
+}
+}  // namespace
+
 PrescribedDriveSystem::PrescribedDriveSystem(const HemisphereParams& params, const MassPointTrajectory& trajectory,
                                              const DomainLimits& limits)
     : dynamics_(params), trajectory_(trajectory), limits_(limits) {}
@@ -13,12 +19,16 @@ PrescribedDriveSystem::PrescribedDriveSystem(const HemisphereParams& params, con
 void PrescribedDriveSystem::derivative(double t, const BodyState& x, BodyState& dxdt) const {
   const ModelConstants& c = dynamics_.constants();
   const MassPointTrajectory::Sample s = trajectory_.at(t);
-  const RollingGeometry g = makeGeometry(c, makeOrientation(x[u_o], x[v_o], x[psi]), s.p, s.pDot);
-  const Vec3 omega = x.segment<3>(w_x);
+  const RollingGeometry g = geometryAt(c, x, s);
+  const HeadingFrame& f = g.frame;
+  const Real3 omega{x[w_x], x[w_y], x[w_z]};
+  const Real3 omegaH = f.toHeading(omega);
   // Eq. (47): p'' does not enter the hemisphere's dynamics.
-  const BodyAcceleration a = dynamics_.bodyAcceleration(g, omega, 0.0);
-  const ContactRates rates = contactRates(g.orientation, c.params.radius, omega);
-  dxdt.segment<3>(w_x) = a.omegaDot;
+  const Real3 omegaDot = f.toBase(dynamics_.bodyAcceleration(g, omegaH, 0.0).omegaDot);
+  const ContactRates rates = contactRates(f.cv, f.sv, f.cpsi, f.spsi, c.params.radius, omega);
+  dxdt[w_x] = omegaDot.x;
+  dxdt[w_y] = omegaDot.y;
+  dxdt[w_z] = omegaDot.z;
   dxdt[u_a] = rates.u_a;
   dxdt[v_a] = rates.v_a;
   dxdt[u_o] = rates.u_o;
@@ -30,15 +40,15 @@ DomainMargins PrescribedDriveSystem::margins(double t, const BodyState& x) const
   const double radius = dynamics_.constants().params.radius;
   const Vec2 p = trajectory_.at(t).p;
   return {std::cos(x[u_o]) * std::cos(x[v_o]) - std::cos(limits_.maxTilt),
-          limits_.maxPointRadius * radius - p.norm()};
+          limits_.maxPointRadius * radius - std::sqrt(p.squaredNorm())};
 }
 
 Vec2 PrescribedDriveSystem::drivingForce(double t, const BodyState& x) const {
   const ModelConstants& c = dynamics_.constants();
   const MassPointTrajectory::Sample s = trajectory_.at(t);
-  const RollingGeometry g = makeGeometry(c, makeOrientation(x[u_o], x[v_o], x[psi]), s.p, s.pDot);
-  const BodyAcceleration a = dynamics_.bodyAcceleration(g, x.segment<3>(w_x), 0.0);
-  return dynamics_.prescribedForce(g, a, s.pDDot);
+  const RollingGeometry g = geometryAt(c, x, s);
+  const BodyAcceleration a = dynamics_.bodyAcceleration(g, g.frame.toHeading({x[w_x], x[w_y], x[w_z]}), 0.0);
+  return dynamics_.prescribedForce(g, a, Real2::from(s.pDDot)).eigen();
 }
 
 ForceDrivenState PrescribedDriveSystem::fullState(double t, const BodyState& x) const {

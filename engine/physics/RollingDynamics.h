@@ -14,35 +14,67 @@
 //   b = w x (w x rho_p) + 2 w x rho_p' - g,
 // after which (34)/(36) give p'' = B^T F / m_p + B^T (d x w' - b).
 // The same S serves the prescribed drive: eq. (47) is S w' = tau_0 - n m_p k.b.
-// tests/physics/RollingDynamicsTest.cpp checks all of this against the plain
-// 5x5 solve of (23)-(29) and against an independent Newton-Euler model.
+// tests/physics check all of this against the plain 5x5 solve of (23)-(29)
+// and against an independent Newton-Euler model.
+//
+// Why a heading frame: gravity and the contact offset rho_c are vertical, so
+// the dynamics look the same in the base frame turned about z by psi. There
+// the orientation is R' = Rx(v_o)^T Ry(u_o)^T, which needs no products with
+// psi; only w goes in and w' comes out through a 2D rotation.
+//
+// This is the hot path of every mode (four evaluations per RK4 step), so it
+// is inline, on plain doubles (Real3.h says why), and allocation-free.
 
 #include "engine/physics/HemisphereParams.h"
 #include "engine/physics/Orientation.h"
+#include "engine/physics/Real3.h"
+#include "engine/physics/SinCos.h"
 
 namespace hemiroll::physics {
 
-// Everything that depends on the configuration (u_o, v_o, psi, p) and the
-// mass point's relative velocity, in the base frame.
-struct RollingGeometry {
-  Orientation orientation;
-  Vec3 faceNormal;   // k_o
-  Vec3 rhoP;         // rho_p = R N p, mass point from the face centre
-  Vec3 rhoPDot;      // R N p', its velocity relative to the body
-  Vec3 lever;        // d = rho_p - rho_c, from the contact point to the mass point
+// The base frame turned about the vertical by psi: v_heading = Rz(psi) v_base.
+struct HeadingFrame {
+  double cpsi, spsi, cv, sv;
+  Real3 i, j, k;  // face axes: the columns of R' = Rx(v_o)^T Ry(u_o)^T
 
-  Vec3 inPlane(const Vec2& faceVector) const {
-    return orientation.R.col(0) * faceVector.x() + orientation.R.col(1) * faceVector.y();
-  }
-  Vec2 toFace(const Vec3& v) const { return {orientation.R.col(0).dot(v), orientation.R.col(1).dot(v)}; }
+  Real3 toHeading(const Real3& v) const { return {cpsi * v.x - spsi * v.y, spsi * v.x + cpsi * v.y, v.z}; }
+  Real3 toBase(const Real3& v) const { return {cpsi * v.x + spsi * v.y, cpsi * v.y - spsi * v.x, v.z}; }
+  Real3 inPlane(const Real2& q) const { return {i.x * q.x, i.y * q.x + j.y * q.y, i.z * q.x + j.z * q.y}; }
+  Real2 toFace(const Real3& v) const { return {dot(i, v), j.y * v.y + j.z * v.z}; }  // j.x = 0
 };
 
-RollingGeometry makeGeometry(const ModelConstants& c, const Orientation& o, const Vec2& p, const Vec2& pDot);
+inline HeadingFrame makeHeadingFrame(double u_o, double v_o, double psi) {
+  SinCos u, v;
+  sinCos2(u_o, v_o, u, v);
+  const SinCos p = sinCos(psi);
+  return HeadingFrame{p.cos,
+                      p.sin,
+                      v.cos,
+                      v.sin,
+                      {u.cos, v.sin * u.sin, v.cos * u.sin},
+                      {0.0, v.cos, -v.sin},
+                      {-u.sin, v.sin * u.cos, v.cos * u.cos}};
+}
 
-// Terms of one evaluation that both models need after the 3x3 solve.
+// Everything that depends on the configuration (u_o, v_o, psi, p) and the
+// mass point's velocity relative to the body, in the heading frame.
+struct RollingGeometry {
+  HeadingFrame frame;
+  Real3 rhoP;     // rho_p = R N p, mass point from the face centre
+  Real3 rhoPDot;  // R N p', its velocity relative to the body
+  Real3 lever;    // d = rho_p - rho_c, from the contact point to the mass point
+};
+
+inline RollingGeometry makeGeometry(const ModelConstants& c, const HeadingFrame& frame, const Real2& p,
+                                    const Real2& pDot) {
+  const Real3 rho = frame.inPlane(p);
+  return RollingGeometry{frame, rho, frame.inPlane(pDot), {rho.x, rho.y, rho.z + c.params.radius}};
+}
+
+// What one evaluation passes from the 3x3 solve to the mass point (heading frame).
 struct BodyAcceleration {
-  Vec3 omegaDot;   // w' [rad/s^2]
-  Vec3 pointBias;  // b = w x (w x rho_p) + 2 w x rho_p' - g [m/s^2]
+  Real3 omegaDot;   // w' [rad/s^2]
+  Real3 pointBias;  // b = w x (w x rho_p) + 2 w x rho_p' - g [m/s^2]
 };
 
 class RollingDynamics {
@@ -51,22 +83,65 @@ class RollingDynamics {
 
   const ModelConstants& constants() const { return c_; }
 
-  // J_c, the inertia of the hemisphere about the contact point, base frame.
+  // J_c, the inertia of the hemisphere about the contact point. Valid in any
+  // frame that shares the vertical with the base frame (base or heading).
   Mat3 contactInertia(const Vec3& faceNormal) const;
 
-  // w' for angular velocity w when an external force pushes the mass point
-  // with component externalNormalForce = k.F along the face normal (zero for
-  // M1 and for the prescribed drive; M2 and M3 pass theirs through the face).
-  BodyAcceleration bodyAcceleration(const RollingGeometry& g, const Vec3& omega,
-                                    double externalNormalForce) const;
+  // w' for angular velocity w (both heading frame) when an external force
+  // pushes the mass point with component externalNormalForce = k.F along the
+  // face normal (zero for M1 and for the prescribed drive; M2 and M3 pass
+  // theirs through the face).
+  BodyAcceleration bodyAcceleration(const RollingGeometry& g, const Real3& w, double externalNormalForce) const {
+    const double mp = c_.params.pointMass, R = c_.params.radius, grav = c_.params.gravity;
+    const Real3& k = g.frame.k;
+    BodyAcceleration a;
+    a.pointBias = doubleCross(w, g.rhoP) + 2.0 * cross(w, g.rhoPDot);
+    a.pointBias.z += grav;
+
+    // tau_0 with rho_s = -(3R/8) k, rho_c = -R e_z, g = -grav e_z; (-R e_z) x v = R (v_y, -v_x, 0).
+    const double shellLever = c_.params.shellMass * c_.comDepth;  // m_s 3R/8
+    const Real3 spin = -shellLever * doubleCross(w, k);            // w x (w x m_s rho_s)
+    const Real3 n = cross(g.lever, k);
+    const double load = externalNormalForce - mp * dot(k, a.pointBias);
+    const Real3 tau{R * spin.y + shellLever * grav * k.y + n.x * load, -R * spin.x - shellLever * grav * k.x + n.y * load,
+                    n.z * load};
+
+    // S = J_c + m_p n n^T, J_c written out as in contactInertia.
+    const double m = c_.shellMoment, diag = m * (1.4 - 0.75 * k.z);
+    const Real3 mpn = mp * n;
+    a.omegaDot = solveSymmetric3(diag + mpn.x * n.x, mpn.x * n.y, 0.375 * m * k.x + mpn.x * n.z, diag + mpn.y * n.y,
+                                 0.375 * m * k.y + mpn.y * n.z, 0.4 * m + mpn.z * n.z, tau);
+    return a;
+  }
 
   // p'' of the force-driven model for in-face force f, eqs. (30), (34), (36).
-  Vec2 pointAcceleration(const RollingGeometry& g, const BodyAcceleration& a, const Vec2& f) const;
+  Real2 pointAcceleration(const RollingGeometry& g, const BodyAcceleration& a, const Real2& f) const {
+    const Real2 q = g.frame.toFace(cross(g.lever, a.omegaDot) - a.pointBias);
+    const double invMass = 1.0 / c_.params.pointMass;
+    return {f.x * invMass + q.x, f.y * invMass + q.y};
+  }
 
   // f that realises a prescribed p'' (eq. 46), for the 8-state drive.
-  Vec2 prescribedForce(const RollingGeometry& g, const BodyAcceleration& a, const Vec2& pDDot) const;
+  Real2 prescribedForce(const RollingGeometry& g, const BodyAcceleration& a, const Real2& pDDot) const {
+    const Real2 q = g.frame.toFace(cross(g.lever, a.omegaDot) - a.pointBias);
+    const double mp = c_.params.pointMass;
+    return {mp * (pDDot.x - q.x), mp * (pDDot.y - q.y)};
+  }
 
  private:
+  // Solves S x = r for a symmetric positive definite 3x3 S by its adjugate: S
+  // is never singular while m_s > 0 (Sec. 3.1), and this is cheaper than a
+  // factorisation at this size.
+  static Real3 solveSymmetric3(double s00, double s01, double s02, double s11, double s12, double s22,
+                               const Real3& r) {
+    const double c00 = s11 * s22 - s12 * s12, c01 = s02 * s12 - s01 * s22, c02 = s01 * s12 - s02 * s11;
+    const double c11 = s00 * s22 - s02 * s02, c12 = s01 * s02 - s00 * s12, c22 = s00 * s11 - s01 * s01;
+    const double invDet = 1.0 / (s00 * c00 + s01 * c01 + s02 * c02);
+    return Real3{c00 * r.x + c01 * r.y + c02 * r.z, c01 * r.x + c11 * r.y + c12 * r.z,
+                 c02 * r.x + c12 * r.y + c22 * r.z} *
+           invDet;
+  }
+
   ModelConstants c_;
 };
 

@@ -30,28 +30,31 @@ inline constexpr double kExactReductionLimit = 1.6e6;
 inline constexpr double kRoundingShift = 0x1.8p52;
 
 // Taylor series on |r| <= pi/4 (plus a little slack from the rounding of n).
-inline double sinKernel(double r) {
-  const double z = r * r;
-  const double p = -1.0 / 6 + z * (1.0 / 120 + z * (-1.0 / 5040 + z * (2.7557319223985893e-06 +
+// Templates so that the same operations serve one angle and a vector of them.
+template <class T>
+inline T sinKernel(T r) {
+  const T z = r * r;
+  const T p = -1.0 / 6 + z * (1.0 / 120 + z * (-1.0 / 5040 + z * (2.7557319223985893e-06 +
                    z * (-2.505210838544172e-08 + z * (1.6059043836821613e-10 +
                    z * (-7.647163731819816e-13 + z * 2.8114572543455206e-15))))));
   return r + r * z * p;
 }
-inline double cosKernel(double r) {
-  const double z = r * r;
-  const double q = 1.0 / 24 + z * (-1.0 / 720 + z * (2.48015873015873e-05 + z * (-2.755731922398589e-07 +
+template <class T>
+inline T cosKernel(T r) {
+  const T z = r * r;
+  const T q = 1.0 / 24 + z * (-1.0 / 720 + z * (2.48015873015873e-05 + z * (-2.755731922398589e-07 +
                    z * (2.08767569878681e-09 + z * (-1.1470745597729725e-11 +
                    z * (4.779477332387385e-14 + z * -1.5619206968586225e-16))))));
-  const double half = 0.5 * z;
+  const T half = 0.5 * z;
   // 1 - z/2 loses bits when z/2 is near 1/4..1/2; take the exact part first.
-  const double w = 1.0 - half;
+  const T w = 1.0 - half;
   return w + (((1.0 - w) - half) + z * z * q);
 }
 }  // namespace detail
 
 inline SinCos sinCos(double x) {
   using namespace detail;
-  if (!(std::fabs(x) < kExactReductionLimit)) return {std::sin(x), std::cos(x)};
+  if (!(std::fabs(x) < kExactReductionLimit)) return {std::sin(x), std::cos(x)};  // also NaN, Inf
   // Round to nearest by the 1.5 * 2^52 shift: no libm call, same bits
   // everywhere (the build forbids fast-math, so the sum is not folded away).
   const double n = (x * kTwoOverPi + kRoundingShift) - kRoundingShift;
@@ -63,6 +66,31 @@ inline SinCos sinCos(double x) {
     case 2: return {-s, -c};
     default: return {-c, s};
   }
+}
+
+// Two angles at once, each with exactly the bits sinCos gives it: the same
+// operations in the same order, in the two lanes of an SSE2 register (GCC and
+// Clang vector extensions). The orientation needs three per evaluation.
+inline void sinCos2(double a, double b, SinCos& outA, SinCos& outB) {
+  using namespace detail;
+  typedef double Lanes __attribute__((vector_size(16)));
+  typedef long long LaneInts __attribute__((vector_size(16)));
+  if (!(std::fabs(a) < kExactReductionLimit && std::fabs(b) < kExactReductionLimit)) {
+    outA = sinCos(a);
+    outB = sinCos(b);
+    return;
+  }
+  const Lanes x = {a, b};
+  const Lanes n = (x * kTwoOverPi + kRoundingShift) - kRoundingShift;
+  const Lanes r = ((x - n * kPiOver2Hi) - n * kPiOver2Mid) - n * kPiOver2Lo;
+  const Lanes s = sinKernel(r), c = cosKernel(r);
+  const LaneInts quadrant = __builtin_convertvector(n, LaneInts) & 3;
+  const LaneInts swap = (quadrant & 1) != 0;
+  const Lanes sinAbs = swap ? c : s, cosAbs = swap ? s : c;
+  const Lanes sinv = (quadrant & 2) != 0 ? -sinAbs : sinAbs;
+  const Lanes cosv = ((quadrant + 1) & 2) != 0 ? -cosAbs : cosAbs;
+  outA = {sinv[0], cosv[0]};
+  outB = {sinv[1], cosv[1]};
 }
 
 }  // namespace hemiroll::physics
