@@ -1,0 +1,82 @@
+// game/sim/ScenarioRun: which rows a run produces, independent of the physics.
+
+#include "game/sim/ScenarioRun.h"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+namespace hemiroll::game {
+namespace {
+
+script::ScenarioDef roseScenario() {
+  script::ScenarioDef def;
+  def.drive.kind = script::DriveKind::Rose;
+  return def;
+}
+
+std::vector<TrajectoryRow> rowsOf(const script::ScenarioDef& def, const RunSettings& s, RunSummary* summary = nullptr) {
+  std::vector<TrajectoryRow> rows;
+  const RunSummary r = ScenarioRun(def, s).run([&](const TrajectoryRow& row) { rows.push_back(row); });
+  if (summary) *summary = r;
+  return rows;
+}
+
+TEST(ScenarioRun, StepCountRoundsWholeRatiosAndCoversTheRest) {
+  EXPECT_EQ(ScenarioRun::stepCount({35.0, 0.001, "rk4", 1}), 35000);
+  EXPECT_EQ(ScenarioRun::stepCount({0.1, 0.001, "rk4", 1}), 100);
+  EXPECT_EQ(ScenarioRun::stepCount({0.1005, 0.001, "rk4", 1}), 101);  // last step shortened
+  EXPECT_EQ(ScenarioRun::stepCount({0.0005, 0.001, "rk4", 1}), 1);
+}
+
+TEST(ScenarioRun, RowsAtEveryNthStepPlusFirstAndLast) {
+  RunSummary summary;
+  const auto rows = rowsOf(roseScenario(), {0.1, 0.001, "rk4", 7}, &summary);
+  ASSERT_EQ(summary.event, physics::DomainEvent::None);
+  EXPECT_EQ(summary.steps, 100);
+  ASSERT_EQ(rows.size(), 1u + 100 / 7 + 1);  // 0, 7, ..., 98, and 100
+  EXPECT_EQ(rows.front().time, 0.0);
+  for (std::size_t i = 1; i + 1 < rows.size(); ++i) EXPECT_DOUBLE_EQ(rows[i].time, 0.007 * static_cast<double>(i));
+  EXPECT_EQ(rows.back().time, 0.1);
+}
+
+TEST(ScenarioRun, SubsampledRowsEqualTheFullRun) {
+  const auto all = rowsOf(roseScenario(), {0.05, 0.001, "rk4", 1});
+  const auto some = rowsOf(roseScenario(), {0.05, 0.001, "rk4", 10});
+  ASSERT_EQ(all.size(), 51u);
+  ASSERT_EQ(some.size(), 6u);
+  for (std::size_t i = 0; i < some.size(); ++i) {
+    EXPECT_EQ(some[i].time, all[10 * i].time);
+    EXPECT_EQ(some[i].state, all[10 * i].state);
+    EXPECT_EQ(some[i].energy, all[10 * i].energy);
+  }
+}
+
+TEST(ScenarioRun, ShortenedLastStepEndsAtTheDuration) {
+  const auto rows = rowsOf(roseScenario(), {0.0105, 0.001, "rk4", 1});
+  ASSERT_EQ(rows.size(), 12u);
+  EXPECT_EQ(rows.back().time, 0.0105);
+}
+
+TEST(ScenarioRun, RoseRowsCarryTheCurveAndTheDrivingForce) {
+  const script::ScenarioDef def = roseScenario();
+  const auto rows = rowsOf(def, {0.01, 0.001, "rk4", 1});
+  // p(0) = (r1 + r2, 0) by eqs. (49)-(50) at phi = 0.
+  EXPECT_EQ(rows.front().state[physics::force_slot::x_p], def.drive.rose.r1 + def.drive.rose.r2);
+  EXPECT_EQ(rows.front().state[physics::force_slot::y_p], 0.0);
+  EXPECT_NE(rows.front().faceForce.norm(), 0.0);
+  EXPECT_EQ(rows.front().handForce, physics::Vec3::Zero());
+}
+
+TEST(ScenarioRun, InitialStateOutsideTheDomainStopsAtOnce) {
+  script::ScenarioDef def = roseScenario();
+  def.drive.rose.r1 = 0.05;  // p(0) beyond the face edge R = 0.04
+  RunSummary summary;
+  const auto rows = rowsOf(def, {1.0, 0.001, "rk4", 1}, &summary);
+  EXPECT_EQ(summary.event, physics::DomainEvent::LeftFace);
+  EXPECT_EQ(summary.steps, 0);
+  EXPECT_EQ(rows.size(), 1u);
+}
+
+}  // namespace
+}  // namespace hemiroll::game

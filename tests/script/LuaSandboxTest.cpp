@@ -1,0 +1,206 @@
+// engine/script/LuaSandbox: the allow-list, text-only loading, the quota, the
+// memory cap, and errors as "file:line: message".
+
+#include "engine/script/LuaSandbox.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <lua.hpp>
+#include <string>
+
+#include "engine/script/ScriptError.h"
+
+namespace hemiroll::script {
+namespace {
+
+using ::testing::HasSubstr;
+
+// Runs `source` as chunk "t.lua" and returns its single result as a string
+// (tostring-like), or the error message prefixed with "ERROR: ".
+std::string run(LuaSandbox& sandbox, const std::string& source) {
+  try {
+    sandbox.runChunk(source, "t.lua", 1);
+  } catch (const ScriptError& e) {
+    return std::string("ERROR: ") + e.what();
+  }
+  lua_State* L = sandbox.state();
+  std::string out = lua_type(L, -1) == LUA_TBOOLEAN ? (lua_toboolean(L, -1) ? "true" : "false")
+                    : lua_isstring(L, -1)           ? lua_tostring(L, -1)
+                                                    : lua_typename(L, lua_type(L, -1));
+  lua_pop(L, 1);
+  return out;
+}
+
+std::string runFresh(const std::string& source, const SandboxLimits& limits = {}) {
+  LuaSandbox sandbox(limits);
+  return run(sandbox, source);
+}
+
+// Precompiled bytecode for `source`, made by an ordinary (unsandboxed) state.
+std::string bytecodeOf(const std::string& source) {
+  lua_State* L = luaL_newstate();
+  EXPECT_EQ(luaL_loadstring(L, source.c_str()), LUA_OK);
+  std::string bytes;
+  lua_dump(
+      L,
+      [](lua_State*, const void* p, size_t n, void* ud) {
+        static_cast<std::string*>(ud)->append(static_cast<const char*>(p), n);
+        return 0;
+      },
+      &bytes, 0);
+  lua_close(L);
+  return bytes;
+}
+
+TEST(LuaSandbox, AllowedLibrariesWork) {
+  EXPECT_EQ(runFresh("return string.rep('ab', 3) .. ('x'):upper()"), "abababX");
+  EXPECT_EQ(runFresh("return table.concat({1, 2, 3}, ',')"), "1,2,3");
+  EXPECT_EQ(runFresh("return tostring(math.floor(2.5) + math.max(1, 4))"), "6");
+  EXPECT_EQ(runFresh("return utf8.char(72, 105)"), "Hi");
+  EXPECT_EQ(runFresh("local s = 0 for _, v in ipairs({1, 2}) do s = s + v end return tostring(s)"), "3");
+  EXPECT_EQ(runFresh("return tostring(select('#', 1, 2, 3))"), "3");
+  EXPECT_EQ(runFresh("return tostring(pcall(error, 'x'))"), "false");
+  EXPECT_EQ(runFresh("return _G == _ENV and _G.string == string"), "true");
+}
+
+// Every name a script must not reach is absent from its environment.
+class SandboxRefuses : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(SandboxRefuses, NameIsNil) {
+  EXPECT_EQ(runFresh(std::string("return ") + GetParam() + " == nil"), "true") << GetParam();
+}
+
+INSTANTIATE_TEST_SUITE_P(Escapes, SandboxRefuses,
+                         ::testing::Values("io", "os", "debug", "package", "require", "load", "loadfile",
+                                           "dofile", "collectgarbage", "rawset", "rawget", "coroutine",
+                                           "loadstring", "math.random", "math.randomseed", "string.dump",
+                                           "('').dump"));
+
+TEST(LuaSandbox, UsingARefusedLibraryIsAPositionedError) {
+  const std::string message = runFresh("local x = 1\nreturn io.open('/etc/passwd')");
+  EXPECT_THAT(message, HasSubstr("ERROR: t.lua:2:"));
+  EXPECT_THAT(message, HasSubstr("'io'"));
+  EXPECT_THAT(runFresh("return os.exit(3)"), HasSubstr("ERROR: t.lua:1:"));
+  EXPECT_THAT(runFresh("return require('os')"), HasSubstr("ERROR: t.lua:1:"));
+  EXPECT_THAT(runFresh("return debug.getregistry()"), HasSubstr("ERROR: t.lua:1:"));
+}
+
+TEST(LuaSandbox, StringMetatableIsHidden) {
+  EXPECT_EQ(runFresh("return getmetatable('')"), "false");
+  EXPECT_THAT(runFresh("return getmetatable('').__index"), HasSubstr("ERROR: t.lua:1:"));
+  EXPECT_THAT(runFresh("return setmetatable('', {})"), HasSubstr("ERROR: t.lua:1:"));
+  // The script's `string` is a copy: replacing its functions leaves the
+  // methods of strings (the original library) alone.
+  EXPECT_EQ(runFresh("string.format = nil; string.rep = nil; return ('%d'):format(7) .. ('a'):rep(2)"), "7aa");
+}
+
+TEST(LuaSandbox, FinalizersAreRefused) {
+  EXPECT_THAT(runFresh("setmetatable({}, {__gc = function() while true do end end})"),
+              HasSubstr("__gc metamethods are not available"));
+  EXPECT_EQ(runFresh("return getmetatable(setmetatable({}, {__index = {a = 'ok'}})).__index.a"), "ok");
+  EXPECT_THAT(runFresh("local t = setmetatable({}, {__metatable = 'locked'}) return setmetatable(t, {})"),
+              HasSubstr("protected metatable"));
+}
+
+TEST(LuaSandbox, BinaryChunksAreRefused) {
+  const std::string bytecode = bytecodeOf("return 42");
+  ASSERT_FALSE(bytecode.empty());
+  LuaSandbox sandbox;
+  const std::string message = run(sandbox, bytecode);
+  EXPECT_THAT(message, HasSubstr("ERROR: t.lua:"));
+  EXPECT_THAT(message, HasSubstr("binary"));
+}
+
+TEST(LuaSandbox, SyntaxErrorsNameFileAndLine) {
+  const std::string message = runFresh("local a = 1\nlocal b = = 2\n");
+  EXPECT_THAT(message, HasSubstr("ERROR: t.lua:2:"));
+}
+
+TEST(LuaSandbox, RuntimeErrorsNameFileAndLine) {
+  EXPECT_THAT(runFresh("local t\n\nreturn t.x"), HasSubstr("ERROR: t.lua:3: attempt to index a nil value"));
+  EXPECT_THAT(runFresh("error('plain')"), HasSubstr("ERROR: t.lua:1: plain"));
+  // No position from error(msg, 0) or a non-string error: the line is added.
+  EXPECT_THAT(runFresh("\nerror('bare', 0)"), HasSubstr("ERROR: t.lua:2: bare"));
+  EXPECT_THAT(runFresh("error({})"), HasSubstr("ERROR: t.lua:1: (error object is a table value)"));
+  // Errors raised inside library functions point at the calling line.
+  EXPECT_THAT(runFresh("\n\nreturn string.rep()"), HasSubstr("ERROR: t.lua:3: bad argument #1 to 'rep'"));
+}
+
+TEST(LuaSandbox, InstructionQuotaStopsEndlessLoops) {
+  SandboxLimits limits;
+  limits.chunkInstructionQuota = 100'000;
+  const std::string message = runFresh("local i = 0\nwhile true do i = i + 1 end", limits);
+  EXPECT_THAT(message, HasSubstr("ERROR: t.lua:2: instruction quota of 100000 instructions exceeded"));
+}
+
+TEST(LuaSandbox, QuotaCannotBeSwallowedByPcall) {
+  SandboxLimits limits;
+  limits.chunkInstructionQuota = 100'000;
+  const std::string message =
+      runFresh("while true do pcall(function() while true do end end) end return 'escaped'", limits);
+  EXPECT_THAT(message, HasSubstr("instruction quota"));
+}
+
+TEST(LuaSandbox, QuotaAllowsWorkWithinIt) {
+  SandboxLimits limits;
+  limits.chunkInstructionQuota = 1'000'000;
+  EXPECT_EQ(runFresh("local s = 0 for i = 1, 1000 do s = s + i end return tostring(s)", limits), "500500");
+}
+
+TEST(LuaSandbox, MemoryCapStopsRunawayAllocation) {
+  SandboxLimits limits;
+  limits.memoryLimitBytes = std::size_t{2} << 20;
+  LuaSandbox sandbox(limits);
+  EXPECT_THAT(run(sandbox, "local t = {} for i = 1, 1e8 do t[i] = i end"),
+              HasSubstr("ERROR: t.lua: memory limit of 2 MiB exceeded"));
+  EXPECT_THAT(run(sandbox, "return string.rep('x', 1 << 30)"), HasSubstr("memory limit of 2 MiB exceeded"));
+  // The state survives and the garbage is collectable: a small chunk still runs.
+  EXPECT_EQ(run(sandbox, "return 'alive'"), "alive");
+  EXPECT_LE(sandbox.memoryInUse(), limits.memoryLimitBytes);
+}
+
+TEST(LuaSandbox, PrintWritesToStderrNotStdout) {
+  LuaSandbox sandbox;
+  testing::internal::CaptureStdout();
+  testing::internal::CaptureStderr();
+  run(sandbox, "print('hello', 1, true)");
+  const std::string out = testing::internal::GetCapturedStdout();
+  const std::string err = testing::internal::GetCapturedStderr();
+  EXPECT_EQ(out, "");
+  EXPECT_EQ(err, "hello\t1\ttrue\n");
+}
+
+TEST(LuaSandbox, CallUsesThePerCallQuota) {
+  SandboxLimits limits;
+  limits.callInstructionQuota = 50'000;
+  LuaSandbox sandbox(limits);
+  sandbox.runChunk("return function(n) local s = 0 for i = 1, n do s = s + i end return s end", "f.lua", 1);
+  lua_State* L = sandbox.state();
+  const int function = lua_gettop(L);
+
+  lua_pushvalue(L, function);
+  lua_pushinteger(L, 100);
+  ASSERT_EQ(sandbox.call(1, 1, "f.lua:1"), 1);
+  EXPECT_EQ(lua_tointeger(L, -1), 5050);
+  lua_pop(L, 1);
+
+  lua_pushvalue(L, function);
+  lua_pushinteger(L, 100'000'000);
+  try {
+    sandbox.call(1, 1, "f.lua:1");
+    FAIL() << "expected the per-call quota to stop the call";
+  } catch (const ScriptError& e) {
+    EXPECT_THAT(std::string(e.what()), HasSubstr("f.lua:1: instruction quota of 50000"));
+  }
+  EXPECT_EQ(lua_gettop(L), function) << "a failed call leaves the stack as it was";
+}
+
+TEST(LuaSandbox, ScriptsCannotReachEachOther) {
+  LuaSandbox a, b;
+  run(a, "shared = 1");
+  EXPECT_EQ(run(b, "return shared == nil"), "true");
+}
+
+}  // namespace
+}  // namespace hemiroll::script

@@ -1,0 +1,177 @@
+// engine/script/ScenarioLoader: scenario files into ScenarioDef, with the
+// paper's defaults and one clear message per mistake.
+
+#include "engine/script/ScenarioLoader.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "engine/physics/StateLayout.h"
+#include "engine/script/ScriptError.h"
+#include "tests/support/TempDirectory.h"
+
+namespace hemiroll::script {
+namespace {
+
+using ::testing::HasSubstr;
+
+ScenarioDef load(const std::string& source) { return ScenarioLoader().loadSource(source, "s.lua"); }
+
+std::string errorOf(const std::string& source) {
+  try {
+    load(source);
+  } catch (const ScriptError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(ScenarioLoader, MissingParamsAreThePapers) {
+  const ScenarioDef def = load("return {drive = {kind = 'free'}}");
+  const physics::HemisphereParams paper;
+  EXPECT_EQ(def.params.radius, paper.radius);
+  EXPECT_EQ(def.params.shellMass, paper.shellMass);
+  EXPECT_EQ(def.params.pointMass, paper.pointMass);
+  EXPECT_EQ(def.params.gravity, paper.gravity);
+  EXPECT_EQ(def.initial, physics::ForceDrivenState::Zero());
+  EXPECT_EQ(def.drive.kind, DriveKind::Free);
+  EXPECT_FALSE(def.duration.has_value());
+  EXPECT_FALSE(def.timeStep.has_value());
+  EXPECT_FALSE(def.integrator.has_value());
+}
+
+TEST(ScenarioLoader, ReadsEveryField) {
+  const ScenarioDef def = load(R"(
+    return {
+      params = {R = 0.05, m_s = 0.2, m_p = 0.5, g = 9.8},
+      initial = {x_p = 0.001, y_p = 0.002, xd_p = 0.003, yd_p = 0.004, w_x = 5, w_y = 6, w_z = 7,
+                 u_a = 8, v_a = 9, u_o = 0.1, v_o = 0.2, psi = 12},
+      drive = {kind = 'free'},
+      duration = 3, dt = 0.002, integrator = 'rk4',
+    })");
+  EXPECT_EQ(def.params.radius, 0.05);
+  EXPECT_EQ(def.params.shellMass, 0.2);
+  EXPECT_EQ(def.params.pointMass, 0.5);
+  EXPECT_EQ(def.params.gravity, 9.8);
+  const double expected[12] = {0.001, 0.002, 0.003, 0.004, 5, 6, 7, 8, 9, 0.1, 0.2, 12};
+  for (int i = 0; i < 12; ++i) EXPECT_EQ(def.initial[i], expected[i]) << physics::kStateNames[i];
+  EXPECT_EQ(def.duration, 3.0);
+  EXPECT_EQ(def.timeStep, 0.002);
+  EXPECT_EQ(def.integrator, "rk4");
+  EXPECT_EQ(def.source, "s.lua");
+}
+
+TEST(ScenarioLoader, RoseDrive) {
+  const ScenarioDef def = load("return {drive = {kind = 'rose', r1 = 0.01, r2 = 0.005, k = 4, Omega = -math.pi / 5}}");
+  ASSERT_EQ(def.drive.kind, DriveKind::Rose);
+  EXPECT_EQ(def.drive.rose.r1, 0.01);
+  EXPECT_EQ(def.drive.rose.r2, 0.005);
+  EXPECT_EQ(def.drive.rose.k, 4.0);
+  EXPECT_EQ(def.drive.rose.omega, -M_PI / 5);
+  // Omitted rose fields are the paper's.
+  const ScenarioDef paper = load("return {drive = {kind = 'rose'}}");
+  const physics::RoseDef rose;
+  EXPECT_EQ(paper.drive.rose.r1, rose.r1);
+  EXPECT_EQ(paper.drive.rose.omega, rose.omega);
+}
+
+TEST(ScenarioLoader, RoseAcceptsABareHemisphere) {
+  EXPECT_EQ(load("return {params = {m_p = 0}, drive = {kind = 'rose'}}").params.pointMass, 0.0);
+  EXPECT_THAT(errorOf("return {params = {m_p = 0}, drive = {kind = 'free'}}"), HasSubstr("s.lua: params.m_p"));
+}
+
+TEST(ScenarioLoader, ProxyDriveWithConstantTables) {
+  const ScenarioDef positional =
+      load("return {drive = {kind = 'proxy', method = 'M2', kr = 100, kv = 1, alpha = 3, proxy = {0.01, 0.02, 0.04}}}");
+  ASSERT_EQ(positional.drive.kind, DriveKind::Proxy);
+  EXPECT_EQ(positional.drive.coupling.method, physics::ForceMethod::M2);
+  EXPECT_EQ(positional.drive.coupling.stiffness, 100.0);
+  EXPECT_EQ(positional.drive.coupling.damping, 1.0);
+  EXPECT_EQ(positional.drive.coupling.alpha, 3.0);
+  EXPECT_EQ(positional.drive.proxy->at(7.0).position, physics::Vec3(0.01, 0.02, 0.04));
+
+  const ScenarioDef named = load("return {drive = {kind = 'proxy', proxy = {x = 0.01, y = 0.02, z = 0.04}}}");
+  EXPECT_EQ(named.drive.proxy->at(0.0).position, physics::Vec3(0.01, 0.02, 0.04));
+  const physics::CouplingDef paper;
+  EXPECT_EQ(named.drive.coupling.method, paper.method);
+  EXPECT_EQ(named.drive.coupling.stiffness, paper.stiffness);
+}
+
+TEST(ScenarioLoader, ProxyFunctionOutlivesTheLoader) {
+  const ScenarioDef def = load(R"(
+    local amplitude = 0.003
+    return {drive = {kind = 'proxy', method = 'M1',
+                     proxy = function(t) return amplitude * t, 0, 0.04, amplitude, 0, 0 end}})");
+  const physics::ProxyPose pose = def.drive.proxy->at(2.0);
+  EXPECT_EQ(pose.position, physics::Vec3(0.006, 0.0, 0.04));
+  EXPECT_EQ(pose.velocity, physics::Vec3(0.003, 0.0, 0.0));
+}
+
+TEST(ScenarioLoader, BadProxyReturnsFailAtLoad) {
+  EXPECT_THAT(errorOf("return {drive = {kind = 'proxy', proxy = function(t) return 'x' end}}"),
+              HasSubstr("s.lua:1: drive.proxy(t = 0) returned 1 value"));
+}
+
+TEST(ScenarioLoader, MistakesNameTheFieldPath) {
+  EXPECT_EQ(errorOf("return {drive = {kind = 'rose', r1 = 'a'}}"), "s.lua: drive.r1: expected a number, got string");
+  EXPECT_EQ(errorOf("return 3"), "s.lua: the scenario must return a table, got number");
+  EXPECT_THAT(errorOf("return {}"), HasSubstr("s.lua: drive: missing"));
+  EXPECT_THAT(errorOf("return {drive = {}}"), HasSubstr("s.lua: drive.kind: missing"));
+  EXPECT_THAT(errorOf("return {drive = {kind = 'wobble'}}"), HasSubstr("s.lua: drive.kind: unknown drive kind 'wobble'"));
+  EXPECT_THAT(errorOf("return {drive = {kind = 'proxy', method = 'M4', proxy = {0, 0, 0}}}"),
+              HasSubstr("s.lua: drive.method: unknown method 'M4'"));
+  EXPECT_THAT(errorOf("return {drive = {kind = 'proxy', kr = -1, proxy = {0, 0, 0}}}"), HasSubstr("s.lua: drive.kr"));
+  EXPECT_THAT(errorOf("return {drive = {kind = 'proxy'}}"), HasSubstr("s.lua: drive.proxy: missing"));
+  EXPECT_THAT(errorOf("return {drive = {kind = 'proxy', proxy = {0, 0}}}"), HasSubstr("s.lua: drive.proxy: expected"));
+  EXPECT_THAT(errorOf("return {drive = {kind = 'proxy', proxy = 5}}"), HasSubstr("s.lua: drive.proxy: expected a function"));
+  EXPECT_THAT(errorOf("return {drive = {kind = 'free', r1 = 1}}"), HasSubstr("s.lua: drive: unknown field 'r1'"));
+  EXPECT_THAT(errorOf("return {drive = {kind = 'free'}, params = {m_s = -0.1}}"), HasSubstr("s.lua: params.m_s"));
+  EXPECT_THAT(errorOf("return {drive = {kind = 'free'}, params = {R = 0}}"), HasSubstr("s.lua: params.R"));
+  EXPECT_THAT(errorOf("return {drive = {kind = 'free'}, params = {mass = 1}}"), HasSubstr("s.lua: params: unknown field 'mass'"));
+  EXPECT_EQ(errorOf("return {drive = {kind = 'free'}, params = {g = 0/0}}"), "s.lua: params.g: expected a finite number, got nan");
+  EXPECT_THAT(errorOf("return {drive = {kind = 'free'}, initial = {theta = 1}}"),
+              HasSubstr("s.lua: initial: unknown field 'theta'"));
+  EXPECT_THAT(errorOf("return {drive = {kind = 'free'}, initial = {0, 0}}"), HasSubstr("s.lua: initial: unknown fields [1], [2]"));
+  EXPECT_THAT(errorOf("return {drive = {kind = 'rose'}, initial = {x_p = 0.02}}"), HasSubstr("s.lua: initial.x_p: the rose drive"));
+  EXPECT_THAT(errorOf("return {drive = {kind = 'rose', r2 = -0.001}}"), HasSubstr("s.lua: drive.r2: must be a non-negative length"));
+  EXPECT_THAT(errorOf("return {drive = {kind = 'free'}, dt = 0}"), HasSubstr("s.lua: dt: must be a positive"));
+  EXPECT_THAT(errorOf("return {drive = {kind = 'free'}, duration = -2}"), HasSubstr("s.lua: duration: must be a positive"));
+  EXPECT_THAT(errorOf("return {drive = {kind = 'free'}, integrator = 'euler'}"),
+              HasSubstr("s.lua: integrator: unknown integrator 'euler' (available: rk4"));
+  EXPECT_THAT(errorOf("return {drive = {kind = 'free'}, durration = 1}"), HasSubstr("s.lua: unknown field 'durration'"));
+}
+
+TEST(ScenarioLoader, FilesAreNamedAsGiven) {
+  const test::TempDirectory dir;
+  const std::string good = dir.write("good.lua", "return {drive = {kind = 'free'}}");
+  EXPECT_EQ(ScenarioLoader().loadFile(good).source, good);
+  const std::string bad = dir.write("bad.lua", "\n\nreturn {drive = {kind = 'free'}, dt = 'fast'}");
+  try {
+    ScenarioLoader().loadFile(bad);
+    FAIL() << "expected an error";
+  } catch (const ScriptError& e) {
+    EXPECT_EQ(std::string(e.what()), bad + ": dt: expected a number, got string");
+  }
+  try {
+    ScenarioLoader().loadFile((dir.path() / "missing.lua").string());
+    FAIL() << "expected an error";
+  } catch (const ScriptError& e) {
+    EXPECT_THAT(std::string(e.what()), HasSubstr("missing.lua: cannot open file"));
+  }
+}
+
+TEST(ScenarioLoader, ShebangLineKeepsLineNumbers) {
+  const test::TempDirectory dir;
+  const std::string path = dir.write("s.lua", "#!/usr/bin/env hemiroll\nlocal x = nil\nreturn x.y\n");
+  try {
+    ScenarioLoader().loadFile(path);
+    FAIL() << "expected an error";
+  } catch (const ScriptError& e) {
+    EXPECT_THAT(std::string(e.what()), HasSubstr("s.lua:3:"));
+  }
+}
+
+}  // namespace
+}  // namespace hemiroll::script
