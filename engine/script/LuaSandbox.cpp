@@ -1,5 +1,6 @@
 #include "engine/script/LuaSandbox.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -162,6 +163,20 @@ int openSandbox(lua_State* L) {
   return 1;
 }
 
+// True when a message starts with a position "source:line:". Errors raised
+// while no Lua function is running (the parser's "C stack overflow", say)
+// have none, and get the chunk or callee prefixed instead.
+bool hasPosition(const std::string& message) {
+  const std::size_t searchLimit = std::min<std::size_t>(message.size(), LUA_IDSIZE + 2);
+  for (std::size_t colon = message.find(':'); colon != std::string::npos && colon < searchLimit;
+       colon = message.find(':', colon + 1)) {
+    std::size_t end = colon + 1;
+    while (end < message.size() && message[end] >= '0' && message[end] <= '9') ++end;
+    if (end > colon + 1 && end < message.size() && message[end] == ':') return true;
+  }
+  return false;
+}
+
 std::string describeBytes(std::size_t bytes) {
   std::ostringstream out;
   if (bytes % (std::size_t{1} << 20) == 0)
@@ -260,7 +275,7 @@ int LuaSandbox::protectedCall(int nargs, int nresults, std::uint64_t quota, std:
     error = std::string(where) + ": memory limit of " + describeBytes(limits_.memoryLimitBytes) + " exceeded";
   } else if (lua_type(L, -1) == LUA_TSTRING) {
     error = lua_tostring(L, -1);
-    if (status == LUA_ERRERR) error = std::string(where) + ": " + error;
+    if (status == LUA_ERRERR || !hasPosition(error)) error = std::string(where) + ": " + error;
   } else {
     error = std::string(where) + ": unknown Lua error";
   }
@@ -281,10 +296,13 @@ void LuaSandbox::runChunk(std::string_view source, const std::string& chunkName,
   const int loaded = luaL_loadbufferx(L, source.data(), source.size(), name.c_str(), "t");
   disarm();
   if (loaded != LUA_OK) {
-    std::string message = loaded == LUA_ERRMEM || lua_type(L, -1) != LUA_TSTRING
-                              ? chunkName + ": memory limit of " + describeBytes(limits_.memoryLimitBytes) +
-                                    " exceeded while compiling"
-                              : std::string(lua_tostring(L, -1));
+    std::string message;
+    if (loaded == LUA_ERRMEM || lua_type(L, -1) != LUA_TSTRING) {
+      message = chunkName + ": memory limit of " + describeBytes(limits_.memoryLimitBytes) + " exceeded while compiling";
+    } else {
+      message = lua_tostring(L, -1);
+      if (!hasPosition(message)) message = chunkName + ": " + message;
+    }
     lua_pop(L, 1);
     throw ScriptError(message);
   }

@@ -127,6 +127,24 @@ TEST(LuaSandbox, RuntimeErrorsNameFileAndLine) {
   EXPECT_THAT(runFresh("\n\nreturn string.rep()"), HasSubstr("ERROR: t.lua:3: bad argument #1 to 'rep'"));
 }
 
+TEST(LuaSandbox, StackExhaustionIsAnErrorNotACrash) {
+  EXPECT_THAT(runFresh("local function f(n) return f(n + 1) + 1 end\nreturn f(1)"),
+              HasSubstr("ERROR: t.lua:1: stack overflow"));
+  // The parser's own recursion limit fires with no Lua function running: the
+  // chunk name is added so the message still names the file.
+  EXPECT_THAT(runFresh("return " + std::string(1000, '{') + std::string(1000, '}')),
+              HasSubstr("ERROR: t.lua: C stack overflow"));
+}
+
+TEST(LuaSandbox, ErrorObjectsWithEndlessTostringAreStopped) {
+  SandboxLimits limits;
+  limits.chunkInstructionQuota = 100'000;
+  EXPECT_THAT(runFresh("error(setmetatable({}, {__tostring = function() while true do end end}))", limits),
+              HasSubstr("ERROR: t.lua"));
+  EXPECT_EQ(runFresh("error(setmetatable({}, {__tostring = function() return 'custom' end}))"),
+            "ERROR: t.lua:1: custom");
+}
+
 TEST(LuaSandbox, InstructionQuotaStopsEndlessLoops) {
   SandboxLimits limits;
   limits.chunkInstructionQuota = 100'000;
