@@ -17,7 +17,7 @@ RollingGeometry geometryOf(const ModelConstants& c, const ForceDrivenState& x) {
 }
 
 ForceDrivenSystem::ForceDrivenSystem(const HemisphereParams& params, const DomainLimits& limits)
-    : dynamics_(params), limits_(limits) {}
+    : dynamics_(params), limits_(limits), cosMaxTilt_(std::cos(limits.maxTilt)) {}
 
 void ForceDrivenSystem::setFree() {
   input_ = Input::Free;
@@ -91,7 +91,9 @@ void ForceDrivenSystem::derivative(double t, const ForceDrivenState& x, ForceDri
 
 DomainMargins ForceDrivenSystem::margins(double, const ForceDrivenState& x) const {
   const double radius = dynamics_.constants().params.radius;
-  return {std::cos(x[u_o]) * std::cos(x[v_o]) - std::cos(limits_.maxTilt),
+  SinCos u, v;
+  sinCos2(x[u_o], x[v_o], u, v);
+  return {u.cos * v.cos - cosMaxTilt_,
           limits_.maxPointRadius * radius - std::sqrt(x[x_p] * x[x_p] + x[y_p] * x[y_p])};
 }
 

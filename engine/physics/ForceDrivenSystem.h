@@ -52,6 +52,7 @@ class ForceDrivenSystem final : public OdeSystem<12> {
 
   RollingDynamics dynamics_;
   DomainLimits limits_;
+  double cosMaxTilt_;
   Input input_ = Input::Free;
   Vec2 faceForce_ = Vec2::Zero();
   CouplingDef coupling_;

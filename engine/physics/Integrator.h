@@ -9,6 +9,9 @@
 namespace hemiroll::physics {
 
 template <int N>
+class AdaptiveIntegrator;
+
+template <int N>
 class Integrator {
  public:
   virtual ~Integrator() = default;
@@ -17,6 +20,10 @@ class Integrator {
   // Advances x from t to t + h. h may be any positive value: the stepper
   // shortens steps to locate events.
   virtual void step(const OdeSystem<N>& system, double t, StateVector<N>& x, double h) = 0;
+  // The step-size-controlled interface (AdaptiveIntegrator.h), or nullptr for
+  // a fixed-step method. Lets the stepper and the registry tell them apart
+  // without RTTI.
+  virtual AdaptiveIntegrator<N>* adaptive() { return nullptr; }
 };
 
 // The classical fourth-order Runge-Kutta method, the paper's choice (h = 1 ms).

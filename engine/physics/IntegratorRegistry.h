@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-#include "engine/physics/Integrator.h"
+#include "engine/physics/AdaptiveIntegrator.h"
 
 namespace hemiroll::physics {
 
@@ -18,6 +18,7 @@ struct IntegratorInfo {
   std::string name;         // the name flags and files use, e.g. "rk4"
   std::string description;  // one line for `--integrator list`
   int order = 0;            // classical order of accuracy
+  bool adaptive = false;    // step-size controlled: takes a tolerance (--tol), not a step
 };
 
 class IntegratorRegistry {
@@ -45,8 +46,10 @@ class IntegratorRegistry {
   // Adds a method implemented as a class template Method<N>.
   template <template <int> class Method>
   void add(std::string name, std::string description) {
-    const int order = Method<12>().order();
-    entries_.push_back(Entry{IntegratorInfo{std::move(name), std::move(description), order},
+    Method<12> probe;
+    const int order = probe.order();
+    const bool adaptive = probe.adaptive() != nullptr;
+    entries_.push_back(Entry{IntegratorInfo{std::move(name), std::move(description), order, adaptive},
                              [] { return std::unique_ptr<Integrator<12>>(new Method<12>()); },
                              [] { return std::unique_ptr<Integrator<8>>(new Method<8>()); }});
   }

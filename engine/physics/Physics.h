@@ -12,10 +12,14 @@
 // Must not know: Lua, devices, threads, clocks, files, rendering, levels.
 // Depends on Eigen and the standard library only.
 
+#include "engine/physics/AdaptiveIntegrator.h"
 #include "engine/physics/DomainEvents.h"
+#include "engine/physics/DormandPrince54.h"
+#include "engine/physics/DormandPrince853.h"
 #include "engine/physics/Energy.h"
 #include "engine/physics/ForceCoupling.h"
 #include "engine/physics/ForceDrivenSystem.h"
+#include "engine/physics/GaussLegendre.h"
 #include "engine/physics/HemisphereParams.h"
 #include "engine/physics/Integrator.h"
 #include "engine/physics/Orientation.h"

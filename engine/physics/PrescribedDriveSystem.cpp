@@ -14,7 +14,7 @@ RollingGeometry geometryAt(const ModelConstants& c, const BodyState& x, const Ma
 
 PrescribedDriveSystem::PrescribedDriveSystem(const HemisphereParams& params, const MassPointTrajectory& trajectory,
                                              const DomainLimits& limits)
-    : dynamics_(params), trajectory_(trajectory), limits_(limits) {}
+    : dynamics_(params), trajectory_(trajectory), limits_(limits), cosMaxTilt_(std::cos(limits.maxTilt)) {}
 
 void PrescribedDriveSystem::derivative(double t, const BodyState& x, BodyState& dxdt) const {
   const ModelConstants& c = dynamics_.constants();
@@ -39,7 +39,9 @@ void PrescribedDriveSystem::derivative(double t, const BodyState& x, BodyState& 
 DomainMargins PrescribedDriveSystem::margins(double t, const BodyState& x) const {
   const double radius = dynamics_.constants().params.radius;
   const Vec2 p = trajectory_.at(t).p;
-  return {std::cos(x[u_o]) * std::cos(x[v_o]) - std::cos(limits_.maxTilt),
+  SinCos u, v;
+  sinCos2(x[u_o], x[v_o], u, v);
+  return {u.cos * v.cos - cosMaxTilt_,
           limits_.maxPointRadius * radius - std::sqrt(p.squaredNorm())};
 }
 

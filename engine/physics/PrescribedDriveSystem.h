@@ -36,6 +36,7 @@ class PrescribedDriveSystem final : public OdeSystem<8> {
   RollingDynamics dynamics_;
   const MassPointTrajectory& trajectory_;
   DomainLimits limits_;
+  double cosMaxTilt_;
 };
 
 }  // namespace hemiroll::physics

@@ -28,32 +28,42 @@ inline constexpr double kPiOver2Lo = 0x1.3198a2e037073p-69;
 inline constexpr double kTwoOverPi = 0.6366197723675814;
 inline constexpr double kExactReductionLimit = 1.6e6;
 inline constexpr double kRoundingShift = 0x1.8p52;
+// Below this the reduction gives n = 0 and r = x exactly, so skipping it
+// changes no bit and takes the reduction off the dependent chain (tilts are
+// mostly small).
+inline constexpr double kNoReductionLimit = 0.78;
 
-// Taylor series on |r| <= pi/4 (plus a little slack from the rounding of n).
-// Templates so that the same operations serve one angle and a vector of them.
+// Taylor series on |r| <= pi/4 (plus a little slack from the rounding of n),
+// truncated where the next term is below 1e-17 of the result. Evaluated by
+// Estrin's scheme rather than Horner's: the right-hand side is latency-bound
+// and this halves the dependent chain (about 20 instead of 48 cycles).
+// Templates so that the same operations serve one angle and a pair of them.
 template <class T>
 inline T sinKernel(T r) {
-  const T z = r * r;
-  const T p = -1.0 / 6 + z * (1.0 / 120 + z * (-1.0 / 5040 + z * (2.7557319223985893e-06 +
-                   z * (-2.505210838544172e-08 + z * (1.6059043836821613e-10 +
-                   z * (-7.647163731819816e-13 + z * 2.8114572543455206e-15))))));
+  const T z = r * r, z2 = z * z, z4 = z2 * z2;
+  const T p01 = -1.0 / 6 + z * (1.0 / 120), p23 = -1.0 / 5040 + z * 2.7557319223985893e-06;
+  const T p45 = -2.505210838544172e-08 + z * 1.6059043836821613e-10;
+  const T p67 = -7.647163731819816e-13 + z * 2.8114572543455206e-15;
+  const T p = (p01 + z2 * p23) + z4 * (p45 + z2 * p67);
   return r + r * z * p;
 }
 template <class T>
 inline T cosKernel(T r) {
-  const T z = r * r;
-  const T q = 1.0 / 24 + z * (-1.0 / 720 + z * (2.48015873015873e-05 + z * (-2.755731922398589e-07 +
-                   z * (2.08767569878681e-09 + z * (-1.1470745597729725e-11 +
-                   z * (4.779477332387385e-14 + z * -1.5619206968586225e-16))))));
+  const T z = r * r, z2 = z * z, z4 = z2 * z2;
+  const T q01 = 1.0 / 24 + z * (-1.0 / 720), q23 = 2.48015873015873e-05 + z * -2.755731922398589e-07;
+  const T q45 = 2.08767569878681e-09 + z * -1.1470745597729725e-11;
+  const T q67 = 4.779477332387385e-14 + z * -1.5619206968586225e-16;
+  const T q = (q01 + z2 * q23) + z4 * (q45 + z2 * q67);
   const T half = 0.5 * z;
   // 1 - z/2 loses bits when z/2 is near 1/4..1/2; take the exact part first.
   const T w = 1.0 - half;
-  return w + (((1.0 - w) - half) + z * z * q);
+  return w + (((1.0 - w) - half) + z2 * q);
 }
 }  // namespace detail
 
 inline SinCos sinCos(double x) {
   using namespace detail;
+  if (std::fabs(x) < kNoReductionLimit) return {sinKernel(x), cosKernel(x)};
   if (!(std::fabs(x) < kExactReductionLimit)) return {std::sin(x), std::cos(x)};  // also NaN, Inf
   // Round to nearest by the 1.5 * 2^52 shift: no libm call, same bits
   // everywhere (the build forbids fast-math, so the sum is not folded away).
@@ -81,6 +91,12 @@ inline void sinCos2(double a, double b, SinCos& outA, SinCos& outB) {
     return;
   }
   const Lanes x = {a, b};
+  if (std::fabs(a) < kNoReductionLimit && std::fabs(b) < kNoReductionLimit) {
+    const Lanes s = sinKernel(x), c = cosKernel(x);
+    outA = {s[0], c[0]};
+    outB = {s[1], c[1]};
+    return;
+  }
   const Lanes n = (x * kTwoOverPi + kRoundingShift) - kRoundingShift;
   const Lanes r = ((x - n * kPiOver2Hi) - n * kPiOver2Mid) - n * kPiOver2Lo;
   const Lanes s = sinKernel(r), c = cosKernel(r);
