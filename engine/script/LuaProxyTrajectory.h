@@ -7,6 +7,9 @@
 // at() throws ScriptError when the function fails or returns anything but
 // 3 or 6 finite numbers; the message names the file and the line (of the
 // error, or of the function's definition for bad return values) and t.
+//
+// Not thread-safe: every evaluation runs on the one Lua state the scenario
+// was loaded into. Use it from one thread (headless runs, tests).
 
 #include <memory>
 #include <string>
