@@ -32,6 +32,7 @@ RunSettings resolveSettings(const SimOptions& o, const script::ScenarioDef& scen
   s.timeStep = o.timeStep.value_or(scenario.timeStep.value_or(SimOptions::kDefaultTimeStep));
   s.integrator = o.integrator.value_or(scenario.integrator.value_or(SimOptions::kDefaultIntegrator));
   s.every = o.every;
+  s.tolerance = o.tolerance.value_or(SimOptions::kDefaultTolerance);
   return s;
 }
 

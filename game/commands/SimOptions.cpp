@@ -36,7 +36,8 @@ std::string integratorNames() {
 }  // namespace
 
 const char* simUsage() {
-  return "usage: hemiroll sim SCENARIO.lua [--duration S] [--dt S] [--integrator NAME] [--every N] [--out FILE.csv]\n"
+  return "usage: hemiroll sim SCENARIO.lua [--duration S] [--dt S] [--integrator NAME] [--tol TOL] [--every N]\n"
+         "                    [--out FILE.csv]\n"
          "       hemiroll sim --integrator list\n"
          "\n"
          "Runs the physics of a scenario file (docs/SCENARIOS.md) headless and writes the\n"
@@ -46,6 +47,10 @@ const char* simUsage() {
          "  --dt S             integrator step [s] (default: the scenario's, else 0.001)\n"
          "  --integrator NAME  integration method (default: the scenario's, else rk4);\n"
          "                     'list' prints the available ones\n"
+         "  --tol TOL          adaptive integrators (dopri5, dop853, dop853ld): error\n"
+         "                     tolerance per step, absolute and relative per component\n"
+         "                     (default 1e-8); they choose their own steps and --dt only\n"
+         "                     sets the output grid, filled in by dense output\n"
          "  --every N          write a row every N steps (default 1); the first and last\n"
          "                     states are always written\n"
          "  --out FILE.csv     write the CSV to FILE instead of stdout\n"
@@ -79,7 +84,8 @@ SimOptionsResult parseSimOptions(const std::vector<std::string>& args) {
       inlineValue = arg.substr(eq + 1);
       arg = arg.substr(0, eq);
     }
-    if (arg != "--duration" && arg != "--dt" && arg != "--integrator" && arg != "--every" && arg != "--out")
+    if (arg != "--duration" && arg != "--dt" && arg != "--integrator" && arg != "--every" && arg != "--out" &&
+        arg != "--tol")
       return fail("unknown flag '" + arg + "'");
     std::string value;
     if (inlineValue) {
@@ -94,6 +100,10 @@ SimOptionsResult parseSimOptions(const std::vector<std::string>& args) {
       if (!parsePositive(value, number))
         return fail("flag " + arg + " needs a positive number of seconds, got '" + value + "'");
       (arg == "--duration" ? o.duration : o.timeStep) = number;
+    } else if (arg == "--tol") {
+      double number = 0.0;
+      if (!parsePositive(value, number)) return fail("flag --tol needs a positive number, got '" + value + "'");
+      o.tolerance = number;
     } else if (arg == "--every") {
       if (!parseCount(value, o.every)) return fail("flag --every needs a whole number >= 1, got '" + value + "'");
     } else if (arg == "--integrator") {

@@ -12,6 +12,7 @@ struct SimOptions {
   std::optional<double> duration;          // --duration [s]; else the scenario's, else kDefaultDuration
   std::optional<double> timeStep;          // --dt [s]; else the scenario's, else kDefaultTimeStep
   std::optional<std::string> integrator;   // --integrator; else the scenario's, else kDefaultIntegrator
+  std::optional<double> tolerance;         // --tol: adaptive integrators only; else kDefaultTolerance
   long long every = 1;                     // --every: a row every N steps
   std::optional<std::string> outPath;      // --out; stdout when absent
   bool help = false;                       // --help
@@ -20,6 +21,7 @@ struct SimOptions {
   static constexpr double kDefaultDuration = 10.0;  // [s]
   static constexpr double kDefaultTimeStep = 1e-3;  // [s], the paper's RK4 step
   static constexpr const char* kDefaultIntegrator = "rk4";
+  static constexpr double kDefaultTolerance = 1e-8;  // [-], AdaptiveIntegrator<N>::kDefaultTolerance
 };
 
 struct SimOptionsResult {

@@ -21,6 +21,8 @@ struct RunSettings {
   double timeStep = 1e-3;        // [s]
   std::string integrator = "rk4";
   long long every = 1;           // a row every N steps
+  double tolerance = 1e-8;       // adaptive integrators only (--tol); they step freely and
+                                 // the rows on the timeStep grid come from dense output
 };
 
 struct RunSummary {
