@@ -8,6 +8,7 @@ packages=(
   g++ cmake ninja-build pkg-config make
   libeigen3-dev liblua5.4-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  libsundials-dev libboost-dev gnuplot-nox
 )
 
 missing=()

@@ -12,3 +12,10 @@ for b in "$build"/bench/*_bench; do
        --benchmark_out="out/bench/$name.json" --benchmark_out_format=json 2>/dev/null |
     grep -E 'Benchmark|_median'
 done
+
+# Work-precision study and the tether's invariant table (~1-2 min): regenerates
+# docs/WORK_PRECISION.md and docs/work-precision/*.csv, *.png.
+echo "== work_precision (docs/WORK_PRECISION.md)"
+mkdir -p docs/work-precision
+"$build"/bench/work_precision --out docs/work-precision --doc docs/WORK_PRECISION.md
+gnuplot docs/work-precision/work_precision.gp

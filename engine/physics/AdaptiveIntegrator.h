@@ -99,6 +99,17 @@ class AdaptiveIntegrator : public Integrator<N> {
     }
   }
 
+  // One step of exactly h, accepted whatever its error (returned): for
+  // convergence studies and fixed grids. The step-size memory is untouched.
+  double takeFixedStep(const OdeSystem<N>& f, double h) {
+    const double t = time();
+    const double err = attempt(f, h);
+    accept(f);
+    begin_ = t;
+    ++stats_.accepted;
+    return err;
+  }
+
   double time() const { return end_; }
   double stepBegin() const { return begin_; }
   // The state at time() (the end of the last accepted step).

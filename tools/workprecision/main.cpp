@@ -1,0 +1,244 @@
+// work_precision: run time against error for our integrators and the peers
+// (issue 3), plus the long-horizon invariant of the undamped tether.
+//
+//   work_precision [--quick] [--out DIR] [--doc FILE.md]
+//
+// Writes DIR/work_precision.csv, DIR/energy_drift.csv, DIR/work_precision.gp
+// (gnuplot script for DIR/work_precision.png) and the markdown summary.
+// Exit 1 if a reference check fails (two tight references disagree by more
+// than 1e-9: a horizon outside the predictability window) or an output
+// cannot be written.
+
+#include <time.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "engine/physics/DormandPrince54.h"
+#include "engine/physics/DormandPrince853.h"
+#include "engine/physics/GaussLegendre.h"
+#include "tools/workprecision/PeerSolvers.h"
+#include "tools/workprecision/WorkPrecisionReport.h"
+#include "tools/workprecision/WorkPrecisionScenarios.h"
+
+namespace hemiroll::tools {
+namespace {
+
+using namespace physics;
+
+double cpuNow() {
+  timespec ts;
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+struct Settings {
+  bool quick = false;
+  double targetSeconds = 0.15;  // repeat a run until about this much CPU time, median taken
+  int minRepeats = 3, maxRepeats = 15;
+};
+
+// Median CPU time of `run` (which returns its result), and that result.
+template <class Run>
+auto timed(const Settings& s, const Run& run, double& seconds) {
+  double t0 = cpuNow();
+  auto result = run();
+  std::vector<double> times{cpuNow() - t0};
+  const int repeats =
+      s.quick ? 1 : std::clamp(static_cast<int>(s.targetSeconds / std::max(times[0], 1e-6)), s.minRepeats, s.maxRepeats);
+  for (int i = 1; i < repeats; ++i) {
+    t0 = cpuNow();
+    result = run();
+    times.push_back(cpuNow() - t0);
+  }
+  std::nth_element(times.begin(), times.begin() + times.size() / 2, times.end());
+  seconds = times[times.size() / 2];
+  return result;
+}
+
+template <int N>
+struct RunResult {
+  StateVector<N> x;
+  long long evaluations = 0;
+};
+
+template <int N, class Method>
+RunResult<N> runFixed(const Scenario<N>& s, double h) {
+  Method method;
+  const long long steps = std::llround(s.horizon / h);
+  StateVector<N> x = s.x0;
+  for (long long i = 0; i < steps; ++i) method.step(*s.system, static_cast<double>(i) * h, x, h);
+  long long evaluations = steps * 4;
+  if constexpr (requires { method.evaluations(); }) evaluations = method.evaluations();
+  return {x, evaluations};
+}
+
+template <int N, class Method>
+RunResult<N> runAdaptive(const Scenario<N>& s, double tol) {
+  Method method;
+  method.setTolerance(tol);
+  double t = 0.0;
+  StateVector<N> x = s.x0;
+  method.advanceTo(*s.system, t, x, s.horizon);
+  return {x, method.statistics().evaluations};
+}
+
+template <int N>
+double errorOf(const StateVector<N>& x, const StateVector<N>& ref) {
+  return x.allFinite() ? (x - ref).cwiseAbs().maxCoeff() : std::numeric_limits<double>::infinity();
+}
+
+template <int N>
+void study(const Settings& settings, const Scenario<N>& s, std::vector<WorkPoint>& points,
+           std::vector<ReferenceCheck>& refs) {
+  std::fprintf(stderr, "work_precision: %s (T = %g s)\n", s.name.c_str(), s.horizon);
+  double refSeconds = 0.0;
+  const double t0 = cpuNow();
+  const StateVector<N> ref = runAdaptive<N, DormandPrince853LongDouble<N>>(s, 1e-15).x;
+  refSeconds = cpuNow() - t0;
+  const StateVector<N> ref2 = runAdaptive<N, DormandPrince853LongDouble<N>>(s, 1e-14).x;
+  const double disagreement = errorOf<N>(ref2, ref);
+  refs.push_back({s.name, s.horizon, disagreement, refSeconds});
+  // Errors must stand well clear of what the reference itself may be off by:
+  // the disagreement bounds the error of the looser of the two references,
+  // so 10x it is >= 10x the error of the reference used.
+  const double floor = 10.0 * std::max(disagreement, 1e-15);
+
+  auto add = [&](const std::string& method, bool ours, const char* parameter, double value, const RunResult<N>& r,
+                 double seconds) {
+    const double e = errorOf<N>(r.x, ref);
+    points.push_back({s.name, method, ours, parameter, value, e, seconds, r.evaluations, e > floor});
+  };
+
+  std::vector<double> steps = {1e-2, 5e-3, 2e-3, 1e-3, 5e-4, 2e-4, 1e-4};
+  std::vector<double> tols = {1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12, 1e-13};
+  if (settings.quick) {
+    steps = {4e-3, 1e-3};
+    tols = {1e-5, 1e-8};
+  }
+  double sec = 0.0;
+  for (double h : steps) {
+    RunResult<N> r = timed(settings, [&] { return runFixed<N, RungeKutta4<N>>(s, h); }, sec);
+    add("rk4", true, "h", h, r, sec);
+  }
+  for (double h : steps) {
+    RunResult<N> r = timed(settings, [&] { return runFixed<N, GaussLegendre2<N>>(s, h); }, sec);
+    add("gauss2", true, "h", h, r, sec);
+  }
+  for (double h : steps) {
+    if (h < 2e-4) continue;  // gauss3 reaches round-off error before that
+    RunResult<N> r = timed(settings, [&] { return runFixed<N, GaussLegendre3<N>>(s, h); }, sec);
+    add("gauss3", true, "h", h, r, sec);
+  }
+  for (double tol : tols) {
+    RunResult<N> r = timed(settings, [&] { return runAdaptive<N, DormandPrince54<N>>(s, tol); }, sec);
+    add("dopri5", true, "tol", tol, r, sec);
+  }
+  for (double tol : tols) {
+    RunResult<N> r = timed(settings, [&] { return runAdaptive<N, DormandPrince853<N>>(s, tol); }, sec);
+    add("dop853", true, "tol", tol, r, sec);
+  }
+  for (Peer peer : {Peer::CvodeAdams, Peer::OdeintDopri5, Peer::OdeintFehlberg78}) {
+    for (double tol : tols) {
+      PeerResult<N> p = timed(settings, [&] { return runPeer<N>(peer, *s.system, s.x0, s.horizon, tol); }, sec);
+      RunResult<N> r{p.ok ? p.x : StateVector<N>::Constant(std::numeric_limits<double>::quiet_NaN()), p.evaluations};
+      add(peerName(peer), false, "tol", tol, r, sec);
+    }
+  }
+}
+
+template <class Method>
+DriftRow tetherDrift(const char* name, double hours) {
+  const Tether tether = makeTether();
+  Method method;
+  const double h = 1e-3;
+  const long long perSecond = 1000;
+  const long long seconds = std::llround(hours * 3600.0);
+  ForceDrivenState x = tether.x0;
+  const double h0 = tether.invariant(x);
+  DriftRow row{name, h, hours, 0.0, 0.0, 0.0, 0.0, 0.0, h0};
+  // Least squares of (H - H0) against t in hours, accumulated on the fly.
+  double sumT = 0, sumY = 0, sumTT = 0, sumTY = 0;
+  const double start = cpuNow();
+  for (long long s = 1; s <= seconds; ++s) {
+    for (long long i = 0; i < perSecond; ++i)
+      method.step(*tether.system, static_cast<double>((s - 1) * perSecond + i) * h, x, h);
+    const double dev = tether.invariant(x) - h0;
+    row.maxDeviation = std::max(row.maxDeviation, std::abs(dev));
+    if (s <= 360) row.firstHourTenth = row.maxDeviation;
+    const double t = static_cast<double>(s) / 3600.0;
+    sumT += t, sumY += dev, sumTT += t * t, sumTY += t * dev;
+    row.finalDeviation = dev;
+  }
+  row.seconds = cpuNow() - start;
+  const double n = static_cast<double>(seconds);
+  row.slopePerHour = (n * sumTY - sumT * sumY) / (n * sumTT - sumT * sumT);
+  std::fprintf(stderr, "work_precision: tether %s, %.3g h: max |dH| %.2e J, drift %.2e J/h, %.1f s CPU\n", name,
+               hours, row.maxDeviation, row.slopePerHour, row.seconds);
+  return row;
+}
+
+}  // namespace
+}  // namespace hemiroll::tools
+
+int main(int argc, char** argv) {
+  using namespace hemiroll::tools;
+  Settings settings;
+  std::string outDir = "docs/work-precision", doc = "docs/WORK_PRECISION.md";
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--quick") {
+      settings.quick = true;
+    } else if (a == "--out" && i + 1 < argc) {
+      outDir = argv[++i];
+    } else if (a == "--doc" && i + 1 < argc) {
+      doc = argv[++i];
+    } else {
+      std::fprintf(stderr, "usage: work_precision [--quick] [--out DIR] [--doc FILE.md]\n");
+      return 2;
+    }
+  }
+  const ScenarioSet scenarios(settings.quick);
+  std::vector<WorkPoint> points;
+  std::vector<ReferenceCheck> refs;
+  std::vector<std::string> names;
+  for (const auto& s : scenarios.forceDriven()) {
+    study<12>(settings, s, points, refs);
+    names.push_back(s.name);
+  }
+  for (const auto& s : scenarios.prescribed()) {
+    study<8>(settings, s, points, refs);
+    names.push_back(s.name);
+  }
+  const double hours = settings.quick ? 10.0 / 3600.0 : 1.0;
+  std::vector<DriftRow> drift;
+  drift.push_back(tetherDrift<hemiroll::physics::RungeKutta4<12>>("rk4", hours));
+  drift.push_back(tetherDrift<hemiroll::physics::GaussLegendre2<12>>("gauss2", hours));
+  drift.push_back(tetherDrift<hemiroll::physics::GaussLegendre3<12>>("gauss3", hours));
+
+  const std::string csv = outDir + "/work_precision.csv";
+  writeCsv(csv, points);
+  writeDriftCsv(outDir + "/energy_drift.csv", drift);
+  writeGnuplot(outDir + "/work_precision.gp", csv, outDir + "/work_precision.png", names, points);
+  writeMarkdown(doc, points, refs, drift, settings.quick);
+  std::FILE* check = std::fopen(csv.c_str(), "r");
+  if (!check) {
+    std::fprintf(stderr, "work_precision: cannot write %s\n", csv.c_str());
+    return 1;
+  }
+  std::fclose(check);
+  int status = 0;
+  for (const ReferenceCheck& r : refs) {
+    std::fprintf(stderr, "work_precision: reference check %s: %.1e\n", r.scenario.c_str(), r.disagreement);
+    if (!(r.disagreement < 1e-9)) {
+      std::fprintf(stderr, "work_precision: %s: references disagree (%.1e): outside the predictability window\n",
+                   r.scenario.c_str(), r.disagreement);
+      status = 1;
+    }
+  }
+  return status;
+}
