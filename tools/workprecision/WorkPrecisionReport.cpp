@@ -134,7 +134,7 @@ void writeMarkdown(const std::string& path, const std::vector<WorkPoint>& points
   std::fprintf(f, "## References and the predictability window\n\n"
                   "| scenario | horizon [s] | ref(1e-15) vs ref(1e-14) | reference CPU [s] |\n|---|---|---|---|\n");
   for (const ReferenceCheck& r : references)
-    std::fprintf(f, "| %s | %.0f | %.1e | %.3f |\n", r.scenario.c_str(), r.horizon, r.disagreement, r.seconds);
+    std::fprintf(f, "| %s | %.3g | %.1e | %.3f |\n", r.scenario.c_str(), r.horizon, r.disagreement, r.seconds);
 
   std::fprintf(f, "\n## Our best method against each peer\n\n"
                   "CPU time of the peer divided by the CPU time of our fastest method at the same error (each curve "
