@@ -1,6 +1,7 @@
 #include "engine/physics/ForceDrivenSystem.h"
 
 #include <cmath>
+#include <cstring>
 
 namespace hemiroll::physics {
 
@@ -20,26 +21,40 @@ ForceDrivenSystem::ForceDrivenSystem(const HemisphereParams& params, const Domai
     : dynamics_(params), limits_(limits), cosMaxTilt_(std::cos(limits.maxTilt)) {}
 
 void ForceDrivenSystem::setFree() {
+  ++inputRevision_;
   input_ = Input::Free;
   proxyFn_ = nullptr;
 }
 
 void ForceDrivenSystem::setFaceForce(const Vec2& f) {
+  ++inputRevision_;
   input_ = Input::FaceForce;
   faceForce_ = f;
   proxyFn_ = nullptr;
 }
 
 void ForceDrivenSystem::setCoupling(const CouplingDef& def, const ProxyTrajectory& proxy) {
+  ++inputRevision_;
   input_ = Input::Coupling;
   coupling_ = def;
   proxyFn_ = &proxy;
 }
 
 void ForceDrivenSystem::setCoupling(const CouplingDef& def) {
+  ++inputRevision_;
   input_ = Input::Coupling;
   coupling_ = def;
   proxyFn_ = nullptr;
+}
+
+void ForceDrivenSystem::holdProxy(const ProxyPose& pose) {
+  // Bitwise, not ==: -0.0 and 0.0 give the same force, but a sleeping
+  // stepper must wake on any change that a step could see.
+  const bool same = std::memcmp(pose.position.data(), heldProxy_.position.data(), sizeof(double) * 3) == 0 &&
+                    std::memcmp(pose.velocity.data(), heldProxy_.velocity.data(), sizeof(double) * 3) == 0;
+  if (same) return;
+  heldProxy_ = pose;
+  ++inputRevision_;
 }
 
 Real3 ForceDrivenSystem::handForceAt(const RollingGeometry& g, double t, const ForceDrivenState& x,

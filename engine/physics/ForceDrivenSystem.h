@@ -27,10 +27,16 @@ class ForceDrivenSystem final : public OdeSystem<12> {
   // Coupling to a proxy held constant until the next call (zero-order hold,
   // as a device sampled once per servo tick gives it).
   void setCoupling(const CouplingDef& def);
-  void holdProxy(const ProxyPose& pose) { heldProxy_ = pose; }
+  // Holding the same pose again (bitwise) is no change: it does not wake a
+  // sleeping stepper.
+  void holdProxy(const ProxyPose& pose);
 
   void derivative(double t, const ForceDrivenState& x, ForceDrivenState& dxdt) const override;
   DomainMargins margins(double t, const ForceDrivenState& x) const override;
+  // Free motion, a constant face force and a held proxy are autonomous; a
+  // proxy trajectory is not.
+  bool autonomous() const override { return input_ != Input::Coupling || proxyFn_ == nullptr; }
+  unsigned long long inputRevision() const override { return inputRevision_; }
 
   // The force the model receives on the mass point at (t, x), base frame [N].
   Vec3 externalForce(double t, const ForceDrivenState& x) const;
@@ -58,6 +64,7 @@ class ForceDrivenSystem final : public OdeSystem<12> {
   CouplingDef coupling_;
   const ProxyTrajectory* proxyFn_ = nullptr;
   ProxyPose heldProxy_;
+  unsigned long long inputRevision_ = 0;
 };
 
 // Geometry of a 12-state vector, heading frame (shared by the system, energy

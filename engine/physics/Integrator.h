@@ -24,6 +24,10 @@ class Integrator {
   // a fixed-step method. Lets the stepper and the registry tell them apart
   // without RTTI.
   virtual AdaptiveIntegrator<N>* adaptive() { return nullptr; }
+  // True when step() is a pure function of (system, t, x, h): no history
+  // (no starting guesses kept from earlier steps). The stepper may then skip
+  // a step whose result it already knows (sleeping at an exact fixed point).
+  virtual bool memoryless() const { return false; }
 };
 
 // The classical fourth-order Runge-Kutta method, the paper's choice (h = 1 ms).
@@ -32,6 +36,7 @@ class RungeKutta4 final : public Integrator<N> {
  public:
   std::string_view name() const override { return "rk4"; }
   int order() const override { return 4; }
+  bool memoryless() const override { return true; }  // k1..k4 are scratch, overwritten every step
 
   void step(const OdeSystem<N>& f, double t, StateVector<N>& x, double h) override {
     const double half = 0.5 * h;

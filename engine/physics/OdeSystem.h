@@ -16,6 +16,14 @@ class OdeSystem {
 
   virtual void derivative(double t, const StateVector<N>& x, StateVector<N>& dxdt) const = 0;
   virtual DomainMargins margins(double t, const StateVector<N>& x) const = 0;
+
+  // True when derivative() and margins() ignore t with the current input (no
+  // time-dependent drive): a step then depends on (x, h) only, which is what
+  // lets the stepper sleep at an exact fixed point (Stepper.h).
+  virtual bool autonomous() const { return false; }
+  // Changes whenever the input changes (a new held proxy pose, face force or
+  // mode); a sleeping stepper wakes when it does.
+  virtual unsigned long long inputRevision() const { return 0; }
 };
 
 }  // namespace hemiroll::physics

@@ -13,6 +13,7 @@
 // Depends on Eigen and the standard library only.
 
 #include "engine/physics/AdaptiveIntegrator.h"
+#include "engine/physics/CouplingStability.h"
 #include "engine/physics/DomainEvents.h"
 #include "engine/physics/DormandPrince54.h"
 #include "engine/physics/DormandPrince853.h"
@@ -28,3 +29,4 @@
 #include "engine/physics/RoseDrive.h"
 #include "engine/physics/StateLayout.h"
 #include "engine/physics/Stepper.h"
+#include "engine/physics/SubsteppingIntegrator.h"

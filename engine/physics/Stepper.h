@@ -14,8 +14,20 @@
 // is of the order of the tolerance, so the event time is as accurate as the
 // trajectory. An event is checked at step ends only: a crossing out and back
 // within one step goes unseen (as with fixed steps).
+//
+// Sleeping (fixed-step, memoryless integrators on an autonomous system only):
+// when a step returns its starting state bit for bit, the state is a fixed
+// point of the step map x -> step(x, h). Because such a step depends on
+// (x, h) alone, every later step of the same h gives the same state again, so
+// the stepper stops calling the integrator and only advances the clock. It
+// wakes (takes real steps again) when h changes, the system's input changes
+// (inputRevision), the system stops being autonomous, or reset() is given a
+// different state. A slept run is therefore bit-identical to one that keeps
+// stepping. Typical case: a scene at rest (all rates exactly zero) with a
+// held proxy that does not move.
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include "engine/physics/AdaptiveIntegrator.h"
@@ -39,7 +51,10 @@ class Stepper {
   }
 
   // For an adaptive integrator this restarts it (step size and history).
+  // A sleeping stepper stays asleep when given its own state back (the sim's
+  // loop resets the clock onto the grid every step).
   void reset(const StateVector<N>& x0, double t0) {
+    if (sleeping_ && !sameBits(x0, x_)) sleeping_ = false;
     x_ = x0;
     t_ = t0;
     event_ = classify(t0, x0);
@@ -50,10 +65,19 @@ class Stepper {
   StepReport advance(double h) {
     if (event_ != DomainEvent::None) return {event_, t_};
     if (adaptive_ != nullptr) return advanceAdaptive(t_ + h);
+    if (sleeping_) {
+      if (stillAsleep(h)) {
+        t_ += h;  // the step would return x_ unchanged, and classify(x_) is None
+        ++sleptSteps_;
+        return {DomainEvent::None, t_};
+      }
+      sleeping_ = false;
+    }
     StateVector<N> next = x_;
     integrator_.step(system_, t_, next, h);
     const DomainEvent e = classify(t_ + h, next);
     if (e == DomainEvent::None) {
+      if (sameBits(next, x_) && canSleep()) fallAsleep(h);
       x_ = next;
       t_ += h;
       return {DomainEvent::None, t_};
@@ -78,8 +102,26 @@ class Stepper {
   double time() const { return t_; }
   DomainEvent event() const { return event_; }
   bool halted() const { return event_ != DomainEvent::None; }
+  bool sleeping() const { return sleeping_; }
+  // Steps skipped while asleep, since construction.
+  long long sleptSteps() const { return sleptSteps_; }
 
  private:
+  static bool sameBits(const StateVector<N>& a, const StateVector<N>& b) {
+    return std::memcmp(a.data(), b.data(), sizeof(double) * N) == 0;
+  }
+  bool canSleep() const { return integrator_.memoryless() && system_.autonomous(); }
+  void fallAsleep(double h) {
+    sleeping_ = true;
+    sleepStep_ = h;
+    sleepRevision_ = system_.inputRevision();
+  }
+  // Bitwise on h: any other step length could round differently.
+  bool stillAsleep(double h) const {
+    return std::memcmp(&h, &sleepStep_, sizeof h) == 0 && system_.inputRevision() == sleepRevision_ &&
+           system_.autonomous();
+  }
+
   DomainEvent classify(double t, const StateVector<N>& x) const {
     const bool finite = x.allFinite();
     return classifyDomain(finite ? system_.margins(t, x) : DomainMargins{0.0, 0.0}, finite);
@@ -185,6 +227,11 @@ class Stepper {
   double t_ = 0.0;
   DomainEvent event_ = DomainEvent::None;
   bool started_ = false;
+  // Fixed-step sleeping at an exact fixed point of the step map.
+  bool sleeping_ = false;
+  double sleepStep_ = 0.0;
+  unsigned long long sleepRevision_ = 0;
+  long long sleptSteps_ = 0;
   // Adaptive only: an event found in a step that ends past the output time.
   DomainEvent pending_ = DomainEvent::None;
   double pendingTime_ = 0.0;
