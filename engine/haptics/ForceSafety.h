@@ -1,0 +1,87 @@
+#pragma once
+// Everything between the coupling's force and the device, applied on every
+// tick in this order:
+//   1. watchdogs: device error, stale device data for longer than staleLimit,
+//      device speed above maxDeviceSpeed (velocity guard), energy injected
+//      into the model beyond maxInjectedEnergy, angular speed beyond
+//      maxAngularSpeed, a non-finite force. Any of them latches a fault: the
+//      force is zero from this very tick (no fade, no rate limit), the
+//      engagement is dropped, and the loop pauses until clearFault().
+//   2. engagement and ramp (EngagementRamp): scale in [0, 1].
+//   3. force-rate limit: |F_k - F_{k-1}| <= maxForceRate * dt.
+//   4. clamp to the device's maxForce (ForceClamp.h) - last, so nothing after
+//      it can lengthen the force.
+
+#include "engine/haptics/EngagementRamp.h"
+#include "engine/haptics/ForceClamp.h"
+
+namespace hemiroll::haptics {
+
+enum class SafetyFault {
+  None,
+  DeviceError,       // the device reported an error
+  StaleDevice,       // no fresh sample for longer than staleLimit
+  NonFiniteForce,    // the coupling produced NaN or Inf
+  VelocityGuard,     // the device moved faster than maxDeviceSpeed
+  EnergyInjection,   // the model gained more energy than the hand supplied, beyond the bound
+  RunawayRotation,   // the hemisphere spins faster than maxAngularSpeed
+  ModelHalted,       // the physics stopped at a domain edge (tip-over, off-face, non-finite)
+};
+
+struct SafetyDef {
+  EngagementDef engagement;
+  double maxForceRate = 200.0;      // [N/s]; 0.2 N per 1 ms tick, a full 3 N swing in 15 ms
+  double maxDeviceSpeed = 2.0;      // [m/s], device frame; beyond any deliberate hand motion on a desk device
+  double staleLimit = 0.010;        // [s] without a fresh device sample
+  double maxInjectedEnergy = 0.5;   // [J] model energy gained beyond the hand's work (see ServoLoop)
+  double maxAngularSpeed = 200.0;   // [rad/s] |w| of the hemisphere
+};
+
+// Per-tick observations the watchdogs judge.
+struct SafetyInputs {
+  double dt = 0.001;                   // [s]
+  Vec3 desiredForce = Vec3::Zero();    // device frame, before safety [N]
+  Vec3 deviceVelocity = Vec3::Zero();  // device frame [m/s]
+  bool deviceError = false;
+  bool deviceFresh = true;
+  bool modelHalted = false;
+  double proxyDistance = 0.0;          // proxy to mass point, scene [m]
+  double injectedEnergy = 0.0;         // [J]
+  double angularSpeed = 0.0;           // [rad/s]
+};
+
+class ForceSafety {
+ public:
+  ForceSafety(const SafetyDef& def, const DeviceSpec& spec);
+
+  // The force to send to the device this tick (device frame) [N].
+  Vec3 update(const SafetyInputs& in);
+
+  void engage() { ramp_.engage(); }
+  void disengage() { ramp_.disengage(); }
+  // Unlatches the fault (the operator saw it); a cause still present trips
+  // it again on the next tick.
+  void clearFault();
+
+  SafetyFault fault() const { return fault_; }
+  bool faulted() const { return fault_ != SafetyFault::None; }
+  const EngagementRamp& engagement() const { return ramp_; }
+  const Vec3& lastForce() const { return last_; }
+  bool lastClamped() const { return clamped_; }
+  double staleTime() const { return staleTime_; }
+
+ private:
+  SafetyFault watchdogs(const SafetyInputs& in);
+
+  SafetyDef def_;
+  double maxForce_;
+  EngagementRamp ramp_;
+  SafetyFault fault_ = SafetyFault::None;
+  Vec3 last_ = Vec3::Zero();
+  bool clamped_ = false;
+  double staleTime_ = 0.0;
+};
+
+const char* safetyFaultName(SafetyFault f);
+
+}  // namespace hemiroll::haptics

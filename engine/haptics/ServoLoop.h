@@ -1,0 +1,147 @@
+#pragma once
+// The 1 kHz servo loop: one tick is
+//   read device pose -> map to the scene -> hold the proxy -> physics step
+//   (Stepper, RK4, h = period) -> domain events -> coupling forces -> safety
+//   -> force to the device -> publish a snapshot.
+// The tick allocates nothing, takes no lock, does no I/O and calls no Lua;
+// other threads talk to it only through the command ring (one producer) and
+// the snapshot triple buffer (one consumer).
+//
+// Three ways to run the same tick():
+//   start()/stop()   a dedicated std::thread on the real monotonic clock,
+//                    SCHED_FIFO when permitted (a note in realtime() if not);
+//   runPaced(clock)  the same pacing on the calling thread with any clock
+//                    (tests inject a fake one);
+//   runHeadless(n)   n ticks back to back with no clock at all: as fast as
+//                    the CPU allows and bit-for-bit deterministic.
+//
+// Pacing: deadlines are absolute, d_{k+1} = d_k + period, so sleeping does
+// not accumulate drift. The clock sleeps until shortly before the deadline
+// and spins the rest (ServoClock.h).
+//
+// Catch-up policy, when a wake-up comes late by L >= 0:
+//   due = 1 + floor(L / period) deadlines have passed;
+//   - due <= maxCatchUpTicks: all due ticks run back to back, the deadline
+//     grid is kept (d += due * period) and nothing is lost;
+//   - due >  maxCatchUpTicks: only maxCatchUpTicks ticks run, the other
+//     due - maxCatchUpTicks are skipped and counted as missed ticks, and the
+//     grid is re-anchored at now + period. Simulation time advances only by
+//     the ticks that run (the world slows down for a moment; it never jumps
+//     and never tries to catch up a backlog - no spiral of death).
+// Timing statistics: the lateness of every tick run (its start after its
+// deadline) and the period between wake-ups, in TimingHistograms; missed
+// ticks and ticks run as counters. All readable from any thread at any time.
+
+#include <array>
+#include <atomic>
+#include <cstdint>
+#include <thread>
+
+#include "engine/haptics/ForceSafety.h"
+#include "engine/haptics/HapticDevice.h"
+#include "engine/haptics/RealtimeThread.h"
+#include "engine/haptics/ServoClock.h"
+#include "engine/haptics/ServoCommand.h"
+#include "engine/haptics/ServoSnapshot.h"
+#include "engine/haptics/SpscRing.h"
+#include "engine/haptics/TimingHistogram.h"
+#include "engine/haptics/TripleBuffer.h"
+#include "engine/haptics/WorkspaceMapping.h"
+#include "engine/physics/ForceDrivenSystem.h"
+#include "engine/physics/Integrator.h"
+#include "engine/physics/Stepper.h"
+
+namespace hemiroll::haptics {
+
+struct ServoLoopDef {
+  double period = 0.001;                 // tick period and physics step h [s]
+  int maxCatchUpTicks = 3;               // ticks one late wake-up may run (see the policy above)
+  std::int64_t spinMarginNs = 50'000;    // sleep until this long before a deadline, then spin [ns]
+  bool requestRealtime = true;           // ask for SCHED_FIFO
+  int realtimePriority = 80;             // SCHED_FIFO priority, 1..99
+  physics::HemisphereParams params;
+  physics::DomainLimits limits;
+  physics::CouplingDef coupling;         // must pass validateCoupling and the device's maxStiffness
+  WorkspaceMapping mapping;
+  SafetyDef safety;
+  std::array<double, 12> initialState{};  // 12-state (physics/StateLayout.h)
+  double startTime = 0.0;                // [s]
+};
+
+class ServoLoop {
+ public:
+  static constexpr std::size_t kCommandCapacity = 64;
+
+  // The device is opened and closed by the caller; the loop only reads it and
+  // sends forces. Throws std::invalid_argument for an invalid definition.
+  ServoLoop(const ServoLoopDef& def, HapticDevice& device);
+  ~ServoLoop();
+  ServoLoop(const ServoLoop&) = delete;
+  ServoLoop& operator=(const ServoLoop&) = delete;
+
+  // Dedicated thread on the real clock. stop() joins it and sends a zero force.
+  void start();
+  void stop();
+  bool running() const { return thread_.joinable(); }
+
+  // Same pacing on the calling thread, for at most maxWakeups wake-ups (or
+  // until stop() is requested from another thread).
+  void runPaced(ServoClock& clock, long maxWakeups);
+  // n ticks with no clock (lateness 0).
+  void runHeadless(long ticks);
+  // One tick; latenessNs only goes into the snapshot.
+  void tick(std::int64_t latenessNs = 0);
+
+  // One producer thread. False when the ring is full or the command is
+  // invalid (a coupling that fails validateCoupling or exceeds the device's
+  // maxStiffness; checked here, outside the tick, because the check
+  // allocates its message).
+  bool post(const ServoCommand& command);
+  // One consumer thread. False until the first tick has published.
+  bool latest(ServoSnapshot& out) { return snapshots_.read(out); }
+
+  const TimingHistogram& lateness() const { return lateness_; }
+  const TimingHistogram& wakePeriod() const { return period_; }
+  std::uint64_t ticks() const { return ticks_.load(std::memory_order_relaxed); }
+  std::uint64_t missedTicks() const { return missed_.load(std::memory_order_relaxed); }
+  std::uint64_t wakeups() const { return wakeups_.load(std::memory_order_relaxed); }
+  RealtimeResult realtime() const;
+
+  // Direct views for the loop's own thread (headless runs and tests).
+  const physics::ForceDrivenState& state() const { return stepper_.state(); }
+  double time() const { return stepper_.time(); }
+  const ForceSafety& safety() const { return safety_; }
+
+ private:
+  void drainCommands();
+  void apply(const ServoCommand& c);
+  void publish(const physics::CouplingForces& forces, double distance, double injected, std::int64_t latenessNs);
+
+  ServoLoopDef def_;
+  HapticDevice& device_;
+  physics::ForceDrivenSystem system_;
+  physics::RungeKutta4<12> integrator_;
+  physics::Stepper<12> stepper_;
+  ForceSafety safety_;
+  physics::CouplingDef coupling_;
+  physics::ProxyPose proxy_;
+  bool paused_ = false;
+  // Energy watchdog: model energy at engagement and the hand's work since.
+  double energyAtEngage_ = 0.0;
+  double handWork_ = 0.0;
+  Vec3 lastHandForce_ = Vec3::Zero();
+  Vec3 lastRendered_ = Vec3::Zero();
+  bool lastClamped_ = false;
+
+  SpscRing<ServoCommand, kCommandCapacity> commands_;
+  TripleBuffer<ServoSnapshot> snapshots_;
+  TimingHistogram lateness_, period_;
+  std::atomic<std::uint64_t> ticks_{0}, missed_{0}, wakeups_{0};
+  double maxLateness_ = 0.0;
+  std::atomic<bool> stopRequested_{false};
+  std::atomic<int> realtimeStatus_{static_cast<int>(RealtimeStatus::NotRequested)};
+  std::atomic<const char*> realtimeNote_{"real-time scheduling not requested"};
+  std::thread thread_;
+};
+
+}  // namespace hemiroll::haptics

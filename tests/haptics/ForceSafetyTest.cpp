@@ -1,0 +1,136 @@
+#include "engine/haptics/ForceSafety.h"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+
+namespace hemiroll::haptics {
+namespace {
+
+constexpr double kDt = 0.001;
+
+SafetyDef quickRamp() {
+  SafetyDef def;
+  def.engagement.rampTime = 0.01;  // 10 ticks, so the tests reach full force quickly
+  def.maxForceRate = 1e6;          // the rate limit tested on its own below
+  return def;
+}
+
+// Engaged at full scale, rendering a steady force.
+ForceSafety engagedAtFullForce(const SafetyDef& def, const Vec3& force) {
+  ForceSafety safety(def, DeviceSpec{});
+  safety.engage();
+  SafetyInputs in;
+  in.desiredForce = force;
+  for (int i = 0; i < 50; ++i) safety.update(in);
+  return safety;
+}
+
+TEST(ForceSafetyTest, ClampsToTheDeviceLimit) {
+  ForceSafety safety = engagedAtFullForce(quickRamp(), Vec3(10.0, 0.0, 0.0));
+  EXPECT_NEAR(safety.lastForce().norm(), DeviceSpec{}.maxForce, 1e-12);
+  EXPECT_TRUE(safety.lastClamped());
+}
+
+TEST(ForceSafetyTest, NoForceForAnInputOnlyDevice) {
+  DeviceSpec mouse;
+  mouse.hasForceOutput = false;
+  ForceSafety safety(quickRamp(), mouse);
+  safety.engage();
+  SafetyInputs in;
+  in.desiredForce = Vec3(1.0, 0.0, 0.0);
+  for (int i = 0; i < 50; ++i) EXPECT_EQ(safety.update(in), Vec3::Zero());
+}
+
+TEST(ForceSafetyTest, RateLimitSpreadsAStep) {
+  SafetyDef def = quickRamp();
+  def.engagement.rampTime = 0.0;  // no ramp: a step arrives at the rate limit
+  def.maxForceRate = 100.0;       // 0.1 N per tick
+  ForceSafety safety(def, DeviceSpec{});
+  safety.engage();
+  SafetyInputs in;
+  in.desiredForce = Vec3(0.0, 2.0, 0.0);
+  safety.update(in);  // engages
+  const Vec3 first = safety.update(in);
+  EXPECT_NEAR(first.norm(), 0.1, 1e-12);
+  for (int i = 0; i < 18; ++i) safety.update(in);
+  EXPECT_NEAR(safety.lastForce().y(), 1.9, 1e-12);  // 19 steps of 0.1 N; 1e-12: sums of 0.1
+  safety.update(in);
+  EXPECT_NEAR(safety.lastForce().y(), 2.0, 1e-12);
+}
+
+struct Trip {
+  const char* what;
+  void (*spoil)(SafetyInputs&);
+  SafetyFault expected;
+};
+
+class ForceSafetyWatchdogTest : public ::testing::TestWithParam<Trip> {};
+
+// Every watchdog takes the force from full to zero in the tick it fires,
+// drops the engagement and latches the fault until cleared.
+TEST_P(ForceSafetyWatchdogTest, ZeroesTheForceAtOnce) {
+  ForceSafety safety = engagedAtFullForce(quickRamp(), Vec3(1.0, 0.0, 0.0));
+  ASSERT_NEAR(safety.lastForce().x(), 1.0, 1e-12);
+  SafetyInputs in;
+  in.desiredForce = Vec3(1.0, 0.0, 0.0);
+  GetParam().spoil(in);
+  EXPECT_EQ(safety.update(in), Vec3::Zero()) << GetParam().what;
+  EXPECT_EQ(safety.fault(), GetParam().expected);
+  EXPECT_EQ(safety.engagement().state(), Engagement::Disengaged);
+  // Latched: healthy inputs do not bring the force back.
+  SafetyInputs healthy;
+  healthy.desiredForce = Vec3(1.0, 0.0, 0.0);
+  EXPECT_EQ(safety.update(healthy), Vec3::Zero());
+  safety.clearFault();
+  EXPECT_FALSE(safety.faulted());
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    AllWatchdogs, ForceSafetyWatchdogTest,
+    ::testing::Values(
+        Trip{"device error", [](SafetyInputs& in) { in.deviceError = true; }, SafetyFault::DeviceError},
+        Trip{"velocity", [](SafetyInputs& in) { in.deviceVelocity = Vec3(3.0, 0.0, 0.0); }, SafetyFault::VelocityGuard},
+        Trip{"nan velocity",
+             [](SafetyInputs& in) { in.deviceVelocity.x() = std::numeric_limits<double>::quiet_NaN(); },
+             SafetyFault::VelocityGuard},
+        Trip{"energy", [](SafetyInputs& in) { in.injectedEnergy = 1.0; }, SafetyFault::EnergyInjection},
+        Trip{"spin", [](SafetyInputs& in) { in.angularSpeed = 500.0; }, SafetyFault::RunawayRotation},
+        Trip{"nan force", [](SafetyInputs& in) { in.desiredForce.y() = std::numeric_limits<double>::quiet_NaN(); },
+             SafetyFault::NonFiniteForce},
+        Trip{"inf force", [](SafetyInputs& in) { in.desiredForce.z() = std::numeric_limits<double>::infinity(); },
+             SafetyFault::NonFiniteForce},
+        Trip{"halted", [](SafetyInputs& in) { in.modelHalted = true; }, SafetyFault::ModelHalted}));
+
+TEST(ForceSafetyTest, StaleDataTripsAfterTheLimitNotBefore) {
+  SafetyDef def = quickRamp();
+  def.staleLimit = 0.010;
+  ForceSafety safety = engagedAtFullForce(def, Vec3(1.0, 0.0, 0.0));
+  SafetyInputs stale;
+  stale.desiredForce = Vec3(1.0, 0.0, 0.0);
+  stale.deviceFresh = false;
+  // 10 stale ticks reach 10 ms (within rounding of the sum): still rendering.
+  for (int i = 0; i < 9; ++i) ASSERT_NE(safety.update(stale), Vec3::Zero()) << i;
+  int ticks = 9;
+  while (!safety.faulted() && ticks < 12) {
+    safety.update(stale);
+    ++ticks;
+  }
+  EXPECT_EQ(safety.fault(), SafetyFault::StaleDevice);
+  EXPECT_LE(ticks, 11);
+  EXPECT_EQ(safety.lastForce(), Vec3::Zero());
+}
+
+TEST(ForceSafetyTest, AFreshSampleResetsTheStaleTimer) {
+  ForceSafety safety = engagedAtFullForce(quickRamp(), Vec3(1.0, 0.0, 0.0));
+  SafetyInputs stale, fresh;
+  stale.deviceFresh = false;
+  for (int round = 0; round < 5; ++round) {
+    for (int i = 0; i < 8; ++i) safety.update(stale);
+    safety.update(fresh);
+  }
+  EXPECT_FALSE(safety.faulted());
+}
+
+}  // namespace
+}  // namespace hemiroll::haptics

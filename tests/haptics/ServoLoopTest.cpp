@@ -1,0 +1,280 @@
+#include "engine/haptics/ServoLoop.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <thread>
+
+#include "engine/haptics/ScriptedDevice.h"
+
+namespace hemiroll::haptics {
+namespace {
+
+constexpr double kRadius = 0.04;  // the default hemisphere: mass point at rest sits at (0, 0, R)
+constexpr double kPi = 3.141592653589793;
+
+// The proxy circles 5 mm around the mass point's rest position (the paper's
+// small in-face motions), starting exactly on it so that it engages at once.
+DeviceReading circling(double t) {
+  const double w = 2.0 * kPi, r = 0.005;
+  DeviceReading d;
+  d.position = Vec3(r * std::sin(w * t), r * (1.0 - std::cos(w * t)), kRadius);
+  d.velocity = Vec3(r * w * std::cos(w * t), r * w * std::sin(w * t), 0.0);
+  return d;
+}
+
+ServoLoopDef quickDef() {
+  ServoLoopDef def;
+  def.safety.engagement.rampTime = 0.1;
+  def.requestRealtime = false;
+  return def;
+}
+
+ServoCommand command(ServoCommandKind kind) {
+  ServoCommand c;
+  c.kind = kind;
+  return c;
+}
+
+struct EngagedRun {
+  physics::ForceDrivenState state;
+  ServoSnapshot snapshot;
+};
+
+EngagedRun engagedRun(long ticks) {
+  ScriptedDevice device(circling);
+  ServoLoop loop(quickDef(), device);
+  EXPECT_TRUE(loop.post(command(ServoCommandKind::Engage)));
+  loop.runHeadless(ticks);
+  EngagedRun run{loop.state(), {}};
+  EXPECT_TRUE(loop.latest(run.snapshot));
+  return run;
+}
+
+TEST(ServoLoopTest, HeadlessRunsAreBitIdentical) {
+  const EngagedRun a = engagedRun(2000), b = engagedRun(2000);
+  EXPECT_EQ(std::memcmp(a.state.data(), b.state.data(), sizeof(double) * 12), 0);
+  EXPECT_EQ(std::memcmp(&a.snapshot.renderedForce, &b.snapshot.renderedForce, sizeof(Triple)), 0);
+  // And the run did something: engaged, moved, rendered a force.
+  EXPECT_EQ(a.snapshot.engagement, Engagement::Engaged);
+  EXPECT_EQ(a.snapshot.fault, SafetyFault::None) << safetyFaultName(a.snapshot.fault);
+  EXPECT_GT(std::hypot(a.state[0], a.state[1]), 1e-4);
+  EXPECT_GT(std::hypot(a.snapshot.renderedForce[0], a.snapshot.renderedForce[1]), 1e-3);
+  EXPECT_EQ(a.snapshot.tick, 2000u);
+  EXPECT_NEAR(a.snapshot.time, 2.0, 1e-9);  // 2000 sums of 1 ms
+}
+
+TEST(ServoLoopTest, NoInteractionUntilTheProxyReachesTheMassPoint) {
+  // The proxy waits 2 cm away for 0.2 s, then moves onto the mass point.
+  ScriptedDevice device([](double t) {
+    DeviceReading d;
+    d.position = Vec3(t < 0.2 ? 0.02 : 0.0, 0.0, kRadius);
+    return d;
+  });
+  ServoLoop loop(quickDef(), device);
+  loop.post(command(ServoCommandKind::Engage));
+  loop.runHeadless(150);
+  ServoSnapshot s;
+  ASSERT_TRUE(loop.latest(s));
+  EXPECT_EQ(s.engagement, Engagement::Armed);
+  EXPECT_NEAR(s.proxyDistance, 0.02, 1e-12);
+  EXPECT_EQ(device.lastForce(), Vec3::Zero());
+  EXPECT_EQ(loop.state(), physics::ForceDrivenState::Zero());  // the model was not pulled
+  loop.runHeadless(100);
+  ASSERT_TRUE(loop.latest(s));
+  EXPECT_EQ(s.engagement, Engagement::Engaged);
+}
+
+TEST(ServoLoopTest, DisengageRampsTheForceOut) {
+  ScriptedDevice device(circling);
+  ServoLoop loop(quickDef(), device);
+  loop.post(command(ServoCommandKind::Engage));
+  loop.runHeadless(500);
+  loop.post(command(ServoCommandKind::Disengage));
+  ServoSnapshot s;
+  loop.runHeadless(1);
+  ASSERT_TRUE(loop.latest(s));
+  EXPECT_EQ(s.engagement, Engagement::RampingOut);
+  EXPECT_GT(s.rampScale, 0.9);
+  loop.runHeadless(110);  // rampTime 0.1 s
+  ASSERT_TRUE(loop.latest(s));
+  EXPECT_EQ(s.engagement, Engagement::Disengaged);
+  EXPECT_EQ(device.lastForce(), Vec3::Zero());
+}
+
+// A device that stops delivering, reports an error, or a hemisphere that
+// spins away: the force is zero in the tick the watchdog fires and the
+// physics stops.
+TEST(ServoLoopTest, StalledDeviceZeroesTheForceAndPauses) {
+  ScriptedDevice device(circling);
+  ServoLoop loop(quickDef(), device);
+  loop.post(command(ServoCommandKind::Engage));
+  loop.runHeadless(500);
+  ASSERT_NE(device.lastForce(), Vec3::Zero());
+  device.stallFrom(loop.time());
+  loop.runHeadless(11);  // 10 ms staleLimit: by the 11th stale tick it has fired
+  ServoSnapshot s;
+  ASSERT_TRUE(loop.latest(s));
+  EXPECT_EQ(s.fault, SafetyFault::StaleDevice);
+  EXPECT_TRUE(s.paused);
+  EXPECT_EQ(device.lastForce(), Vec3::Zero());
+  const double frozen = loop.time();
+  loop.runHeadless(10);
+  EXPECT_EQ(loop.time(), frozen);
+}
+
+TEST(ServoLoopTest, DeviceErrorZeroesTheForceInTheSameTick) {
+  ScriptedDevice device(circling);
+  ServoLoop loop(quickDef(), device);
+  loop.post(command(ServoCommandKind::Engage));
+  loop.runHeadless(500);
+  ASSERT_NE(device.lastForce(), Vec3::Zero());
+  device.failWith("cable pulled");
+  loop.runHeadless(1);
+  EXPECT_EQ(device.lastForce(), Vec3::Zero());
+  EXPECT_EQ(loop.safety().fault(), SafetyFault::DeviceError);
+}
+
+TEST(ServoLoopTest, RunawayRotationZeroesTheForce) {
+  ServoLoopDef def = quickDef();
+  def.initialState[physics::force_slot::w_z] = 150.0;  // below the 200 rad/s bound
+  ScriptedDevice device(circling);
+  ServoLoop loop(def, device);
+  loop.post(command(ServoCommandKind::Engage));
+  loop.runHeadless(5);
+  EXPECT_FALSE(loop.safety().faulted());
+  ServoCommand spin = command(ServoCommandKind::ResetState);
+  spin.state[physics::force_slot::w_z] = 250.0;
+  spin.time = loop.time();
+  loop.post(spin);
+  loop.runHeadless(1);
+  EXPECT_EQ(loop.safety().fault(), SafetyFault::RunawayRotation);
+  EXPECT_EQ(device.lastForce(), Vec3::Zero());
+}
+
+TEST(ServoLoopTest, PauseAndResumeByCommand) {
+  ScriptedDevice device(circling);
+  ServoLoop loop(quickDef(), device);
+  loop.post(command(ServoCommandKind::Engage));
+  loop.runHeadless(300);
+  loop.post(command(ServoCommandKind::Pause));
+  loop.runHeadless(1);
+  EXPECT_EQ(device.lastForce(), Vec3::Zero());
+  const double t = loop.time();
+  loop.runHeadless(5);
+  EXPECT_EQ(loop.time(), t);
+  loop.post(command(ServoCommandKind::Resume));
+  loop.runHeadless(5);
+  EXPECT_GT(loop.time(), t);
+}
+
+TEST(ServoLoopTest, RejectsCouplingsTheDeviceCannotRender) {
+  ScriptedDevice device(circling);
+  ServoLoop loop(quickDef(), device);
+  ServoCommand c = command(ServoCommandKind::SetCoupling);
+  c.coupling.stiffness = 800.0;  // M3 with alpha 2: 1600 N/m normal > the spec's 1000
+  EXPECT_FALSE(loop.post(c));
+  c.coupling.stiffness = -1.0;
+  EXPECT_FALSE(loop.post(c));
+  c.coupling.stiffness = 100.0;
+  EXPECT_TRUE(loop.post(c));
+}
+
+// A clock whose waits return late by a scripted amount at chosen wake-ups.
+class FakeClock final : public ServoClock {
+ public:
+  std::map<long, std::int64_t> delays;  // wake-up index -> extra lateness [ns]
+  std::int64_t now() override { return now_; }
+  void waitUntil(std::int64_t deadline) override {
+    now_ = std::max(now_, deadline);
+    const auto it = delays.find(waits_++);
+    if (it != delays.end()) now_ += it->second;
+  }
+
+ private:
+  std::int64_t now_ = 0;
+  long waits_ = 0;
+};
+
+constexpr std::int64_t kPeriodNs = 1'000'000;
+
+TEST(ServoLoopCatchUpTest, OnTimeWakeupsRunOneTickEach) {
+  ScriptedDevice device(circling);
+  ServoLoop loop(quickDef(), device);
+  FakeClock clock;
+  loop.runPaced(clock, 100);
+  EXPECT_EQ(loop.ticks(), 100u);
+  EXPECT_EQ(loop.missedTicks(), 0u);
+  EXPECT_EQ(clock.now(), 100 * kPeriodNs);
+  EXPECT_EQ(loop.lateness().max(), 0.0);
+  EXPECT_EQ(loop.wakePeriod().count(), 99u);
+}
+
+TEST(ServoLoopCatchUpTest, ASmallStallIsCaughtUpOnTheSameGrid) {
+  ScriptedDevice device(circling);
+  ServoLoop loop(quickDef(), device);  // maxCatchUpTicks = 3
+  FakeClock clock;
+  clock.delays[10] = 2 * kPeriodNs + kPeriodNs / 2;  // 2.5 periods late: 3 deadlines due
+  loop.runPaced(clock, 20);
+  EXPECT_EQ(loop.ticks(), 22u);
+  EXPECT_EQ(loop.missedTicks(), 0u);
+  EXPECT_EQ(clock.now(), 22 * kPeriodNs);  // the last wake-up is still on the original grid
+  EXPECT_NEAR(loop.time(), 0.022, 1e-12);
+  EXPECT_DOUBLE_EQ(loop.lateness().max(), 2.5e-3);
+}
+
+TEST(ServoLoopCatchUpTest, ALongStallSkipsTicksAndReanchors) {
+  ScriptedDevice device(circling);
+  ServoLoop loop(quickDef(), device);
+  FakeClock clock;
+  clock.delays[10] = 10 * kPeriodNs + kPeriodNs / 2;  // 11 deadlines due: 3 run, 8 skipped
+  clock.delays[15] = 1'000'000'000;                   // a whole second: still only 3 ticks
+  loop.runPaced(clock, 20);
+  EXPECT_EQ(loop.ticks(), 18u + 3u + 3u);
+  EXPECT_EQ(loop.missedTicks(), 8u + 998u);
+  // Simulation time advanced by the ticks run only: no jump, no backlog.
+  EXPECT_NEAR(loop.time(), 0.024, 1e-12);
+  // Re-anchored at now + period after each stall: wake-up 10 at 11 + 10.5 ms,
+  // wake-ups 11..15 one period apart (the last one 1 s late), then 16..19.
+  EXPECT_EQ(clock.now(), (11 * kPeriodNs + 10 * kPeriodNs + kPeriodNs / 2) + 5 * kPeriodNs + 1'000'000'000 +
+                             4 * kPeriodNs);
+}
+
+// The real thread on the real clock for ~0.3 s. Asserts only what a loaded
+// 2-core machine cannot break: it ticks, the statistics agree with each
+// other, the snapshot reaches another thread, stop() leaves a zero force.
+TEST(ServoLoopRealtimeTest, TicksAndKeepsConsistentStatistics) {
+  ScriptedDevice device(circling);
+  ServoLoopDef def = quickDef();
+  def.requestRealtime = true;  // a note, never an error, when not permitted
+  ServoLoop loop(def, device);
+  ASSERT_TRUE(loop.post(command(ServoCommandKind::Engage)));
+  loop.start();
+  const auto until = std::chrono::steady_clock::now() + std::chrono::milliseconds(300);
+  ServoSnapshot s;
+  std::uint64_t seen = 0;
+  while (std::chrono::steady_clock::now() < until) {
+    if (loop.latest(s)) seen = std::max(seen, s.tick);
+    std::this_thread::yield();
+  }
+  loop.stop();
+  EXPECT_GT(loop.ticks(), 0u);
+  EXPECT_GT(seen, 0u);
+  EXPECT_LE(seen, loop.ticks());
+  EXPECT_EQ(loop.lateness().count(), loop.ticks());
+  EXPECT_EQ(loop.wakePeriod().count(), loop.wakeups() - 1);
+  EXPECT_LE(loop.wakeups(), loop.ticks());
+  EXPECT_LE(loop.lateness().quantile(0.5), loop.lateness().quantile(0.999));
+  EXPECT_LE(loop.lateness().quantile(0.999), loop.lateness().max());
+  EXPECT_NE(loop.realtime().status, RealtimeStatus::NotRequested);
+  EXPECT_NE(loop.realtime().note, nullptr);
+  EXPECT_EQ(device.lastForce(), Vec3::Zero());
+  ASSERT_TRUE(loop.latest(s));
+  EXPECT_EQ(s.tick, loop.ticks());
+}
+
+}  // namespace
+}  // namespace hemiroll::haptics
