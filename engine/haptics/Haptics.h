@@ -2,7 +2,8 @@
 // engine/haptics: the haptic side of hemiroll, in the CHAI3D manner.
 //
 // Owns: the device interface (HapticDevice, DeviceSpec) and the simple
-// devices (ScriptedDevice), the workspace mapping from device to scene,
+// devices (ScriptedDevice; SimulatedHandDevice, a spring-mass hand that
+// closes the loop in tests), the workspace mapping from device to scene,
 // safety on every tick (force clamp, force-rate limit, velocity guard,
 // engagement with ramp-in/out, watchdogs for device errors, stale data and
 // instability), and the 1 kHz servo loop (ServoLoop: pacing on absolute
@@ -25,6 +26,7 @@
 #include "engine/haptics/ServoCommand.h"
 #include "engine/haptics/ServoLoop.h"
 #include "engine/haptics/ServoSnapshot.h"
+#include "engine/haptics/SimulatedHandDevice.h"
 #include "engine/haptics/SpscRing.h"
 #include "engine/haptics/TimingHistogram.h"
 #include "engine/haptics/TripleBuffer.h"
