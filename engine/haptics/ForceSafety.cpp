@@ -19,6 +19,7 @@ SafetyFault ForceSafety::watchdogs(const SafetyInputs& in) {
   // Negated comparisons so that NaN observations trip the guard.
   if (!(in.deviceVelocity.norm() <= def_.maxDeviceSpeed)) return SafetyFault::VelocityGuard;
   if (in.modelHalted) return SafetyFault::ModelHalted;
+  if (!(in.tickLateness <= def_.maxTickLateness)) return SafetyFault::LoopOverrun;
   if (!(in.injectedEnergy <= def_.maxInjectedEnergy)) return SafetyFault::EnergyInjection;
   if (!(in.angularSpeed <= def_.maxAngularSpeed)) return SafetyFault::RunawayRotation;
   if (!in.desiredForce.allFinite()) return SafetyFault::NonFiniteForce;
@@ -34,6 +35,10 @@ Vec3 ForceSafety::update(const SafetyInputs& in) {
     return last_;
   }
   ramp_.update(in.dt, in.proxyDistance);
+  if (in.forceOff) {
+    last_ = Vec3::Zero();
+    return last_;
+  }
   const Vec3 target = ramp_.scale() * in.desiredForce;
   const Vec3 limited = limitForceStep(last_, target, def_.maxForceRate * in.dt);
   const ClampResult c = clampForce(limited, maxForce_);
@@ -58,6 +63,7 @@ const char* safetyFaultName(SafetyFault f) {
     case SafetyFault::EnergyInjection: return "energy injection beyond the bound";
     case SafetyFault::RunawayRotation: return "runaway angular velocity";
     case SafetyFault::ModelHalted: return "model halted at a domain edge";
+    case SafetyFault::LoopOverrun: return "servo loop stalled";
   }
   return "?";
 }

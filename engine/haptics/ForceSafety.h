@@ -2,6 +2,7 @@
 // Everything between the coupling's force and the device, applied on every
 // tick in this order:
 //   1. watchdogs: device error, stale device data for longer than staleLimit,
+//      a servo tick that started more than maxTickLateness after its deadline,
 //      device speed above maxDeviceSpeed (velocity guard), energy injected
 //      into the model beyond maxInjectedEnergy, angular speed beyond
 //      maxAngularSpeed, a non-finite force. Any of them latches a fault: the
@@ -26,6 +27,7 @@ enum class SafetyFault {
   EnergyInjection,   // the model gained more energy than the hand supplied, beyond the bound
   RunawayRotation,   // the hemisphere spins faster than maxAngularSpeed
   ModelHalted,       // the physics stopped at a domain edge (tip-over, off-face, non-finite)
+  LoopOverrun,       // the servo loop stalled: a tick started too late
 };
 
 struct SafetyDef {
@@ -35,6 +37,9 @@ struct SafetyDef {
   double staleLimit = 0.010;        // [s] without a fresh device sample
   double maxInjectedEnergy = 0.5;   // [J] model energy gained beyond the hand's work (see ServoLoop)
   double maxAngularSpeed = 200.0;   // [rad/s] |w| of the hemisphere
+  // [s] a tick starting this late means the device held a stale force that
+  // long; well above the scheduler hiccups of a loaded desktop (a few ms).
+  double maxTickLateness = 0.020;
 };
 
 // Per-tick observations the watchdogs judge.
@@ -48,6 +53,10 @@ struct SafetyInputs {
   double proxyDistance = 0.0;          // proxy to mass point, scene [m]
   double injectedEnergy = 0.0;         // [J]
   double angularSpeed = 0.0;           // [rad/s]
+  double tickLateness = 0.0;           // this tick's start after its deadline [s]
+  // The loop is paused: the watchdogs still run, the force is zero at once,
+  // and the rate limit restarts from zero when the pause ends.
+  bool forceOff = false;
 };
 
 class ForceSafety {

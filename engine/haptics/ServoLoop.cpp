@@ -184,7 +184,7 @@ void ServoLoop::tick(std::int64_t latenessNs) {
 
   SafetyInputs in;
   in.dt = h;
-  in.desiredForce = paused_ ? Vec3::Zero() : def_.mapping.forceToDevice(forces.deviceForce);
+  in.desiredForce = def_.mapping.forceToDevice(forces.deviceForce);
   in.deviceVelocity = reading.velocity;
   in.deviceError = deviceError != nullptr;
   in.deviceFresh = reading.fresh;
@@ -192,8 +192,9 @@ void ServoLoop::tick(std::int64_t latenessNs) {
   in.proxyDistance = distance;
   in.injectedEnergy = injected;
   in.angularSpeed = omega.norm();
-  Vec3 force = safety_.update(in);
-  if (paused_) force = Vec3::Zero();  // a pause removes the force at once, not through the rate limit
+  in.tickLateness = static_cast<double>(latenessNs) * 1e-9;
+  in.forceOff = paused_;  // a pause removes the force at once, not through the rate limit
+  const Vec3 force = safety_.update(in);
   device_.sendForce(force);
   lastRendered_ = force;
   lastClamped_ = safety_.lastClamped();

@@ -100,7 +100,22 @@ INSTANTIATE_TEST_SUITE_P(
              SafetyFault::NonFiniteForce},
         Trip{"inf force", [](SafetyInputs& in) { in.desiredForce.z() = std::numeric_limits<double>::infinity(); },
              SafetyFault::NonFiniteForce},
-        Trip{"halted", [](SafetyInputs& in) { in.modelHalted = true; }, SafetyFault::ModelHalted}));
+        Trip{"halted", [](SafetyInputs& in) { in.modelHalted = true; }, SafetyFault::ModelHalted},
+        Trip{"overrun", [](SafetyInputs& in) { in.tickLateness = 0.05; }, SafetyFault::LoopOverrun}));
+
+TEST(ForceSafetyTest, ForceOffIsImmediateAndTheRateLimitRestartsFromZero) {
+  SafetyDef def = quickRamp();
+  def.maxForceRate = 100.0;  // 0.1 N per tick
+  ForceSafety safety = engagedAtFullForce(def, Vec3(2.0, 0.0, 0.0));
+  ASSERT_NEAR(safety.lastForce().x(), 2.0, 1e-12);
+  SafetyInputs in;
+  in.desiredForce = Vec3(2.0, 0.0, 0.0);
+  in.forceOff = true;
+  EXPECT_EQ(safety.update(in), Vec3::Zero());
+  EXPECT_FALSE(safety.faulted());
+  in.forceOff = false;
+  EXPECT_NEAR(safety.update(in).x(), 0.1, 1e-12);  // back at the rate limit, not as a 2 N step
+}
 
 TEST(ForceSafetyTest, StaleDataTripsAfterTheLimitNotBefore) {
   SafetyDef def = quickRamp();

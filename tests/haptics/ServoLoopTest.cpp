@@ -311,7 +311,9 @@ TEST(ServoLoopCatchUpTest, ASmallStallIsCaughtUpOnTheSameGrid) {
 
 TEST(ServoLoopCatchUpTest, ALongStallSkipsTicksAndReanchors) {
   ScriptedDevice device(circling);
-  ServoLoop loop(quickDef(), device);
+  ServoLoopDef def = quickDef();
+  def.safety.maxTickLateness = 10.0;  // the pacing alone; the overrun watchdog is tested below
+  ServoLoop loop(def, device);
   FakeClock clock;
   clock.delays[10] = 10 * kPeriodNs + kPeriodNs / 2;  // 11 deadlines due: 3 run, 8 skipped
   clock.delays[15] = 1'000'000'000;                   // a whole second: still only 3 ticks
@@ -324,6 +326,21 @@ TEST(ServoLoopCatchUpTest, ALongStallSkipsTicksAndReanchors) {
   // wake-ups 11..15 one period apart (the last one 1 s late), then 16..19.
   EXPECT_EQ(clock.now(), (11 * kPeriodNs + 10 * kPeriodNs + kPeriodNs / 2) + 5 * kPeriodNs + 1'000'000'000 +
                              4 * kPeriodNs);
+}
+
+TEST(ServoLoopCatchUpTest, AStallBeyondTheOverrunLimitZeroesTheForce) {
+  ScriptedDevice device(circling);
+  ServoLoop loop(quickDef(), device);  // maxTickLateness 20 ms
+  loop.post(command(ServoCommandKind::Engage));
+  FakeClock clock;
+  clock.delays[300] = 15 * kPeriodNs;  // a hiccup below the limit: caught up, no fault
+  clock.delays[400] = 30 * kPeriodNs;
+  loop.runPaced(clock, 400);
+  EXPECT_FALSE(loop.safety().faulted());
+  ASSERT_NE(device.lastForce(), Vec3::Zero());
+  loop.runPaced(clock, 1);
+  EXPECT_EQ(loop.safety().fault(), SafetyFault::LoopOverrun);
+  EXPECT_EQ(device.lastForce(), Vec3::Zero());
 }
 
 // The real thread on the real clock for ~0.3 s. Asserts only what a loaded
