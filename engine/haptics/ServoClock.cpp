@@ -21,6 +21,9 @@ void SteadyServoClock::waitUntil(std::int64_t deadline) {
     }
   }
   while (now() < deadline) {
+#if defined(__x86_64__) || defined(__i386__)
+    __builtin_ia32_pause();  // tells the core (and a hyper-thread sibling) that this is a spin
+#endif
   }
 }
 
