@@ -73,6 +73,20 @@ RealtimeResult ServoLoop::realtime() const {
   return {status, realtimeNote_.load(std::memory_order_relaxed)};
 }
 
+LoopTimingSummary ServoLoop::timingSummary() const {
+  LoopTimingSummary s;
+  s.latenessP50 = lateness_.quantile(0.5);
+  s.latenessP99 = lateness_.quantile(0.99);
+  s.latenessP999 = lateness_.quantile(0.999);
+  s.latenessMax = lateness_.max();
+  s.periodP50 = period_.quantile(0.5);
+  s.periodMax = period_.max();
+  s.ticks = ticks();
+  s.missedTicks = missedTicks();
+  s.wakeups = wakeups();
+  return s;
+}
+
 bool ServoLoop::post(const ServoCommand& command) {
   if (command.kind == ServoCommandKind::SetCoupling && !couplingProblem(command.coupling, device_.spec()).empty())
     return false;

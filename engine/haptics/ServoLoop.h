@@ -68,6 +68,14 @@ struct ServoLoopDef {
   double startTime = 0.0;                // [s]
 };
 
+// The loop's timing in one struct, for a status line or a recording's
+// metadata. Quantiles are upper edges of 1 us bins [s].
+struct LoopTimingSummary {
+  double latenessP50 = 0.0, latenessP99 = 0.0, latenessP999 = 0.0, latenessMax = 0.0;  // [s]
+  double periodP50 = 0.0, periodMax = 0.0;                                             // [s] between wake-ups
+  std::uint64_t ticks = 0, missedTicks = 0, wakeups = 0;
+};
+
 class ServoLoop {
  public:
   static constexpr std::size_t kCommandCapacity = 64;
@@ -106,6 +114,7 @@ class ServoLoop {
   std::uint64_t missedTicks() const { return missed_.load(std::memory_order_relaxed); }
   std::uint64_t wakeups() const { return wakeups_.load(std::memory_order_relaxed); }
   RealtimeResult realtime() const;
+  LoopTimingSummary timingSummary() const;
 
   // Direct views for the loop's own thread (headless runs and tests).
   const physics::ForceDrivenState& state() const { return stepper_.state(); }

@@ -307,6 +307,13 @@ TEST(ServoLoopCatchUpTest, ASmallStallIsCaughtUpOnTheSameGrid) {
   EXPECT_EQ(clock.now(), 22 * kPeriodNs);  // the last wake-up is still on the original grid
   EXPECT_NEAR(loop.time(), 0.022, 1e-12);
   EXPECT_DOUBLE_EQ(loop.lateness().max(), 2.5e-3);
+  const LoopTimingSummary t = loop.timingSummary();
+  EXPECT_EQ(t.ticks, 22u);
+  EXPECT_EQ(t.wakeups, 20u);
+  EXPECT_DOUBLE_EQ(t.latenessMax, 2.5e-3);
+  EXPECT_DOUBLE_EQ(t.periodMax, 3.5e-3);  // wake-up 10 came 2.5 ms late
+  // Most wake-ups are exactly 1 ms apart: the bin [1000, 1001) us, reported by its upper edge.
+  EXPECT_DOUBLE_EQ(t.periodP50, 1.001e-3);
 }
 
 TEST(ServoLoopCatchUpTest, ALongStallSkipsTicksAndReanchors) {

@@ -66,13 +66,14 @@ void BM_ServoLoopLateness(benchmark::State& state) {
     stopBusy.store(true);
     busy.join();
 
-    const TimingHistogram& late = loop.lateness();
-    state.counters["late_p50_us"] = late.quantile(0.5) * 1e6;
-    state.counters["late_p99_us"] = late.quantile(0.99) * 1e6;
-    state.counters["late_p999_us"] = late.quantile(0.999) * 1e6;
-    state.counters["late_max_us"] = late.max() * 1e6;
-    state.counters["missed_ticks"] = static_cast<double>(loop.missedTicks());
-    state.counters["ticks"] = static_cast<double>(loop.ticks());
+    const LoopTimingSummary t = loop.timingSummary();
+    state.counters["late_p50_us"] = t.latenessP50 * 1e6;
+    state.counters["late_p99_us"] = t.latenessP99 * 1e6;
+    state.counters["late_p999_us"] = t.latenessP999 * 1e6;
+    state.counters["late_max_us"] = t.latenessMax * 1e6;
+    state.counters["period_max_us"] = t.periodMax * 1e6;
+    state.counters["missed_ticks"] = static_cast<double>(t.missedTicks);
+    state.counters["ticks"] = static_cast<double>(t.ticks);
     state.counters["fifo"] = loop.realtime().status == RealtimeStatus::Fifo ? 1.0 : 0.0;
     state.counters["snapshots_read"] = static_cast<double>(busyReads.load());
     std::fprintf(stderr, "haptics_bench: %s\n", loop.realtime().note);
