@@ -242,12 +242,14 @@ class DormandPrince853 final : public AdaptiveIntegrator<N> {
     const double tol = this->tolerance();
     double e5 = 0.0, e3 = 0.0;
     bool finite = true;
+    RealVector xr1;
+    StateVector<N> x1;
     for (int i = 0; i < N; ++i) {
       const double inc = b1 * k[1][i] + b6 * k[6][i] + b7 * k[7][i] + b8 * k[8][i] + b9 * k[9][i] +
                          b10 * k[10][i] + b11 * k[11][i] + b12 * k[12][i];
-      xrNew_[i] = xr_[i] + Real(h) * Real(inc);
-      const double xn = static_cast<double>(xrNew_[i]);
-      xNew_[i] = xn;
+      xr1[i] = xr_[i] + Real(h) * Real(inc);
+      const double xn = static_cast<double>(xr1[i]);
+      x1[i] = xn;
       finite = finite && std::isfinite(xn);
       const double sk = tol + tol * std::max(std::abs(x_[i]), std::abs(xn));
       const double d5 = (er1 * k[1][i] + er6 * k[6][i] + er7 * k[7][i] + er8 * k[8][i] + er9 * k[9][i] +
@@ -257,6 +259,8 @@ class DormandPrince853 final : public AdaptiveIntegrator<N> {
       e5 += d5 * d5;
       e3 += d3 * d3;
     }
+    xrNew_ = xr1;
+    xNew_ = x1;
     hTry_ = h;
     double denominator = e5 + 0.01 * e3;
     if (denominator <= 0.0) denominator = 1.0;
@@ -288,8 +292,10 @@ class DormandPrince853 final : public AdaptiveIntegrator<N> {
   template <class Sum>
   [[gnu::always_inline]] inline void stage(const OdeSystem<N>& f, double t, double h, StateVector<N>& out,
                                            const Sum& sum) {
-    for (int i = 0; i < N; ++i) stage_[i] = static_cast<double>(xr_[i] + Real(h) * Real(sum(i)));
-    f.derivative(t, stage_, out);
+    // A local vector: the compiler may assume it aliases no stage (members).
+    StateVector<N> y;
+    for (int i = 0; i < N; ++i) y[i] = static_cast<double>(xr_[i] + Real(h) * Real(sum(i)));
+    f.derivative(t, y, out);
   }
 
   void prepareDense() {

@@ -126,7 +126,9 @@ void writeMarkdown(const std::string& path, const std::vector<WorkPoint>& points
                "rad, rad/s). Reference: our DOP853 with the state in long double (`dop853ld`) at tol 1e-16; a second "
                "reference at tol 1e-15 checks it (their disagreement bounds the error of the looser one), and points "
                "with error below 10x that disagreement are marked unreliable and left out. CPU time: thread CPU time, median of repeated runs (at least 3, more for "
-               "short runs). Ours: rk4, gauss2, gauss3 (fixed step h), dopri5, dop853 (tolerance sweep "
+               "short runs); the adaptive methods, ours and the peers', timed interleaved (at each tol all five in "
+               "turn) in three passes over the sweep, the median of the passes taken, so that load from other "
+               "work on the machine falls on all curves alike. Ours: rk4, gauss2, gauss3 (fixed step h), dopri5, dop853 (tolerance sweep "
                "1, 2, 5 per decade from 1e-3 to 1e-14, atol = rtol = tol, to the end state only: no dense output is "
                "asked for, so DOP853's three dense-output stages are never computed). Peers, on the same tolerance "
                "grid: SUNDIALS CVODE 6.4.1 (Adams, functional iteration, CVodeSStolerances(tol, tol), stop time T, "
@@ -184,6 +186,27 @@ void writeMarkdown(const std::string& path, const std::vector<WorkPoint>& points
     std::fprintf(f, "Against %s: smallest ratio %.2f, %d comparison(s) lost. ", p.c_str(),
                  worst.count(p) ? worst[p] : 0.0, losses[p]);
   std::fprintf(f, "\n\n");
+  std::fprintf(
+      f,
+      "**Where the margins come from.** CVODE Adams needs no more evaluations than DOP853 for an error (often "
+      "fewer), but on an 8- or 12-state problem its own per-step work (order and step selection on the "
+      "Nordsieck history, the fixed-point iteration, N_Vector operations) dominates: about 1.7 us of run "
+      "time per evaluation on m3moving at tol 1e-8, against 0.15 us for ours (see the CSV's rhs_evaluations). "
+      "odeint's DOPRI5 is a 5th-order method. Against odeint's RKF78 the margin is smaller: both are "
+      "8th-order and the right-hand side is about 80%% of both runs, so the ratio is mostly evaluations per "
+      "error. DOP853 takes 12 evaluations per step (the 13th is the next step's first) against 13, and needs "
+      "fewer evaluations for the same error; the bookkeeping per evaluation is about the same (counted "
+      "with callgrind on the rose: about 150 instructions per "
+      "evaluation for ours, 170 for odeint's). What was "
+      "changed to win there: DOP853 no longer copies the accepted step's 13 stages (two banks that swap), "
+      "forms each stage and the error norm in one pass over the components, computes the dense output's "
+      "three extra stages only when interpolate() is called (the work-precision runs never call it), and "
+      "uses the stabilized (PI) step control that Hairer's DOP853 offers as an option, beta = 0.04, instead "
+      "of its default beta = 0: with beta = 0, 8 "
+      "to 22%% of the steps were rejected (11 evaluations each, thrown away), with 0.04 1 to 10%%. The "
+      "narrowest margin is the paper's rose near 1e-8 against RKF78 (a few per cent, repeatable on a quiet "
+      "machine, but no larger than a burst of load from other work): there the end-point error of both "
+      "methods stays flat over a decade of tol, and DOP853 needs only about 4%% fewer evaluations.\n\n");
 
   std::fprintf(f, "## Long-horizon invariant: the undamped tether\n\n"
                   "M2 spring (k_r = 250 N/m, k_v = 0) to a fixed proxy; H = E + (1/2) k_r |r_p - r_h|^2 is "

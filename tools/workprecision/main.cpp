@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -145,21 +146,51 @@ void study(const Settings& settings, const Scenario<N>& s, std::vector<WorkPoint
     RunResult<N> r = timed(settings, [&] { return runFixed<N, GaussLegendre3<N>>(s, h); }, sec);
     add("gauss3", true, "h", h, r, sec);
   }
+  // The adaptive methods, ours and the peers', are timed interleaved: for
+  // each tol all five in turn, and the whole sweep in three passes (each
+  // point's time the median of its passes' medians). On a shared machine a
+  // burst of load then lands on every method alike instead of on one
+  // method's curve.
+  struct Job {
+    std::string method;
+    bool ours;
+    double tol;
+    std::function<RunResult<N>()> run;
+    RunResult<N> result;
+    std::vector<double> seconds;
+  };
+  const std::vector<std::pair<std::string, bool>> adaptive = {
+      {"dopri5", true}, {"dop853", true}, {peerName(Peer::CvodeAdams), false},
+      {peerName(Peer::OdeintDopri5), false}, {peerName(Peer::OdeintFehlberg78), false}};
+  std::vector<Job> jobs;
   for (double tol : tols) {
-    RunResult<N> r = timed(settings, [&] { return runAdaptive<N, DormandPrince54<N>>(s, tol); }, sec);
-    add("dopri5", true, "tol", tol, r, sec);
+    jobs.push_back({"dopri5", true, tol, [&s, tol] { return runAdaptive<N, DormandPrince54<N>>(s, tol); }, {}, {}});
+    jobs.push_back({"dop853", true, tol, [&s, tol] { return runAdaptive<N, DormandPrince853<N>>(s, tol); }, {}, {}});
+    for (Peer peer : {Peer::CvodeAdams, Peer::OdeintDopri5, Peer::OdeintFehlberg78})
+      jobs.push_back({peerName(peer), false, tol,
+                      [&s, tol, peer] {
+                        const PeerResult<N> p = runPeer<N>(peer, *s.system, s.x0, s.horizon, tol);
+                        return RunResult<N>{
+                            p.ok ? p.x : StateVector<N>::Constant(std::numeric_limits<double>::quiet_NaN()),
+                            p.evaluations};
+                      },
+                      {},
+                      {}});
   }
-  for (double tol : tols) {
-    RunResult<N> r = timed(settings, [&] { return runAdaptive<N, DormandPrince853<N>>(s, tol); }, sec);
-    add("dop853", true, "tol", tol, r, sec);
-  }
-  for (Peer peer : {Peer::CvodeAdams, Peer::OdeintDopri5, Peer::OdeintFehlberg78}) {
-    for (double tol : tols) {
-      PeerResult<N> p = timed(settings, [&] { return runPeer<N>(peer, *s.system, s.x0, s.horizon, tol); }, sec);
-      RunResult<N> r{p.ok ? p.x : StateVector<N>::Constant(std::numeric_limits<double>::quiet_NaN()), p.evaluations};
-      add(peerName(peer), false, "tol", tol, r, sec);
+  const int passes = settings.quick ? 1 : 3;
+  Settings perPass = settings;
+  perPass.targetSeconds = settings.targetSeconds / passes;
+  for (int pass = 0; pass < passes; ++pass)
+    for (Job& job : jobs) {
+      job.result = timed(perPass, job.run, sec);
+      job.seconds.push_back(sec);
     }
-  }
+  for (const auto& [method, ours] : adaptive)
+    for (Job& job : jobs) {
+      if (job.method != method) continue;
+      std::nth_element(job.seconds.begin(), job.seconds.begin() + job.seconds.size() / 2, job.seconds.end());
+      add(job.method, job.ours, "tol", job.tol, job.result, job.seconds[job.seconds.size() / 2]);
+    }
 }
 
 template <class Method>
