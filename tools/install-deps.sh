@@ -9,6 +9,7 @@ packages=(
   libeigen3-dev liblua5.4-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libsundials-dev libboost-dev gnuplot-nox
+  nlohmann-json3-dev
 )
 
 missing=()

@@ -39,6 +39,7 @@ ServoLoop::ServoLoop(const ServoLoopDef& def, HapticDevice& device)
       coupling_(def.coupling) {
   if (!(def.period > 0.0) || !std::isfinite(def.period)) throw std::invalid_argument("ServoLoop: period must be positive");
   if (def.maxCatchUpTicks < 1) throw std::invalid_argument("ServoLoop: maxCatchUpTicks must be at least 1");
+  if (def.recordEvery < 1) throw std::invalid_argument("ServoLoop: recordEvery must be at least 1");
   const std::string problem = couplingProblem(def.coupling, device.spec());
   if (!problem.empty()) throw std::invalid_argument("ServoLoop: " + problem);
   const std::string params = physics::validateParams(def.params, false);
@@ -158,6 +159,7 @@ void ServoLoop::tick(std::int64_t latenessNs) {
   // Device -> scene; the proxy is held for the whole step (zero-order hold).
   const DeviceReading reading = device_.read(stepper_.time());
   const char* deviceError = device_.error();
+  if (def_.inputRing != nullptr) logInput(reading);
   proxy_.position = def_.mapping.positionToScene(reading.position);
   proxy_.velocity = def_.mapping.velocityToScene(reading.velocity);
 
@@ -242,6 +244,20 @@ void ServoLoop::publish(const physics::CouplingForces& forces, double distance, 
   s.maxLateness = maxLateness_;
   s.missedTicks = missed_.load(std::memory_order_relaxed);
   snapshots_.write(s);
+  if (def_.recordRing != nullptr && s.tick % static_cast<std::uint64_t>(def_.recordEvery) == 0 &&
+      !def_.recordRing->push(recordRowOf(s)))
+    recordDropped_.store(recordDropped_.load(std::memory_order_relaxed) + 1, std::memory_order_relaxed);
+}
+
+void ServoLoop::logInput(const DeviceReading& reading) {
+  TickInput in;
+  in.tick = ticks_.load(std::memory_order_relaxed) + 1;  // the tick now running
+  in.position = toTriple(reading.position);
+  in.velocity = toTriple(reading.velocity);
+  in.buttons = reading.buttons;
+  in.fresh = reading.fresh;
+  if (!def_.inputRing->push(in))
+    inputDropped_.store(inputDropped_.load(std::memory_order_relaxed) + 1, std::memory_order_relaxed);
 }
 
 }  // namespace hemiroll::haptics

@@ -40,6 +40,7 @@
 #include "engine/haptics/ForceSafety.h"
 #include "engine/haptics/HapticDevice.h"
 #include "engine/haptics/RealtimeThread.h"
+#include "engine/haptics/RecordRow.h"
 #include "engine/haptics/ServoClock.h"
 #include "engine/haptics/ServoCommand.h"
 #include "engine/haptics/ServoSnapshot.h"
@@ -66,6 +67,11 @@ struct ServoLoopDef {
   SafetyDef safety;
   std::array<double, 12> initialState{};  // 12-state (physics/StateLayout.h)
   double startTime = 0.0;                // [s]
+  // Recording (see above); null rings record nothing. The rings must outlive
+  // the loop's ticks; their single consumer is the recorder's thread.
+  RecordRing* recordRing = nullptr;
+  int recordEvery = 10;                  // ticks per recorded row: 10 = 100 Hz at 1 kHz, 1 = every tick
+  InputRing* inputRing = nullptr;        // every tick's device reading (replays)
 };
 
 // The loop's timing in one struct, for a status line or a recording's
@@ -113,6 +119,9 @@ class ServoLoop {
   std::uint64_t ticks() const { return ticks_.load(std::memory_order_relaxed); }
   std::uint64_t missedTicks() const { return missed_.load(std::memory_order_relaxed); }
   std::uint64_t wakeups() const { return wakeups_.load(std::memory_order_relaxed); }
+  // Rows and inputs lost to a full recording ring since construction.
+  std::uint64_t recordDropped() const { return recordDropped_.load(std::memory_order_relaxed); }
+  std::uint64_t inputDropped() const { return inputDropped_.load(std::memory_order_relaxed); }
   RealtimeResult realtime() const;
   LoopTimingSummary timingSummary() const;
 
@@ -125,6 +134,7 @@ class ServoLoop {
   void drainCommands();
   void apply(const ServoCommand& c);
   void publish(const physics::CouplingForces& forces, double distance, double injected, std::int64_t latenessNs);
+  void logInput(const DeviceReading& reading);
 
   ServoLoopDef def_;
   HapticDevice& device_;
@@ -146,6 +156,7 @@ class ServoLoop {
   TripleBuffer<ServoSnapshot> snapshots_;
   TimingHistogram lateness_, period_;
   std::atomic<std::uint64_t> ticks_{0}, missed_{0}, wakeups_{0};
+  std::atomic<std::uint64_t> recordDropped_{0}, inputDropped_{0};
   double maxLateness_ = 0.0;
   std::atomic<bool> stopRequested_{false};
   std::atomic<int> realtimeStatus_{static_cast<int>(RealtimeStatus::NotRequested)};

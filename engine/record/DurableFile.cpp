@@ -1,0 +1,107 @@
+#include "engine/record/DurableFile.h"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "engine/record/RecordError.h"
+
+namespace hemiroll::record {
+
+namespace {
+
+std::string systemError(const std::filesystem::path& path, const char* what) {
+  return path.string() + ": " + what + ": " + std::strerror(errno);
+}
+
+// Makes a rename or a new file itself durable: the directory entry lives in
+// the directory, which has its own data to sync.
+void syncDirectory(const std::filesystem::path& dir) {
+  const int fd = ::open(dir.empty() ? "." : dir.c_str(), O_RDONLY | O_DIRECTORY);
+  if (fd < 0) return;  // best effort: some file systems refuse; the data is synced already
+  ::fsync(fd);
+  ::close(fd);
+}
+
+}  // namespace
+
+DurableFile::DurableFile(const std::filesystem::path& path, const char* mode) : path_(path) {
+  file_ = std::fopen(path.c_str(), mode);
+  if (file_ == nullptr) throw RecordError(systemError(path, "cannot open for writing"));
+  syncDirectory(path.parent_path());
+}
+
+DurableFile::~DurableFile() { close(); }
+
+void DurableFile::fail(const char* what) {
+  if (error_.empty()) error_ = systemError(path_, what);
+}
+
+bool DurableFile::write(std::string_view bytes) {
+  if (file_ == nullptr) return false;
+  if (std::fwrite(bytes.data(), 1, bytes.size(), file_) != bytes.size()) fail("write failed");
+  return ok();
+}
+
+bool DurableFile::writeAt(long offset, const void* bytes, std::size_t size) {
+  if (file_ == nullptr) return false;
+  if (std::fseek(file_, offset, SEEK_SET) != 0 || std::fwrite(bytes, 1, size, file_) != size ||
+      std::fseek(file_, 0, SEEK_END) != 0)
+    fail("write failed");
+  return ok();
+}
+
+bool DurableFile::flush() {
+  if (file_ == nullptr) return false;
+  if (std::fflush(file_) != 0) fail("flush failed");
+  else if (::fdatasync(::fileno(file_)) != 0) fail("fdatasync failed");
+  return ok();
+}
+
+bool DurableFile::close() {
+  if (file_ == nullptr) return ok();
+  flush();
+  if (std::fclose(file_) != 0) fail("close failed");
+  file_ = nullptr;
+  return ok();
+}
+
+void writeFileAtomically(const std::filesystem::path& path, std::string_view content) {
+  std::filesystem::path temp = path;
+  temp += ".tmp";
+  {
+    DurableFile out(temp, "wb");
+    out.write(content);
+    if (!out.close()) throw RecordError(out.error());
+  }
+  if (std::rename(temp.c_str(), path.c_str()) != 0) throw RecordError(systemError(path, "cannot replace"));
+  syncDirectory(path.parent_path());
+}
+
+void appendDurably(const std::filesystem::path& path, std::string_view content) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_APPEND | O_CREAT | O_CLOEXEC, 0644);
+  if (fd < 0) throw RecordError(systemError(path, "cannot open for appending"));
+  // One write(): with O_APPEND the row lands whole at the end (a short write
+  // only on a full disk, reported).
+  const ssize_t n = ::write(fd, content.data(), content.size());
+  const bool written = n == static_cast<ssize_t>(content.size());
+  const bool synced = written && ::fsync(fd) == 0;
+  const std::string error = written ? (synced ? "" : systemError(path, "fsync failed")) : systemError(path, "write failed");
+  ::close(fd);
+  if (!error.empty()) throw RecordError(error);
+}
+
+std::string readWholeFile(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw RecordError(path.string() + ": cannot open for reading");
+  std::ostringstream s;
+  s << in.rdbuf();
+  if (in.bad()) throw RecordError(path.string() + ": read failed");
+  return s.str();
+}
+
+}  // namespace hemiroll::record

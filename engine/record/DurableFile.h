@@ -1,0 +1,46 @@
+#pragma once
+// File writing that survives a killed process and, as far as the kernel
+// allows, a power cut: a stdio stream with flush = fflush + fdatasync, and a
+// whole-file replacement that is atomic (temp file, fsync, rename, fsync of
+// the directory) so a reader sees the old file or the new one, never a mix.
+
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace hemiroll::record {
+
+class DurableFile {
+ public:
+  // mode as fopen ("wb", "r+b", "ab"). Throws RecordError naming the file.
+  DurableFile(const std::filesystem::path& path, const char* mode);
+  ~DurableFile();
+  DurableFile(const DurableFile&) = delete;
+  DurableFile& operator=(const DurableFile&) = delete;
+
+  // False after any failed write, flush or sync (error() says which).
+  bool write(std::string_view bytes);
+  bool writeAt(long offset, const void* bytes, std::size_t size);  // then back to the end
+  bool flush();  // fflush + fdatasync
+  bool close();  // flush + fclose
+  bool ok() const { return error_.empty(); }
+  const std::string& error() const { return error_; }
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  void fail(const char* what);
+
+  std::filesystem::path path_;
+  std::FILE* file_ = nullptr;
+  std::string error_;
+};
+
+// Replaces path's content atomically. Throws RecordError naming the file.
+void writeFileAtomically(const std::filesystem::path& path, std::string_view content);
+// Appends in one write() and fsyncs (O_APPEND). Throws RecordError.
+void appendDurably(const std::filesystem::path& path, std::string_view content);
+// The whole file as bytes. Throws RecordError naming it.
+std::string readWholeFile(const std::filesystem::path& path);
+
+}  // namespace hemiroll::record

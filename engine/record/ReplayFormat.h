@@ -1,0 +1,68 @@
+#pragma once
+// The replay log's binary layout (version 1), little-endian on every host:
+// a 256-byte header, then one 64-byte record per servo tick.
+//
+// header  offset size
+//   magic            0   8  "HMRREPLY"
+//   formatVersion    8   4  u32, 1
+//   headerSize      12   4  u32, 256
+//   recordSize      16   4  u32, 64
+//   flags           20   4  u32, bit 0: complete (set by finish)
+//   dt              24   8  f64, servo period [s]
+//   seed            32   8  u64
+//   tickCount       40   8  u64, records that follow
+//   firstTick       48   8  u64, the first record's tick
+//   checksum        56   8  u64, FNV-1a 64 of all record bytes
+//   softwareVersion 64  32  ASCII, NUL padded
+//   levelHash       96 128  ASCII, NUL padded
+//   reserved       224  32  zero
+// record
+//   tick             0   8  u64 (consecutive)
+//   position         8  24  3 x f64, device frame [m]
+//   velocity        32  24  3 x f64 [m/s]
+//   buttons         56   4  u32
+//   fresh           60   1  u8, 0 or 1
+//   padding         61   3  zero
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include "engine/haptics/RecordRow.h"
+
+namespace hemiroll::record {
+
+inline constexpr std::array<char, 8> kReplayMagic = {'H', 'M', 'R', 'R', 'E', 'P', 'L', 'Y'};
+inline constexpr std::uint32_t kReplayFormatVersion = 1;
+inline constexpr std::size_t kReplayHeaderSize = 256;
+inline constexpr std::size_t kReplayRecordSize = 64;
+inline constexpr std::uint32_t kReplayComplete = 1u;
+inline constexpr std::size_t kReplaySoftwareVersionSize = 32;
+inline constexpr std::size_t kReplayLevelHashSize = 128;
+
+struct ReplayHeader {
+  std::uint32_t formatVersion = kReplayFormatVersion;
+  std::uint32_t flags = 0;
+  double dt = 0.001;
+  std::uint64_t seed = 0;
+  std::uint64_t tickCount = 0;
+  std::uint64_t firstTick = 1;
+  std::uint64_t checksum = 0;
+  std::string softwareVersion;  // at most 31 characters
+  std::string levelHash;        // at most 127 characters
+};
+
+using ReplayHeaderBytes = std::array<unsigned char, kReplayHeaderSize>;
+using ReplayRecordBytes = std::array<unsigned char, kReplayRecordSize>;
+
+ReplayHeaderBytes encodeReplayHeader(const ReplayHeader& h);
+// Empty when it decoded, else what is wrong (magic, version, sizes).
+std::string decodeReplayHeader(const ReplayHeaderBytes& bytes, ReplayHeader& h);
+ReplayRecordBytes encodeReplayRecord(const haptics::TickInput& in);
+haptics::TickInput decodeReplayRecord(const ReplayRecordBytes& bytes);
+// FNV-1a 64, continued from `hash` (start with kFnvOffset).
+inline constexpr std::uint64_t kFnvOffset = 14695981039346656037ull;
+std::uint64_t fnv1a(const unsigned char* data, std::size_t size, std::uint64_t hash);
+
+}  // namespace hemiroll::record

@@ -1,0 +1,104 @@
+#include "engine/record/ReplayLogger.h"
+
+#include "engine/record/DurableFile.h"
+#include "engine/record/RecordError.h"
+#include "engine/record/TrialMeta.h"
+#include "engine/record/WriterThread.h"
+
+namespace hemiroll::record {
+
+struct ReplayLogger::Impl {
+  Impl(const std::filesystem::path& p, const ReplayHeader& h, double poll)
+      : path(p), header(h), pollInterval(poll), file(p, "wb") {}
+
+  void write(const haptics::TickInput& in) {
+    if (header.tickCount == 0) header.firstTick = in.tick;
+    else if (in.tick != header.firstTick + header.tickCount && problem.empty())
+      problem = "tick " + std::to_string(in.tick) + " follows tick " +
+                std::to_string(header.firstTick + header.tickCount - 1) + " (inputs were lost)";
+    const ReplayRecordBytes bytes = encodeReplayRecord(in);
+    header.checksum = fnv1a(bytes.data(), bytes.size(), header.checksum);
+    file.write(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+    ++header.tickCount;
+  }
+
+  std::size_t drain(haptics::InputRing& ring) {
+    std::size_t n = 0;
+    haptics::TickInput in;
+    while (ring.pop(in)) {
+      write(in);
+      ++n;
+    }
+    return n;
+  }
+
+  std::filesystem::path path;
+  ReplayHeader header;
+  double pollInterval;
+  DurableFile file;
+  std::string problem;
+  bool finished = false;
+  WriterThread writer;  // last: joined first
+};
+
+ReplayLogger::ReplayLogger(const std::filesystem::path& path, const ReplayHeader& header, double pollInterval) {
+  ReplayHeader h = header;
+  h.formatVersion = kReplayFormatVersion;
+  h.flags = 0;
+  h.tickCount = 0;
+  h.firstTick = 1;
+  h.checksum = kFnvOffset;
+  if (h.softwareVersion.empty()) h.softwareVersion = softwareVersion();
+  if (h.softwareVersion.size() >= kReplaySoftwareVersionSize || h.levelHash.size() >= kReplayLevelHashSize)
+    throw RecordError(path.string() + ": software version or level hash too long for the replay header");
+  impl_ = std::make_unique<Impl>(path, h, pollInterval);
+  const ReplayHeaderBytes bytes = encodeReplayHeader(impl_->header);
+  impl_->file.write(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+  if (!impl_->file.ok()) throw RecordError(impl_->file.error());
+}
+
+ReplayLogger::~ReplayLogger() {
+  if (impl_ && !impl_->finished) stopWriter();
+}
+
+ReplayLogger::ReplayLogger(ReplayLogger&&) noexcept = default;
+ReplayLogger& ReplayLogger::operator=(ReplayLogger&& other) noexcept {
+  if (this != &other) {
+    if (impl_ && !impl_->finished) stopWriter();
+    impl_ = std::move(other.impl_);
+  }
+  return *this;
+}
+
+void ReplayLogger::push(const haptics::TickInput& in) { impl_->write(in); }
+
+std::size_t ReplayLogger::drain(haptics::InputRing& ring) { return impl_->drain(ring); }
+
+void ReplayLogger::startWriter(haptics::InputRing& ring) {
+  Impl* impl = impl_.get();
+  impl->writer.start([impl, &ring] { impl->drain(ring); }, impl->pollInterval);
+}
+
+void ReplayLogger::stopWriter() { impl_->writer.stop(); }
+
+void ReplayLogger::finish(std::uint64_t droppedInputs) {
+  if (impl_->finished) throw RecordError(impl_->path.string() + ": the replay log was already finished");
+  stopWriter();
+  impl_->finished = true;
+  if (droppedInputs > 0 && impl_->problem.empty())
+    impl_->problem = std::to_string(droppedInputs) + " inputs were lost (the input ring overflowed)";
+  // The complete flag only when every tick is there: a replay with a hole
+  // cannot reproduce the run, and the reader refuses it.
+  if (impl_->problem.empty()) impl_->header.flags |= kReplayComplete;
+  const ReplayHeaderBytes bytes = encodeReplayHeader(impl_->header);
+  impl_->file.writeAt(0, bytes.data(), bytes.size());
+  impl_->file.close();
+  if (!impl_->file.ok()) throw RecordError(impl_->file.error());
+  if (!impl_->problem.empty())
+    throw RecordError(impl_->path.string() + ": the replay is unusable: " + impl_->problem);
+}
+
+std::uint64_t ReplayLogger::ticks() const { return impl_->header.tickCount; }
+const std::filesystem::path& ReplayLogger::path() const { return impl_->path; }
+
+}  // namespace hemiroll::record

@@ -1,0 +1,25 @@
+#pragma once
+// Loads a replay log (ReplayFormat.h) for ReplayDevice. A file that is not a
+// replay, has another format version, is truncated, was never finished, or
+// whose records fail the checksum or skip a tick, is a RecordError naming the
+// file and the byte offset or record.
+
+#include <filesystem>
+#include <vector>
+
+#include "engine/haptics/RecordRow.h"
+#include "engine/record/ReplayFormat.h"
+
+namespace hemiroll::record {
+
+struct ReplayLog {
+  ReplayHeader header;
+  std::vector<haptics::TickInput> inputs;
+};
+
+class ReplayReader {
+ public:
+  static ReplayLog load(const std::filesystem::path& path);
+};
+
+}  // namespace hemiroll::record

@@ -1,0 +1,47 @@
+#pragma once
+// The session's results.csv: one summary row per finished trial, appended
+// with a single write() and fsync'ed, the header written once when the file
+// is new. A row's extra keys become columns; every later row must bring the
+// same keys (checked against the header already in the file, so a resumed
+// session appends consistently). Text is quoted as RFC 4180 says.
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "engine/record/TrialMeta.h"
+
+namespace hemiroll::record {
+
+struct TrialResult {
+  std::string participant;
+  std::string session;
+  std::string trialId;
+  std::string level;
+  std::string levelHash;
+  std::string outcome;        // "success", "fail", "aborted", ...
+  std::string reason;
+  double duration = 0.0;      // [s] of simulation time
+  double score = 0.0;
+  std::uint64_t rows = 0;
+  std::uint64_t droppedRows = 0;
+  std::string startTime;      // ISO-8601 UTC
+  Fields extra;               // more columns, in this order
+};
+
+class ResultsFile {
+ public:
+  explicit ResultsFile(std::filesystem::path path) : path_(std::move(path)) {}
+
+  // Throws RecordError naming the file on an I/O error or a column mismatch.
+  void append(const TrialResult& result) const;
+  const std::filesystem::path& path() const { return path_; }
+
+  static std::vector<std::string> columns(const TrialResult& result);
+
+ private:
+  std::filesystem::path path_;
+};
+
+}  // namespace hemiroll::record
