@@ -1,0 +1,51 @@
+#include "tools/hapticclient/ClientOptions.h"
+
+#include <gtest/gtest.h>
+
+namespace hemiroll::hapticclient {
+namespace {
+
+TEST(ClientOptionsTest, DefaultsAndEveryOption) {
+  EXPECT_EQ(parseClientOptions({}).options.port, 47110);
+  const ParsedOptions p = parseClientOptions({"--host", "127.0.0.2", "--port", "5000", "--duration", "2.5", "--rate",
+                                              "500", "--hand-mass", "0.2", "--hand-stiffness", "400",
+                                              "--hand-damping", "12", "--centre", "0.01,-0.02,0.04",
+                                              "--circle-radius", "0.005", "--circle-frequency", "2"});
+  ASSERT_EQ(p.error, "");
+  const ClientOptions& o = p.options;
+  EXPECT_EQ(o.host, "127.0.0.2");
+  EXPECT_EQ(o.port, 5000);
+  EXPECT_EQ(o.duration, 2.5);
+  EXPECT_EQ(o.rate, 500.0);
+  EXPECT_EQ(o.hand.mass, 0.2);
+  EXPECT_EQ(o.hand.stiffness, 400.0);
+  EXPECT_EQ(o.hand.damping, 12.0);
+  EXPECT_EQ(o.centre, (std::array<double, 3>{0.01, -0.02, 0.04}));
+  EXPECT_EQ(o.circleRadius, 0.005);
+  EXPECT_EQ(o.circleFrequency, 2.0);
+  EXPECT_TRUE(parseClientOptions({"--help"}).options.help);
+}
+
+TEST(ClientOptionsTest, BadValuesNameTheFlagAndTheValue) {
+  struct Case {
+    std::vector<std::string> args;
+    std::string expected;
+  };
+  const Case cases[] = {
+      {{"--port", "70000"}, "--port needs an integer port in 1..65535, got '70000'"},
+      {{"--port", "12.5"}, "--port needs an integer port in 1..65535, got '12.5'"},
+      {{"--duration", "-1"}, "--duration needs a positive number of seconds, got '-1'"},
+      {{"--rate", "abc"}, "--rate needs a rate in 1..10000 Hz, got 'abc'"},
+      {{"--hand-mass", "0"}, "--hand-mass needs a positive mass in kg, got '0'"},
+      {{"--hand-stiffness", "nan"}, "--hand-stiffness needs a stiffness >= 0 in N/m, got 'nan'"},
+      {{"--centre", "1,2"}, "--centre needs three numbers x,y,z in metres, got '1,2'"},
+      {{"--centre", "1,2,3,4"}, "--centre needs three numbers x,y,z in metres, got '1,2,3,4'"},
+      {{"--port"}, "--port needs a value"},
+      {{"--speed", "3"}, "unknown option '--speed' (see --help)"},
+      {{"stray"}, "unexpected argument 'stray'"},
+  };
+  for (const Case& c : cases) EXPECT_EQ(parseClientOptions(c.args).error, c.expected);
+}
+
+}  // namespace
+}  // namespace hemiroll::hapticclient

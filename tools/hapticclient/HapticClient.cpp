@@ -1,0 +1,157 @@
+#include "tools/hapticclient/HapticClient.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "engine/haptics/ServoClock.h"
+#include "engine/haptics/SimulatedHandDevice.h"
+#include "engine/haptics/UdpProtocol.h"
+#include "engine/haptics/UdpSocket.h"
+
+namespace hemiroll::hapticclient {
+
+using haptics::SimulatedHandDevice;
+using haptics::UdpEndpoint;
+using haptics::Vec3;
+namespace udp = haptics::udp;
+
+namespace {
+
+constexpr double kPi = 3.141592653589793;
+
+SimulatedHandDevice::IntentFunction circleIntent(const ClientOptions& o) {
+  const Vec3 c(o.centre[0], o.centre[1], o.centre[2]);
+  const double r = o.circleRadius, w = 2.0 * kPi * o.circleFrequency;
+  return [c, r, w](double t) {
+    SimulatedHandDevice::Intent i;
+    i.position = c + Vec3(r * std::sin(w * t), r * (1.0 - std::cos(w * t)), 0.0);
+    i.velocity = Vec3(r * w * std::cos(w * t), r * w * std::sin(w * t), 0.0);
+    return i;
+  };
+}
+
+double quantile(std::vector<double> v, double q) {
+  if (v.empty()) return 0.0;
+  const auto k = static_cast<std::size_t>(std::floor(q * static_cast<double>(v.size() - 1)));
+  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
+  return v[k];
+}
+
+// Receives what the bridge sent; keeps the sequence and round-trip books.
+class ForceInbox {
+ public:
+  explicit ForceInbox(std::size_t expected) { rtts_.reserve(expected); }
+
+  void take(const udp::ForceMessage& m, std::int64_t now, SimulatedHandDevice& hand, ClientSummary& s) {
+    ++s.forcesReceived;
+    if (haveSequence_ && !udp::sequenceAfter(m.sequence, lastSequence_)) {
+      ++s.forcesOutOfOrder;
+      return;
+    }
+    if (haveSequence_) s.forcesLost += m.sequence - lastSequence_ - 1;
+    haveSequence_ = true;
+    lastSequence_ = m.sequence;
+    if (!haveAnswer_ || udp::sequenceAfter(m.answers, lastAnswer_)) {
+      ++s.statesAnswered;
+      rtts_.push_back(static_cast<double>(now - static_cast<std::int64_t>(m.echoTimestampNs)) * 1e-9);
+      haveAnswer_ = true;
+      lastAnswer_ = m.answers;
+    }
+    if (m.status == udp::BridgeStatus::Stale) ++s.staleForces;
+    if (m.status == udp::BridgeStatus::Closing) s.bridgeClosed = true;
+    const Vec3 f(m.force[0], m.force[1], m.force[2]);
+    s.maxForce = std::max(s.maxForce, f.norm());
+    hand.sendForce(f);
+  }
+
+  void finish(ClientSummary& s) const {
+    s.rttMedian = quantile(rtts_, 0.5);
+    s.rttP99 = quantile(rtts_, 0.99);
+    s.rttMax = rtts_.empty() ? 0.0 : *std::max_element(rtts_.begin(), rtts_.end());
+  }
+
+ private:
+  std::vector<double> rtts_;
+  bool haveSequence_ = false, haveAnswer_ = false;
+  std::uint32_t lastSequence_ = 0, lastAnswer_ = 0;
+};
+
+}  // namespace
+
+ClientSummary runClient(const ClientOptions& o, const std::atomic<bool>& stop) {
+  ClientSummary s;
+  UdpEndpoint bridge;
+  bridge.port = o.port;
+  if (!haptics::parseIpv4(o.host, bridge.address)) {
+    s.error = "--host '" + o.host + "' is not an IPv4 address like 127.0.0.1";
+    return s;
+  }
+  haptics::UdpSocket socket;
+  UdpEndpoint local;  // any free port, on loopback when the bridge is there
+  local.address = haptics::isLoopback(bridge.address) ? 0x7F000001u : 0u;
+  s.error = socket.bind(local);
+  if (!s.error.empty()) return s;
+
+  SimulatedHandDevice hand(circleIntent(o), o.hand);
+  haptics::SteadyServoClock clock;
+  const auto periodNs = static_cast<std::int64_t>(std::llround(1e9 / o.rate));
+  const auto total = static_cast<std::uint64_t>(std::llround(o.duration * o.rate));
+  ForceInbox inbox(total);
+  std::uint8_t buffer[udp::kMaxDatagram];
+  std::int64_t deadline = clock.now();
+  std::uint64_t k = 0;
+
+  while (!stop.load(std::memory_order_relaxed)) {
+    const std::int64_t now = clock.now();
+    if (now >= deadline) {
+      if (k == total) break;  // the last force had one period to arrive
+      const haptics::DeviceReading r = hand.read(static_cast<double>(k) / o.rate);
+      udp::StateMessage m;
+      m.sequence = static_cast<std::uint32_t>(k + 1);
+      m.timestampNs = static_cast<std::uint64_t>(now);
+      m.position = {r.position.x(), r.position.y(), r.position.z()};
+      m.velocity = {r.velocity.x(), r.velocity.y(), r.velocity.z()};
+      socket.send(buffer, udp::encodeState(m, buffer), bridge);
+      ++s.statesSent;
+      ++k;
+      // Absolute deadlines; after a long stall, re-anchor instead of bursting.
+      if (now - deadline > periodNs) {
+        ++s.lateSends;
+        deadline = now + periodNs;
+      } else {
+        deadline += periodNs;
+      }
+      continue;
+    }
+    UdpEndpoint from;
+    const long n = socket.receive(buffer, sizeof buffer, from, deadline - now);
+    if (n <= 0 || !(from == bridge)) continue;
+    udp::ForceMessage f;
+    if (udp::decodeForce(buffer, static_cast<std::size_t>(n), f) != udp::DecodeError::None) {
+      ++s.forcesMalformed;
+      continue;
+    }
+    inbox.take(f, clock.now(), hand, s);
+  }
+  inbox.finish(s);
+  return s;
+}
+
+void printSummary(const ClientSummary& s, std::ostream& out) {
+  out << "states_sent " << s.statesSent << "\n"
+      << "late_sends " << s.lateSends << "\n"
+      << "forces_received " << s.forcesReceived << "\n"
+      << "forces_malformed " << s.forcesMalformed << "\n"
+      << "forces_out_of_order " << s.forcesOutOfOrder << "\n"
+      << "forces_lost " << s.forcesLost << "\n"
+      << "states_answered " << s.statesAnswered << "\n"
+      << "stale_forces " << s.staleForces << "\n"
+      << "bridge_closed " << (s.bridgeClosed ? 1 : 0) << "\n"
+      << "max_force_N " << s.maxForce << "\n"
+      << "rtt_median_us " << s.rttMedian * 1e6 << "\n"
+      << "rtt_p99_us " << s.rttP99 * 1e6 << "\n"
+      << "rtt_max_us " << s.rttMax * 1e6 << "\n";
+}
+
+}  // namespace hemiroll::hapticclient
