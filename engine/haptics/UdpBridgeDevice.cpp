@@ -16,12 +16,6 @@ Vec3 toVec3(const std::array<double, 3>& a) { return Vec3(a[0], a[1], a[2]); }
 
 }  // namespace
 
-std::int64_t monotonicNowNs() {
-  timespec ts{};
-  clock_gettime(CLOCK_MONOTONIC, &ts);
-  return static_cast<std::int64_t>(ts.tv_sec) * 1'000'000'000 + ts.tv_nsec;
-}
-
 UdpBridgeDevice::UdpBridgeDevice(const UdpBridgeDef& def) : def_(def) {}
 
 UdpBridgeDevice::~UdpBridgeDevice() { close(); }

@@ -34,16 +34,13 @@
 #include <string>
 #include <thread>
 
+#include "engine/haptics/HapticDevice.h"
+#include "engine/haptics/MonotonicClock.h"
 #include "engine/haptics/TripleBuffer.h"
 #include "engine/haptics/UdpProtocol.h"
 #include "engine/haptics/UdpSocket.h"
-#include "engine/haptics/HapticDevice.h"
 
 namespace hemiroll::haptics {
-
-// Monotonic nanoseconds; replaceable in tests of the watchdog.
-using MonotonicClock = std::int64_t (*)();
-std::int64_t monotonicNowNs();
 
 struct UdpBridgeDef {
   std::string bindAddress = "127.0.0.1";
