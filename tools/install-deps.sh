@@ -10,6 +10,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libsundials-dev libboost-dev gnuplot-nox
   nlohmann-json3-dev
+  libsdl2-dev
 )
 
 missing=()
