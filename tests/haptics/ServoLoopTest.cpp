@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <map>
+#include <memory>
 #include <new>
 #include <thread>
 
@@ -107,6 +108,79 @@ TEST(ServoLoopTest, TheTickDoesNotAllocate) {
   gCountAllocations = false;
   EXPECT_EQ(gAllocations.load(), 0);
   EXPECT_EQ(loop.safety().engagement().state(), Engagement::Engaged);
+}
+
+// Recording into the rings allocates nothing either, also when a ring is
+// full and rows are dropped (the rings are never drained here).
+TEST(ServoLoopTest, RecordingFromTheTickDoesNotAllocate) {
+  auto rows = std::make_unique<RecordRing>();
+  auto inputs = std::make_unique<InputRing>();
+  ScriptedDevice device(circling);
+  ServoLoopDef def = quickDef();
+  def.recordRing = rows.get();
+  def.recordEvery = 1;
+  def.inputRing = inputs.get();
+  ServoLoop loop(def, device);
+  loop.post(command(ServoCommandKind::Engage));
+  loop.runHeadless(10);
+  gCountAllocations = true;
+  {
+    void* volatile probe = ::operator new(16);
+    ::operator delete(probe);
+  }
+  ASSERT_EQ(gAllocations.exchange(0), 1);
+  const long ticks = static_cast<long>(RecordRing::capacity()) + 500;  // overflows the row ring
+  loop.runHeadless(ticks);
+  gCountAllocations = false;
+  EXPECT_EQ(gAllocations.load(), 0);
+  EXPECT_EQ(loop.recordDropped(), static_cast<std::uint64_t>(ticks + 10) - RecordRing::capacity());
+  EXPECT_EQ(loop.inputDropped(), 0u);  // 8192 inputs of room
+}
+
+// Rows come every recordEvery-th tick and carry the snapshot's values; the
+// inputs come every tick, numbered by the tick that read them.
+TEST(ServoLoopTest, RecordsEveryNthTickAndEveryInput) {
+  auto rows = std::make_unique<RecordRing>();
+  auto inputs = std::make_unique<InputRing>();
+  ScriptedDevice device(circling);
+  ServoLoopDef def = quickDef();
+  def.recordRing = rows.get();
+  def.recordEvery = 10;
+  def.inputRing = inputs.get();
+  ServoLoop loop(def, device);
+  loop.post(command(ServoCommandKind::Engage));
+  loop.runHeadless(95);
+  ServoSnapshot last;
+  ASSERT_TRUE(loop.latest(last));
+  RecordRow row;
+  std::uint64_t expected = 10;
+  while (rows->pop(row)) {
+    EXPECT_EQ(row.tick, expected);
+    EXPECT_NEAR(row.time, 0.001 * static_cast<double>(expected), 1e-12);  // sums of 1 ms
+    expected += 10;
+  }
+  EXPECT_EQ(expected, 100u);  // rows at ticks 10..90
+  EXPECT_EQ(loop.recordDropped(), 0u);
+  TickInput in;
+  std::uint64_t tick = 0;
+  while (inputs->pop(in)) {
+    EXPECT_EQ(in.tick, ++tick);
+    const DeviceReading expectedReading = circling(0.001 * static_cast<double>(tick - 1));  // read at the tick's start
+    // 1e-15 m: the loop's time is a sum of 1 ms steps, a few ulps from (k - 1) ms.
+    EXPECT_NEAR(in.position[0], expectedReading.position.x(), 1e-15);
+  }
+  EXPECT_EQ(tick, 95u);
+  // A row holds what the snapshot of its tick held.
+  loop.runHeadless(5);
+  ASSERT_TRUE(loop.latest(last));
+  ASSERT_TRUE(rows->pop(row));
+  EXPECT_EQ(row.tick, last.tick);
+  EXPECT_EQ(std::memcmp(row.state.data(), last.state.data(), sizeof row.state), 0);
+  EXPECT_EQ(std::memcmp(row.renderedForce.data(), last.renderedForce.data(), sizeof row.renderedForce), 0);
+  EXPECT_EQ(row.engagement, last.engagement);
+  ServoLoopDef bad = quickDef();
+  bad.recordEvery = 0;
+  EXPECT_THROW(ServoLoop(bad, device), std::invalid_argument);
 }
 
 // In a normal engaged run the model never gains more than the hand's work

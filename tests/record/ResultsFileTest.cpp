@@ -1,0 +1,70 @@
+#include "engine/record/ResultsFile.h"
+
+#include <gtest/gtest.h>
+
+#include "engine/record/DurableFile.h"
+#include "engine/record/RecordError.h"
+#include "tests/support/TempDirectory.h"
+
+namespace hemiroll::record {
+namespace {
+
+TrialResult result(const std::string& trial, const std::string& reason) {
+  return TrialResult{.participant = "p01",
+                     .session = "1",
+                     .trialId = trial,
+                     .level = "tutorial",
+                     .levelHash = {},
+                     .outcome = "success",
+                     .reason = reason,
+                     .duration = 12.5,
+                     .score = 0.75,
+                     .rows = 1250,
+                     .droppedRows = 0,
+                     .startTime = {},
+                     .extra = {{"condition", "M3"}}};
+}
+
+TEST(ResultsFileTest, HeaderOnceThenOneRowPerTrial) {
+  hemiroll::test::TempDirectory dir;
+  const ResultsFile file(dir.path() / "results.csv");
+  file.append(result("t1", "goal"));
+  file.append(result("t2", "said \"done\", then left"));
+  const std::string text = readWholeFile(file.path());
+  EXPECT_EQ(text,
+            "participant,session,trial,level,level_hash,outcome,reason,duration_s,score,rows,dropped_rows,"
+            "start_time,condition\n"
+            "p01,1,t1,tutorial,,success,goal,12.5,0.75,1250,0,,M3\n"
+            "p01,1,t2,tutorial,,success,\"said \"\"done\"\", then left\",12.5,0.75,1250,0,,M3\n");
+}
+
+TEST(ResultsFileTest, OtherColumnsThanTheFilesAreRefused) {
+  hemiroll::test::TempDirectory dir;
+  const ResultsFile file(dir.path() / "results.csv");
+  file.append(result("t1", "goal"));
+  TrialResult other = result("t2", "goal");
+  other.extra = {{"block", "2"}};
+  try {
+    file.append(other);
+    FAIL() << "no error";
+  } catch (const RecordError& e) {
+    EXPECT_NE(std::string(e.what()).find("results.csv: line 1: the header differs"), std::string::npos) << e.what();
+  }
+  // The file is unchanged: one header, one row.
+  const std::string text = readWholeFile(file.path());
+  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 2);
+}
+
+TEST(ResultsFileTest, AnUnwritablePlaceIsNamed) {
+  hemiroll::test::TempDirectory dir;
+  const ResultsFile file(dir.path() / "no-such-folder" / "results.csv");
+  try {
+    file.append(result("t1", "goal"));
+    FAIL() << "no error";
+  } catch (const RecordError& e) {
+    EXPECT_NE(std::string(e.what()).find("no-such-folder/results.csv"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace hemiroll::record

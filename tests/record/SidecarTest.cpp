@@ -1,0 +1,112 @@
+#include "engine/record/Sidecar.h"
+
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <nlohmann/json.hpp>
+
+#include "engine/record/RecordError.h"
+
+namespace hemiroll::record {
+namespace {
+
+std::uint64_t bits(double v) { return std::bit_cast<std::uint64_t>(v); }
+
+TrialMeta awkwardMeta() {
+  TrialMeta m;
+  m.trialId = "trial-007";
+  m.participant = "p \"quoted\", with comma";
+  m.session = "s2";
+  m.levelName = "Über level";  // UTF-8 survives
+  m.levelHash = "sha256:0123abcd";
+  m.seed = 0xFFFF'FFFF'FFFF'FFFFull;  // the largest u64 survives JSON exactly
+  m.params.radius = 0.1 + 0.2;     // not a short decimal
+  m.params.shellMass = 1.0 / 3.0;
+  m.params.pointMass = 5e-324;     // subnormal
+  m.coupling.method = physics::ForceMethod::M2;
+  m.coupling.stiffness = 123.456789012345678;
+  m.deviceName = "udp-bridge";
+  m.deviceSpec.maxForce = 3.3;
+  m.recordEvery = 1;
+  m.softwareVersion = "9.9.9";
+  m.extra = {{"condition", "visual-only"}, {"block", "3"}};
+  return m;
+}
+
+TEST(SidecarTest, MetadataRoundTripsExactly) {
+  const TrialMeta m = awkwardMeta();
+  SidecarStatus s;
+  s.complete = true;
+  s.startTime = "2026-11-22T06:40:00.123Z";
+  s.rows = 42;
+  TrialEnd end;
+  end.outcome = "fail";
+  end.reason = "tipped over";
+  end.hasTiming = true;
+  end.timing.latenessP999 = 4.2e-5;
+  end.timing.missedTicks = 2;
+  s.end = end;
+  TrialMeta back;
+  SidecarStatus sback;
+  Sidecar::fromJson(Sidecar::toJson(m, s), "x.json", back, sback);
+  EXPECT_EQ(back.participant, m.participant);
+  EXPECT_EQ(back.levelName, m.levelName);
+  EXPECT_EQ(back.seed, m.seed);
+  EXPECT_EQ(bits(back.params.radius), bits(m.params.radius));
+  EXPECT_EQ(bits(back.params.shellMass), bits(m.params.shellMass));
+  EXPECT_EQ(bits(back.params.pointMass), bits(m.params.pointMass));
+  EXPECT_EQ(bits(back.coupling.stiffness), bits(m.coupling.stiffness));
+  EXPECT_EQ(back.coupling.method, physics::ForceMethod::M2);
+  EXPECT_EQ(back.extra, m.extra);
+  EXPECT_EQ(back.recordEvery, 1);
+  ASSERT_TRUE(sback.end.has_value());
+  EXPECT_EQ(sback.end->reason, "tipped over");
+  EXPECT_EQ(bits(sback.end->timing.latenessP999), bits(4.2e-5));
+  EXPECT_EQ(sback.end->timing.missedTicks, 2u);
+  EXPECT_TRUE(sback.complete);
+  EXPECT_EQ(sback.rows, 42u);
+}
+
+TEST(SidecarTest, StatesTheSamplingRateAndTheCodeNames) {
+  TrialMeta m;
+  m.tickPeriod = 0.001;
+  m.recordEvery = 10;
+  const auto j = nlohmann::json::parse(Sidecar::toJson(m, {}));
+  EXPECT_DOUBLE_EQ(j["sampling"]["rate_Hz"].get<double>(), 100.0);
+  EXPECT_EQ(j["codes"]["fault"][static_cast<int>(haptics::SafetyFault::LoopOverrun)],
+            haptics::safetyFaultName(haptics::SafetyFault::LoopOverrun));
+  EXPECT_EQ(j["complete"], false);
+}
+
+std::string errorOf(const std::string& text) {
+  TrialMeta m;
+  SidecarStatus s;
+  try {
+    Sidecar::fromJson(text, "trial.json", m, s);
+  } catch (const RecordError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(SidecarTest, BrokenSidecarsGiveNamedErrors) {
+  const std::string good = Sidecar::toJson(TrialMeta{}, {});
+  EXPECT_NE(errorOf(good.substr(0, good.size() / 2)).find("trial.json: "), std::string::npos);
+  EXPECT_NE(errorOf(good.substr(0, good.size() / 2)).find("parse error"), std::string::npos);
+  auto j = nlohmann::json::parse(good);
+  j.erase("params");
+  EXPECT_NE(errorOf(j.dump()).find("params"), std::string::npos) << errorOf(j.dump());
+  j = nlohmann::json::parse(good);
+  j["format_version"] = 99;
+  EXPECT_NE(errorOf(j.dump()).find("format_version 99"), std::string::npos) << errorOf(j.dump());
+  j = nlohmann::json::parse(good);
+  j["coupling"]["method"] = "M9";
+  EXPECT_NE(errorOf(j.dump()).find("M9"), std::string::npos) << errorOf(j.dump());
+  j = nlohmann::json::parse(good);
+  j["params"]["R_m"] = "big";
+  EXPECT_NE(errorOf(j.dump()).find("trial.json"), std::string::npos);
+  EXPECT_EQ(errorOf(good), "");
+}
+
+}  // namespace
+}  // namespace hemiroll::record
