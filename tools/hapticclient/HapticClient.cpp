@@ -66,6 +66,7 @@ class ForceInbox {
   }
 
   void finish(ClientSummary& s) const {
+    s.rttMin = rtts_.empty() ? 0.0 : *std::min_element(rtts_.begin(), rtts_.end());
     s.rttMedian = quantile(rtts_, 0.5);
     s.rttP99 = quantile(rtts_, 0.99);
     s.rttMax = rtts_.empty() ? 0.0 : *std::max_element(rtts_.begin(), rtts_.end());
@@ -149,6 +150,7 @@ void printSummary(const ClientSummary& s, std::ostream& out) {
       << "stale_forces " << s.staleForces << "\n"
       << "bridge_closed " << (s.bridgeClosed ? 1 : 0) << "\n"
       << "max_force_N " << s.maxForce << "\n"
+      << "rtt_min_us " << s.rttMin * 1e6 << "\n"
       << "rtt_median_us " << s.rttMedian * 1e6 << "\n"
       << "rtt_p99_us " << s.rttP99 * 1e6 << "\n"
       << "rtt_max_us " << s.rttMax * 1e6 << "\n";

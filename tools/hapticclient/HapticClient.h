@@ -28,7 +28,7 @@ struct ClientSummary {
   double maxForce = 0.0;              // largest |F| received [N]
   // Round trip: from sending a state to receiving the first force computed
   // from it [s]; includes the wait for the bridge's next servo tick.
-  double rttMedian = 0.0, rttP99 = 0.0, rttMax = 0.0;
+  double rttMin = 0.0, rttMedian = 0.0, rttP99 = 0.0, rttMax = 0.0;
   std::string error;                  // set when the client could not run
 };
 

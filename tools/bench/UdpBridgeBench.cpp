@@ -1,0 +1,86 @@
+// Round trip through the UDP bridge on loopback (issue 4): the servo loop on
+// its own thread with a UdpBridgeDevice, and the reference client's loop
+// (tools/hapticclient, a spring-mass hand) on a second thread of this
+// process, both at 1 kHz. One iteration = one run of kSeconds. Counters, from
+// the client's books (times in microseconds):
+//   rtt_min_us, rtt_p50_us, rtt_p99_us, rtt_max_us  from sending a state to
+//     receiving the first force computed from it. The force waits for the
+//     loop's next tick, so these depend on the phase between the client's
+//     and the loop's 1 ms grids: with the client at 1000 Hz the phase is
+//     fixed (an arbitrary value per run); at 990 Hz it sweeps the whole
+//     period, the median is about half a period and the minimum is the
+//     bridge's own cost (two socket hops, decode, one tick, encode).
+//   lost, out_of_order  state datagrams the bridge never got or got late;
+//     forces_lost, forces_out_of_order  the same for forces at the client.
+// UDP_BRIDGE_BENCH_SECONDS sets the run length (default 2).
+#include <benchmark/benchmark.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <thread>
+
+#include "engine/haptics/ServoLoop.h"
+#include "engine/haptics/UdpBridgeDevice.h"
+#include "tools/hapticclient/HapticClient.h"
+
+namespace {
+
+using namespace hemiroll;
+using namespace hemiroll::haptics;
+
+double benchSeconds() {
+  const char* env = std::getenv("UDP_BRIDGE_BENCH_SECONDS");
+  const double s = env ? std::atof(env) : 2.0;
+  return s > 0.0 ? s : 2.0;
+}
+
+void BM_UdpBridgeRoundTrip(benchmark::State& state) {
+  const double clientRate = static_cast<double>(state.range(0));
+  for (auto _ : state) {
+    UdpBridgeDef bridgeDef;
+    bridgeDef.port = 0;
+    UdpBridgeDevice bridge(bridgeDef);
+    if (!bridge.open()) {
+      state.SkipWithError(bridge.error());
+      return;
+    }
+    hapticclient::ClientOptions options;
+    options.port = bridge.port();
+    options.duration = benchSeconds();
+    options.rate = clientRate;
+    options.centre = {0.0, 0.0, 0.04};  // on the mass point at rest, so the coupling engages
+    options.circleRadius = 0.005;
+    options.circleFrequency = 1.0;
+    std::atomic<bool> stopClient{false};
+    hapticclient::ClientSummary summary;
+    std::thread client([&] { summary = hapticclient::runClient(options, stopClient); });
+    if (!bridge.waitForClient(2.0)) {
+      stopClient = true;
+      client.join();
+      state.SkipWithError("the client sent nothing");
+      return;
+    }
+    ServoLoop loop(ServoLoopDef{}, bridge);
+    ServoCommand engage;
+    engage.kind = ServoCommandKind::Engage;
+    loop.post(engage);
+    loop.start();
+    client.join();
+    loop.stop();
+    const UdpBridgeCounters c = bridge.counters();
+    state.counters["rtt_min_us"] = summary.rttMin * 1e6;
+    state.counters["rtt_p50_us"] = summary.rttMedian * 1e6;
+    state.counters["rtt_p99_us"] = summary.rttP99 * 1e6;
+    state.counters["rtt_max_us"] = summary.rttMax * 1e6;
+    state.counters["lost"] = static_cast<double>(c.lost);
+    state.counters["out_of_order"] = static_cast<double>(c.outOfOrder);
+    state.counters["forces_lost"] = static_cast<double>(summary.forcesLost);
+    state.counters["forces_out_of_order"] = static_cast<double>(summary.forcesOutOfOrder);
+    state.counters["states"] = static_cast<double>(summary.statesSent);
+  }
+}
+BENCHMARK(BM_UdpBridgeRoundTrip)->Arg(1000)->Arg(990)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
+
+}  // namespace
+
+BENCHMARK_MAIN();
