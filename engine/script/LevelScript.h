@@ -68,6 +68,11 @@ class LevelScript {
   LevelScript(const LevelScript&) = delete;
   LevelScript& operator=(const LevelScript&) = delete;
 
+  // Installs hemiroll.message, set_target, clear_target, succeed, fail and
+  // stage into the sandbox's engine table before the level file runs (they
+  // raise "only inside a callback" until a LevelScript calls back).
+  static void installApi(LuaSandbox& sandbox);
+
   // on_start; arms the on_update schedule at obs.time.
   void start(const TrialObservation& obs, TaskJudge& judge);
   // Call every tick after judging it. Runs on_update when due, then
@@ -83,10 +88,13 @@ class LevelScript {
   std::vector<LevelMessage> takeMessages();
 
   long long callbackCalls() const { return callbackCalls_; }
+  // The last callback error ("script error: file:line: message"), also when
+  // it came after the trial had ended (on_success / on_fail); "" = none.
+  const std::string& scriptError() const { return scriptError_; }
   LuaSandbox& sandbox() { return *sandbox_; }
 
  private:
-  bool call(int functionRef, const char* name, const TrialObservation& obs, TaskJudge& judge,
+  bool call(int functionRef, const std::string& where, const TrialObservation& obs, TaskJudge& judge,
             const char* reason);
   void refreshView(const TrialObservation& obs, const TaskJudge& judge);
   void buildView();
@@ -97,16 +105,22 @@ class LevelScript {
   int levelRef_ = -2;  // LUA_NOREF: registry references
   int onStartRef_ = -2, onUpdateRef_ = -2, onSuccessRef_ = -2, onFailRef_ = -2, scoreRef_ = -2;
   int viewRef_ = -2, viewDataRef_ = -2;
+  std::string whereStart_, whereUpdate_, whereSuccess_, whereFail_, whereScore_;  // "file: callbacks.on_update"
   double period_ = 0.05;
+  double startTime_ = 0.0;
+  long long updateIndex_ = 0;
   double nextUpdate_ = 0.0;
+  bool started_ = false;
   bool endReported_ = false;
+  std::string scriptError_;
+  std::string apiError_;  // a message an API function raises (outlives the C frame)
   long long callbackCalls_ = 0;
   // Valid only while a callback runs (the API functions reach them).
   TaskJudge* activeJudge_ = nullptr;
   double activeTime_ = 0.0;
   std::vector<LevelMessage> messages_;
 
-  friend struct LevelScriptApi;  // the C functions behind hemiroll.*
+  friend struct LevelScriptFunctions;  // the C functions behind hemiroll.* (LevelScriptApi.cpp)
 };
 
 }  // namespace hemiroll::script

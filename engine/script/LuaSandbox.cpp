@@ -207,6 +207,11 @@ LuaSandbox::~LuaSandbox() {
   lua_close(L_);
 }
 
+void LuaSandbox::pushEnvironment() const {
+  lua_checkstack(L_, 1);
+  lua_rawgeti(L_, LUA_REGISTRYINDEX, environmentRef_);
+}
+
 LuaSandbox& LuaSandbox::of(lua_State* L) { return **static_cast<LuaSandbox**>(lua_getextraspace(L)); }
 
 void* LuaSandbox::allocate(void* ud, void* block, std::size_t oldSize, std::size_t newSize) {

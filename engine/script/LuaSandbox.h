@@ -43,6 +43,9 @@ class LuaSandbox {
   int call(int nargs, int nresults, std::string_view where);
 
   lua_State* state() const { return L_; }
+  // Pushes the scripts' environment table (_ENV of every chunk), for engine
+  // services that add globals or load further chunks into the same sandbox.
+  void pushEnvironment() const;
   const SandboxLimits& limits() const { return limits_; }
   std::size_t memoryInUse() const { return bytesInUse_; }
   // Instructions counted during the last protected call (in units of the

@@ -41,7 +41,7 @@ void pushEngineTable(LuaSandbox& sandbox);
 
 // The scripts/ directory that belongs to a level or bot file by the
 // repository layout: "<dir>/../scripts" for "<dir>/file.lua" (levels/x.lua ->
-// levels/../scripts), or "scripts" beside a file in the current directory.
+// "levels/../scripts"; a bare "x.lua" -> "./../scripts").
 std::string defaultScriptsDir(const std::string& filePath);
 
 // True for a module name require accepts ("bots.rose"); otherwise false and

@@ -13,12 +13,14 @@
 //   2. a non-finite state fails ("state not finite");
 //   3. domain events: tip-over / off-face fail when the level says so;
 //   4. the contact point leaving the level's area, or entering a forbidden
-//      zone, fails;
+//      zone, fails (a point on a zone's edge is neither in nor out: allowed);
 //   5. the current stage's components are evaluated; if all are inside, the
-//      hold timer advances by the time since the previous tick (it restarts
-//      at 0 on the tick it becomes inside), else it resets to 0; once it
-//      reaches the stage's hold the next stage starts (fresh timer), and
-//      passing the last stage is success ("target held");
+//      hold timer is the time since the first tick of this inside run (0 on
+//      that tick), else it resets to 0; once it reaches the stage's hold
+//      (less 1 ns, for the rounding of summed time steps) the next stage
+//      starts on the same tick (it may pass at once if it is already
+//      held with hold 0), and passing the last stage is success ("target
+//      held");
 //   6. time >= time limit fails ("time limit reached"), or succeeds for a
 //      watch-only level ("watched to the end").
 // So a target reached on the very tick the time runs out counts.
@@ -124,10 +126,12 @@ class TaskJudge {
 
  private:
   void evaluateStage(const physics::ForceDrivenState& state);
-  bool checkZones(double u, double v);
   void end(TrialOutcome outcome, const char* reason, double time);
 
-  TaskDef task_;
+  void loadComponents();  // components_ from the current stage, within their reserved capacity
+
+  TaskDef original_;  // as declared, for reset()
+  TaskDef task_;      // with dynamic target changes
   std::vector<ComponentStatus> components_;  // capacity kTaskVariableCount, fixed
   TrialOutcome outcome_ = TrialOutcome::Running;
   const char* constantReason_ = trial_reason::kRunning;
@@ -137,10 +141,9 @@ class TaskJudge {
   int stage_ = 0;
   int stagesPassed_ = 0;
   double held_ = 0.0;
-  double lastTime_ = 0.0;
+  double insideSince_ = 0.0;  // [s] time of the first tick of the current inside run
   bool wasInside_ = false;
   bool allInside_ = false;
-  bool started_ = false;
   double worstNormalized_ = 0.0;
   int zoneHit_ = -1;
 };

@@ -1,0 +1,255 @@
+#include "engine/script/LevelLoader.h"
+
+#include <lua.hpp>
+
+#include <cctype>
+#include <fstream>
+#include <sstream>
+
+#include "engine/script/LevelFieldChecks.h"
+#include "engine/script/LevelSourceMap.h"
+#include "engine/script/LevelTaskReader.h"
+#include "engine/script/LuaSandbox.h"
+#include "engine/script/LuaTableReader.h"
+#include "engine/script/ScriptError.h"
+#include "engine/script/ScriptModules.h"
+
+namespace hemiroll::script {
+
+namespace {
+
+class StackTop {
+ public:
+  explicit StackTop(lua_State* L) : L_(L), top_(lua_gettop(L)) {}
+  ~StackTop() { lua_settop(L_, top_); }
+  StackTop(const StackTop&) = delete;
+  StackTop& operator=(const StackTop&) = delete;
+  int top() const { return top_; }
+
+ private:
+  lua_State* L_;
+  int top_;
+};
+
+constexpr std::initializer_list<const char*> kPlotChannels = {
+    "x_p", "y_p", "xd_p", "yd_p", "w_x", "w_y", "w_z", "u_a", "v_a", "u_o", "v_o", "psi",
+    "omega_norm", "energy", "proxy_x", "proxy_y", "proxy_z", "force_x", "force_y", "force_z", "force_norm"};
+
+// "name:12:" at the start: the message already has its line.
+bool startsWithLine(const std::string& message, const std::string& name) {
+  if (message.compare(0, name.size(), name) != 0 || message.size() <= name.size() + 1 || message[name.size()] != ':')
+    return false;
+  std::size_t i = name.size() + 1;
+  const std::size_t digits = i;
+  while (i < message.size() && std::isdigit(static_cast<unsigned char>(message[i]))) ++i;
+  return i > digits && i < message.size() && message[i] == ':';
+}
+
+// "name: path: message" -> "name:LINE: path: message", the line from the source.
+std::string withLine(const std::string& message, const std::string& name, std::string_view source) {
+  if (startsWithLine(message, name)) return message;
+  const std::string prefix = name + ": ";
+  if (message.compare(0, prefix.size(), prefix) != 0) return name + ":1: " + message;
+  const std::string rest = message.substr(prefix.size());
+  const std::size_t colon = rest.find(": ");
+  const std::string path = colon == std::string::npos ? "" : rest.substr(0, colon);
+  const bool pathLike = !path.empty() && path.find(' ') == std::string::npos;
+  const LevelSourceMap map(source);
+  return name + ":" + std::to_string(map.lineOf(pathLike ? path : "")) + ": " + rest;
+}
+
+void readMeta(const LuaTableReader& top, LevelDef& def) {
+  const auto name = top.string("name");
+  if (!name || name->empty()) top.fail("name", "missing; every level needs a name (a string)");
+  def.name = *name;
+  def.description = top.string("description").value_or("");
+  def.author = top.string("author").value_or("");
+  def.version = top.string("version").value_or(def.version);
+  def.difficulty = readInteger(top, "difficulty", 1, 5).value_or(def.difficulty);
+}
+
+void readParams(const LuaTableReader& top, physics::HemisphereParams& params) {
+  const auto table = top.table("params");
+  if (!table) return;
+  rejectUnknownLevelKeys(*table, {"R", "m_s", "m_p", "g"});
+  params.radius = table->number("R", params.radius);
+  params.shellMass = table->number("m_s", params.shellMass);
+  params.pointMass = table->number("m_p", params.pointMass);
+  params.gravity = table->number("g", params.gravity);
+  // The message starts with the field ("params.R (radius) must be ..."):
+  // point at that field.
+  if (const std::string problem = physics::validateParams(params, false); !problem.empty())
+    top.fail(problem.substr(0, problem.find(' ')), problem.substr(problem.find(' ') + 1));
+}
+
+void readInitial(const LuaTableReader& top, physics::ForceDrivenState& initial) {
+  initial.setZero();
+  const auto table = top.table("initial");
+  if (!table) return;
+  rejectUnknownLevelKeys(*table, {"x_p", "y_p", "xd_p", "yd_p", "w_x", "w_y", "w_z", "u_a", "v_a", "u_o", "v_o", "psi"});
+  for (int slot = 0; slot < 12; ++slot) initial[slot] = table->number(physics::kStateNames[slot], 0.0);
+}
+
+void readForce(const LuaTableReader& top, physics::CouplingDef& coupling) {
+  const auto force = top.table("force");
+  if (!force) return;
+  rejectUnknownLevelKeys(*force, {"method", "kr", "kv", "alpha"});
+  const std::string method = force->string("method").value_or("M3");
+  if (method == "M1") coupling.method = physics::ForceMethod::M1;
+  else if (method == "M2") coupling.method = physics::ForceMethod::M2;
+  else if (method == "M3") coupling.method = physics::ForceMethod::M3;
+  else if (method == "visual") coupling.visualOnly = true;  // M3 gains drive the model; nothing is rendered
+  else force->fail("method", "unknown method '" + method + "' (expected \"M1\", \"M2\", \"M3\" or \"visual\")");
+  coupling.stiffness = force->number("kr", coupling.stiffness);
+  coupling.damping = force->number("kv", coupling.damping);
+  coupling.alpha = force->number("alpha", coupling.alpha);
+  // The message starts with the key ("kr (stiffness) must be ...").
+  if (const std::string problem = physics::validateCoupling(coupling); !problem.empty())
+    force->fail(problem.substr(0, problem.find(' ')), problem.substr(problem.find(' ') + 1));
+}
+
+void readDevice(const LuaTableReader& top, DeviceMappingDef& mapping) {
+  const auto device = top.table("device");
+  if (!device) return;
+  rejectUnknownLevelKeys(*device, {"scale", "offset"});
+  mapping.scale = readPositive(*device, "scale", "scene metres per device metre").value_or(mapping.scale);
+  mapping.offset = readVector<3>(*device, "offset", "{x, y, z} in metres").value_or(mapping.offset);
+}
+
+void readScene(const LuaTableReader& top, SceneDef& scene) {
+  const auto table = top.table("scene");
+  if (!table) return;
+  rejectUnknownLevelKeys(*table, {"contact_trace", "plots", "record_rate"});
+  scene.contactTrace = readBool(*table, "contact_trace").value_or(scene.contactTrace);
+  scene.recordRate = readPositive(*table, "record_rate", "Hz").value_or(scene.recordRate);
+  if (scene.recordRate > 1000.0) table->fail("record_rate", "at most 1000 Hz (the servo rate)");
+  if (const auto plots = table->table("plots")) {
+    const int count = plots->entryCount();
+    for (int i = 1; i <= count; ++i) {
+      const std::string at = positionKey(i);
+      lua_rawgeti(plots->state(), plots->index(), i);
+      const char* channel = lua_type(plots->state(), -1) == LUA_TSTRING ? lua_tostring(plots->state(), -1) : nullptr;
+      const std::string name = channel != nullptr ? channel : "";
+      lua_pop(plots->state(), 1);
+      if (channel == nullptr) plots->fail(at, "expected a channel name (a string); plots is a list");
+      if (std::none_of(kPlotChannels.begin(), kPlotChannels.end(), [&](const char* c) { return name == c; })) {
+        const char* near = nearestName(name, kPlotChannels);
+        plots->fail(at, "unknown channel '" + name + "'" + (near ? " (did you mean '" + std::string(near) + "'?)" : ""));
+      }
+      scene.plots.push_back(name);
+    }
+  }
+}
+
+void requireFunction(const LuaTableReader& table, const char* key, bool& present) {
+  const int type = table.typeOf(key);
+  present = type == LUA_TFUNCTION;
+  if (type != LUA_TNIL && type != LUA_TFUNCTION) {
+    table.pushField(key);
+    const std::string got = describeLuaValue(table.state(), -1);
+    lua_pop(table.state(), 1);
+    table.fail(key, "expected a function, got " + got);
+  }
+}
+
+void readCallbacks(const LuaTableReader& top, CallbackDef& callbacks) {
+  const auto table = top.table("callbacks");
+  if (!table) return;
+  rejectUnknownLevelKeys(*table, {"rate", "on_start", "on_update", "on_success", "on_fail"});
+  callbacks.rate = table->number("rate", callbacks.rate);
+  if (callbacks.rate < 10.0 || callbacks.rate > 100.0) table->fail("rate", "must be from 10 to 100 (Hz)");
+  requireFunction(*table, "on_start", callbacks.onStart);
+  requireFunction(*table, "on_update", callbacks.onUpdate);
+  requireFunction(*table, "on_success", callbacks.onSuccess);
+  requireFunction(*table, "on_fail", callbacks.onFail);
+}
+
+void readScoring(const LuaTableReader& top, ScoringDef& scoring) {
+  requireFunction(top, "score", scoring.hasScoreFunction);
+  const auto medals = top.table("medals");
+  if (!medals) return;
+  if (!scoring.hasScoreFunction) top.fail("medals", "needs a score function (score = function(summary) ... end)");
+  rejectUnknownLevelKeys(*medals, {"bronze", "silver", "gold"});
+  double* slots[3] = {&scoring.bronze, &scoring.silver, &scoring.gold};
+  const char* names[3] = {"bronze", "silver", "gold"};
+  for (int i = 0; i < 3; ++i) {
+    const auto v = medals->number(names[i]);
+    if (!v) medals->fail(names[i], "missing; medals need bronze, silver and gold thresholds (score >= threshold)");
+    *slots[i] = *v;
+  }
+  if (!(scoring.bronze <= scoring.silver && scoring.silver <= scoring.gold))
+    medals->fail("silver", "thresholds must satisfy bronze <= silver <= gold");
+  scoring.hasMedals = true;
+}
+
+LevelDef readLevel(lua_State* L, const std::string& name) {
+  if (lua_type(L, -1) != LUA_TTABLE)
+    throw ScriptError(name + ": the level must return a table, got " + describeLuaValue(L, -1));
+  const LuaTableReader top(L, -1, name, "");
+  rejectUnknownLevelKeys(top, {"name", "description", "author", "difficulty", "version", "params", "initial",
+                               "force", "device", "task", "score", "medals", "scene", "callbacks", "demo_bot"});
+  LevelDef def;
+  def.source = name;
+  readMeta(top, def);
+  readParams(top, def.params);
+  readInitial(top, def.initial);
+  readForce(top, def.coupling);
+  readDevice(top, def.mapping);
+  readLevelTask(top, def.task);
+  readScoring(top, def.scoring);
+  readScene(top, def.scene);
+  readCallbacks(top, def.callbacks);
+  if (const auto bot = top.string("demo_bot")) {
+    std::string why;
+    if (!validModuleName(*bot, why)) top.fail("demo_bot", "bad module name '" + *bot + "': " + why);
+    def.demoBot = *bot;
+  }
+  return def;
+}
+
+LoadedLevel load(const LevelLoadOptions& options, std::string_view source, const std::string& name,
+                 const std::string& scriptsDir) {
+  auto sandbox = std::make_shared<LuaSandbox>(options.limits);
+  installRequire(*sandbox, scriptsDir);
+  installRandom(*sandbox, options.seed);
+  LevelScript::installApi(*sandbox);
+  lua_State* L = sandbox->state();
+  const StackTop restore(L);
+  try {
+    sandbox->runChunk(source, name, 1);
+    LoadedLevel out;
+    out.def = readLevel(L, name);
+    lua_settop(L, restore.top() + 1);  // just the level table, for the script
+    out.script = std::make_shared<LevelScript>(sandbox, out.def);
+    return out;
+  } catch (const ScriptError& e) {
+    throw ScriptError(withLine(e.what(), name, source));
+  }
+}
+
+std::string readText(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ScriptError(path + ":1: cannot open the level file");
+  std::ostringstream content;
+  content << in.rdbuf();
+  std::string text = content.str();
+  // As the stand-alone interpreter: skip a UTF-8 byte-order mark, blank out a
+  // first line starting with '#', keeping line numbers.
+  if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);
+  if (!text.empty() && text.front() == '#') text.erase(0, std::min(text.find('\n'), text.size()));
+  return text;
+}
+
+}  // namespace
+
+LoadedLevel LevelLoader::loadFile(const std::string& path) const {
+  const std::string text = readText(path);
+  if (text.size() > options_.limits.memoryLimitBytes) throw ScriptError(path + ":1: file is larger than the memory limit");
+  return load(options_, text, path, options_.scriptsDir.empty() ? defaultScriptsDir(path) : options_.scriptsDir);
+}
+
+LoadedLevel LevelLoader::loadSource(std::string_view source, const std::string& name) const {
+  return load(options_, source, name, options_.scriptsDir);
+}
+
+}  // namespace hemiroll::script
