@@ -72,7 +72,17 @@ void UdpBridgeDevice::close() {
   health_.store(Health::NotOpen, std::memory_order_relaxed);
 }
 
+RealtimeResult UdpBridgeDevice::receiverRealtime() const {
+  return {static_cast<RealtimeStatus>(receiverStatus_.load(std::memory_order_acquire)),
+          receiverNote_.load(std::memory_order_relaxed)};
+}
+
 void UdpBridgeDevice::receiveLoop() {
+  if (def_.receiverPriority > 0) {
+    const RealtimeResult r = requestFifoScheduling(def_.receiverPriority);
+    receiverNote_.store(r.note, std::memory_order_relaxed);
+    receiverStatus_.store(static_cast<int>(r.status), std::memory_order_release);
+  }
   std::uint8_t buffer[udp::kMaxDatagram];
   while (!stop_.load(std::memory_order_relaxed)) {
     UdpEndpoint from;

@@ -36,6 +36,7 @@
 
 #include "engine/haptics/HapticDevice.h"
 #include "engine/haptics/MonotonicClock.h"
+#include "engine/haptics/RealtimeThread.h"
 #include "engine/haptics/TripleBuffer.h"
 #include "engine/haptics/UdpProtocol.h"
 #include "engine/haptics/UdpSocket.h"
@@ -48,6 +49,10 @@ struct UdpBridgeDef {
   bool allowNonLoopback = false;     // required for any address outside 127.0.0.0/8
   double watchdog = 0.010;           // [s] without a good state -> error
   MonotonicClock clock = &monotonicNowNs;
+  // SCHED_FIFO priority of the receiver thread, when permitted (0: do not
+  // ask). Just below the servo loop's 80: a receiver starved by other work
+  // would look like a silent client and trip the watchdog.
+  int receiverPriority = 79;
   // The spec of the device behind the bridge: the client knows the hardware,
   // the level sets these to its limits. Defaults suit a Touch-class device.
   DeviceSpec spec{"udp bridge", 3.0, 1000.0, 0.1, true};
@@ -79,6 +84,8 @@ class UdpBridgeDevice final : public HapticDevice {
   const char* error() const override;
 
   std::uint16_t port() const { return socket_.localPort(); }
+  // What the scheduler granted the receiver thread (after open()).
+  RealtimeResult receiverRealtime() const;
   UdpBridgeCounters counters() const;
   udp::DecodeError lastDecodeError() const { return lastDecodeError_.load(std::memory_order_relaxed); }
   // Outside the loop: waits until a client has sent a good state.
@@ -102,6 +109,8 @@ class UdpBridgeDevice final : public HapticDevice {
   std::string openError_;
   std::thread receiver_;
   std::atomic<bool> stop_{false};
+  std::atomic<int> receiverStatus_{static_cast<int>(RealtimeStatus::NotRequested)};
+  std::atomic<const char*> receiverNote_{"real-time scheduling not requested"};
   TripleBuffer<Sample> samples_;
 
   // Receiver thread only.

@@ -72,8 +72,7 @@ TEST(MouseDeviceTest, BrokenPositionsNeverReachTheLoop) {
 // servo loop reads them, and no force reaches the mouse (it has none).
 TEST(MouseDeviceTest, AServoLoopDrivenByAUiThreadRendersNothing) {
   MouseDevice m;
-  ServoLoopDef def;
-  def.requestRealtime = false;
+  ServoLoopDef def;  // SCHED_FIFO when permitted: a starved loop would trip its overrun watchdog
   def.safety.engagement.rampTime = 0.05;
   ServoLoop loop(def, m);
   ServoCommand engage;

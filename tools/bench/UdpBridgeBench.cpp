@@ -51,6 +51,7 @@ void BM_UdpBridgeRoundTrip(benchmark::State& state) {
     options.centre = {0.0, 0.0, 0.04};  // on the mass point at rest, so the coupling engages
     options.circleRadius = 0.005;
     options.circleFrequency = 1.0;
+    options.realtimePriority = 70;  // as a real device's client would run
     std::atomic<bool> stopClient{false};
     hapticclient::ClientSummary summary;
     std::thread client([&] { summary = hapticclient::runClient(options, stopClient); });

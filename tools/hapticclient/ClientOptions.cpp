@@ -41,6 +41,8 @@ const char* clientUsage() {
          "  --centre X,Y,Z          where the hand starts and its circle begins [m] (default 0,0,0)\n"
          "  --circle-radius M       radius of the hand's intended circle (default 0: hold still)\n"
          "  --circle-frequency HZ   turns per second of that circle (default 0.5)\n"
+         "  --realtime-priority N   ask for SCHED_FIFO at N (1..99) so that other work cannot\n"
+         "                          starve the 1 kHz sends (default 0: normal scheduler)\n"
          "  --help                  this text\n";
 }
 
@@ -92,6 +94,9 @@ ParsedOptions parseClientOptions(const std::vector<std::string>& args) {
     } else if (flag == "--circle-frequency") {
       if (!number || !(x >= 0.0)) return bad("a frequency >= 0 in Hz");
       o.circleFrequency = x;
+    } else if (flag == "--realtime-priority") {
+      if (!number || x < 0 || x > 99 || x != std::floor(x)) return bad("an integer priority in 0..99");
+      o.realtimePriority = static_cast<int>(x);
     } else {
       p.error = "unknown option '" + flag + "' (see --help)";
       return p;

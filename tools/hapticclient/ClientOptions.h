@@ -23,6 +23,7 @@ struct ClientOptions {
   std::array<double, 3> centre{0.0, 0.0, 0.0};  // device frame [m]
   double circleRadius = 0.0;     // [m]
   double circleFrequency = 0.5;  // [Hz]
+  int realtimePriority = 0;      // SCHED_FIFO priority when permitted, 0: the normal scheduler
   bool help = false;
 };
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include "engine/haptics/RealtimeThread.h"
 #include "engine/haptics/ServoClock.h"
 #include "engine/haptics/SimulatedHandDevice.h"
 #include "engine/haptics/UdpProtocol.h"
@@ -94,6 +95,8 @@ ClientSummary runClient(const ClientOptions& o, const std::atomic<bool>& stop) {
   s.error = socket.bind(local);
   if (!s.error.empty()) return s;
 
+  if (o.realtimePriority > 0)
+    s.realtime = haptics::requestFifoScheduling(o.realtimePriority).status == haptics::RealtimeStatus::Fifo;
   SimulatedHandDevice hand(circleIntent(o), o.hand);
   haptics::SteadyServoClock clock;
   const auto periodNs = static_cast<std::int64_t>(std::llround(1e9 / o.rate));
@@ -148,6 +151,7 @@ void printSummary(const ClientSummary& s, std::ostream& out) {
       << "forces_lost " << s.forcesLost << "\n"
       << "states_answered " << s.statesAnswered << "\n"
       << "stale_forces " << s.staleForces << "\n"
+      << "realtime " << (s.realtime ? 1 : 0) << "\n"
       << "bridge_closed " << (s.bridgeClosed ? 1 : 0) << "\n"
       << "max_force_N " << s.maxForce << "\n"
       << "rtt_min_us " << s.rttMin * 1e6 << "\n"

@@ -29,6 +29,7 @@ struct ClientSummary {
   // Round trip: from sending a state to receiving the first force computed
   // from it [s]; includes the wait for the bridge's next servo tick.
   double rttMin = 0.0, rttMedian = 0.0, rttP99 = 0.0, rttMax = 0.0;
+  bool realtime = false;              // SCHED_FIFO was granted
   std::string error;                  // set when the client could not run
 };
 

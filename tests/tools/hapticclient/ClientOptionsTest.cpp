@@ -10,7 +10,8 @@ TEST(ClientOptionsTest, DefaultsAndEveryOption) {
   const ParsedOptions p = parseClientOptions({"--host", "127.0.0.2", "--port", "5000", "--duration", "2.5", "--rate",
                                               "500", "--hand-mass", "0.2", "--hand-stiffness", "400",
                                               "--hand-damping", "12", "--centre", "0.01,-0.02,0.04",
-                                              "--circle-radius", "0.005", "--circle-frequency", "2"});
+                                              "--circle-radius", "0.005", "--circle-frequency", "2",
+                                              "--realtime-priority", "70"});
   ASSERT_EQ(p.error, "");
   const ClientOptions& o = p.options;
   EXPECT_EQ(o.host, "127.0.0.2");
@@ -23,6 +24,7 @@ TEST(ClientOptionsTest, DefaultsAndEveryOption) {
   EXPECT_EQ(o.centre, (std::array<double, 3>{0.01, -0.02, 0.04}));
   EXPECT_EQ(o.circleRadius, 0.005);
   EXPECT_EQ(o.circleFrequency, 2.0);
+  EXPECT_EQ(o.realtimePriority, 70);
   EXPECT_TRUE(parseClientOptions({"--help"}).options.help);
 }
 
@@ -40,6 +42,7 @@ TEST(ClientOptionsTest, BadValuesNameTheFlagAndTheValue) {
       {{"--hand-stiffness", "nan"}, "--hand-stiffness needs a stiffness >= 0 in N/m, got 'nan'"},
       {{"--centre", "1,2"}, "--centre needs three numbers x,y,z in metres, got '1,2'"},
       {{"--centre", "1,2,3,4"}, "--centre needs three numbers x,y,z in metres, got '1,2,3,4'"},
+      {{"--realtime-priority", "100"}, "--realtime-priority needs an integer priority in 0..99, got '100'"},
       {{"--port"}, "--port needs a value"},
       {{"--speed", "3"}, "unknown option '--speed' (see --help)"},
       {{"stray"}, "unexpected argument 'stray'"},
