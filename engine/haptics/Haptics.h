@@ -3,23 +3,32 @@
 //
 // Owns: the device interface (HapticDevice, DeviceSpec) and the simple
 // devices (ScriptedDevice; SimulatedHandDevice, a spring-mass hand that
-// closes the loop in tests), the workspace mapping from device to scene,
+// closes the loop in tests), the devices that need no outside library
+// (UdpBridgeDevice and its wire format UdpProtocol, for real devices driven
+// by an external program; MouseDevice with PointerMapping; the pure
+// JoystickMapping; VelocityEstimator for position-only inputs), the
+// workspace mapping from device to scene,
 // safety on every tick (force clamp, force-rate limit, velocity guard,
 // engagement with ramp-in/out, watchdogs for device errors, stale data and
 // instability), and the 1 kHz servo loop (ServoLoop: pacing on absolute
 // deadlines, catch-up policy, timing statistics, the lock-free snapshot
 // buffer and command ring, the headless mode).
 //
-// Must not know: rendering, windows or SDL (devices that need SDL live
-// elsewhere and implement HapticDevice), Lua, files, levels, recordings.
-// Depends on engine/physics and the standard library (and the POSIX clock
-// and scheduler) only.
+// Must not know: rendering, windows or SDL (devices that need SDL live in
+// engine/haptics/devices, a library of their own, with the factory that
+// makes devices by name), Lua, files, levels, recordings.
+// Depends on engine/physics and the standard library (and the POSIX clock,
+// scheduler and, for the UDP bridge, sockets) only.
 
 #include "engine/haptics/DeviceSpec.h"
 #include "engine/haptics/EngagementRamp.h"
 #include "engine/haptics/ForceClamp.h"
 #include "engine/haptics/ForceSafety.h"
 #include "engine/haptics/HapticDevice.h"
+#include "engine/haptics/JoystickMapping.h"
+#include "engine/haptics/MonotonicClock.h"
+#include "engine/haptics/MouseDevice.h"
+#include "engine/haptics/PointerMapping.h"
 #include "engine/haptics/RealtimeThread.h"
 #include "engine/haptics/ScriptedDevice.h"
 #include "engine/haptics/ServoClock.h"
@@ -30,4 +39,8 @@
 #include "engine/haptics/SpscRing.h"
 #include "engine/haptics/TimingHistogram.h"
 #include "engine/haptics/TripleBuffer.h"
+#include "engine/haptics/UdpBridgeDevice.h"
+#include "engine/haptics/UdpProtocol.h"
+#include "engine/haptics/UdpSocket.h"
+#include "engine/haptics/VelocityEstimator.h"
 #include "engine/haptics/WorkspaceMapping.h"
