@@ -1,0 +1,59 @@
+-- Tutorial 1: tilt and return. A heavy shell (1 kg) and a light mass
+-- point (0.2 kg) make the hemisphere slow and forgiving: 1.5 cm of the mass
+-- point off centre tilts it by about 5 degrees. Checked with `hemiroll sim`:
+-- a proxy held at x = 1.5 cm gives u_o = -0.087 rad at rest; back at the
+-- centre, the hemisphere settles upright within 1.5 s (M3, kr 250, kv 10).
+
+local told_to_return = false  -- level state lives in locals of this file
+
+return {
+  name = "01 Tilt and return",
+  description = "Move the mass point about 1.5 cm towards +x: the hemisphere tilts and rolls a " ..
+    "little that way (u_o near -0.08 rad). Hold the tilt for half a second, then bring the " ..
+    "mass point back to the centre and let the hemisphere settle upright and still for 1 s. " ..
+    "Technique: move slowly; the spring between your hand and the mass point does the rest.",
+  author = "hemiroll",
+  difficulty = 1,
+  version = "1",
+
+  params = { R = 0.04, m_s = 1.0, m_p = 0.2, g = 9.81 },
+  force = { method = "M3", kr = 250, kv = 10, alpha = 2 },
+
+  task = {
+    stages = {
+      { name = "tilt towards +x",
+        targets = { u_co = { value = { -0.08, 0 }, tol = 0.03 } },
+        hold = 0.5 },
+      { name = "back upright and still",
+        targets = {
+          u_co = { value = { 0, 0 }, tol = 0.01 },
+          p = { value = { 0, 0 }, tol = 0.002 },
+          omega_norm = { value = 0, tol = 0.02 },
+        },
+        hold = 1.0 },
+    },
+    time_limit = 60,
+  },
+
+  score = function(s)
+    if not s.success then return 0 end
+    return math.floor(1000 * (1 - s.time / s.time_limit))
+  end,
+  medals = { bronze = 500, silver = 800, gold = 900 },  -- 30 s, 12 s, 6 s
+
+  scene = { contact_trace = true, plots = { "u_o", "x_p" }, record_rate = 100 },
+  callbacks = {
+    rate = 10,
+    on_start = function(state)
+      told_to_return = false
+      hemiroll.message("Tilt the hemisphere towards +x", 4)
+    end,
+    on_update = function(state)
+      if state.stage == 2 and not told_to_return then
+        told_to_return = true
+        hemiroll.message("Good. Now bring it back upright and still", 4)
+      end
+    end,
+    on_success = function(state) hemiroll.message("Well done!", 3) end,
+  },
+}

@@ -1,0 +1,41 @@
+-- Tutorial 2: roll a short distance. The same forgiving masses as tutorial
+-- 1. Rolling without slipping ties the contact point to the tilt: in a
+-- straight roll u_a = -R u_o, so 5 mm of travel needs a tilt of 0.125 rad,
+-- held by keeping the mass point about 2 cm off centre. (`hemiroll sim`: a
+-- proxy held at x = 1.5 cm gives u_a = 3.5 mm; the contact point grows
+-- with the offset.)
+
+return {
+  name = "02 Roll a short distance",
+  description = "Roll the contact point 5 mm along +x and keep the hemisphere still there for 2 s. " ..
+    "Technique: move the mass point slowly towards +x (about 2 cm) and wait; the hemisphere " ..
+    "rolls until it balances. Adjust a little at a time: more offset, more travel.",
+  author = "hemiroll",
+  difficulty = 1,
+  version = "1",
+
+  params = { R = 0.04, m_s = 1.0, m_p = 0.2, g = 9.81 },
+  force = { method = "M3", kr = 250, kv = 10, alpha = 2 },
+
+  task = {
+    targets = {
+      u_ca = { value = { 0.005, 0 }, tol = 0.0015 },
+      omega_norm = { value = 0, tol = 0.02 },
+      p_dot = { value = { 0, 0 }, tol = 0.003 },
+    },
+    hold = 2.0,
+    time_limit = 60,
+  },
+
+  score = function(s)
+    if not s.success then return 0 end
+    return math.floor(1000 * (1 - s.time / s.time_limit))
+  end,
+  medals = { bronze = 500, silver = 800, gold = 900 },
+
+  scene = { contact_trace = true, plots = { "u_a", "x_p" }, record_rate = 100 },
+  callbacks = {
+    rate = 10,
+    on_start = function(state) hemiroll.message("Roll the contact point 5 mm towards +x", 4) end,
+  },
+}

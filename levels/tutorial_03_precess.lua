@@ -1,0 +1,61 @@
+-- Tutorial 3: precess. Keep the hemisphere tilted and carry the mass point
+-- around the centre: the tilt direction turns and the contact point runs
+-- round a small circle. Rolling round a closed loop does not bring the
+-- hemisphere back as it was: it comes back turned about the vertical (psi).
+-- That turn is the precession the paper's subjects used (Sec. 4.2).
+-- `hemiroll sim`, same masses: the mass point circled at 1.8 cm, 8 s per
+-- turn, counter-clockwise, runs the contact round a 3.8 mm circle and turns
+-- psi by about -0.11 rad per turn.
+
+local r = 0.0035  -- gate radius on the plane [m]
+local gate = 0.0015
+local last_stage = nil  -- level state lives in locals of this file
+
+return {
+  name = "03 Precess",
+  description = "Tilt the hemisphere (mass point about 1.8 cm off centre) and carry the mass point " ..
+    "counter-clockwise round the centre: the contact point passes four gates on a 3.5 mm circle " ..
+    "(+x, +y, -x, -y). Then bring it back upright and still: it has turned about the vertical. " ..
+    "Technique: a steady circle, about 8 s per turn.",
+  author = "hemiroll",
+  difficulty = 2,
+  version = "1",
+
+  params = { R = 0.04, m_s = 1.0, m_p = 0.2, g = 9.81 },
+  force = { method = "M3", kr = 250, kv = 10, alpha = 2 },
+
+  task = {
+    stages = {
+      { name = "gate +x", targets = { u_ca = { value = { r, 0 }, tol = gate } } },
+      { name = "gate +y", targets = { u_ca = { value = { 0, r }, tol = gate } } },
+      { name = "gate -x", targets = { u_ca = { value = { -r, 0 }, tol = gate } } },
+      { name = "gate -y", targets = { u_ca = { value = { 0, -r }, tol = gate } } },
+      { name = "upright, turned",
+        targets = {
+          u_co = { value = { 0, 0 }, tol = 0.03 },
+          omega_norm = { value = 0, tol = 0.03 },
+          psi = { value = -0.15, tol = 0.1 },
+        },
+        hold = 1.0 },
+    },
+    time_limit = 120,
+  },
+
+  score = function(s)
+    if not s.success then return 100 * s.stages_passed end
+    return math.floor(500 + 500 * (1 - s.time / s.time_limit))
+  end,
+  medals = { bronze = 500, silver = 700, gold = 850 },
+
+  scene = { contact_trace = true, plots = { "u_a", "v_a", "psi" }, record_rate = 100 },
+  callbacks = {
+    rate = 10,
+    on_start = function(state) last_stage = nil end,
+    on_update = function(state)
+      if state.stage ~= last_stage then
+        if last_stage then hemiroll.message("Gate " .. last_stage .. " passed", 2) end
+        last_stage = state.stage
+      end
+    end,
+  },
+}

@@ -1,0 +1,42 @@
+-- Tutorial 4: stop on target. The paper's task (paper_reaching.lua) in
+-- miniature, with gentler masses (m_s = 0.5 kg, m_p = 0.5 kg) and tolerances
+-- about twice the paper's. The target is not reachable by a straight roll:
+-- with the mass point within 8 mm of the centre the hemisphere cannot stay
+-- tilted enough to hold the contact point 1 cm away, so the contact point
+-- must be walked there by precession (tutorial 3) and the hemisphere
+-- brought upright on the spot.
+
+local pi = math.pi
+
+return {
+  name = "04 Stop on target",
+  description = "Bring the contact point 1 cm along +x and stop there, nearly upright and at rest, " ..
+    "mass point near the centre. Technique: tilt towards the target, circle the mass point so " ..
+    "the contact point spirals over, then calm everything down. The paper's task, gentler.",
+  author = "hemiroll",
+  difficulty = 3,
+  version = "1",
+
+  params = { R = 0.04, m_s = 0.5, m_p = 0.5, g = 9.81 },
+  force = { method = "M3", kr = 250, kv = 10, alpha = 2 },
+
+  task = {
+    targets = {
+      u_ca = { value = { 0.01, 0 }, tol = 0.004 },
+      p = { value = { 0, 0 }, tol = 0.008 },
+      p_dot = { value = { 0, 0 }, tol = 0.01 },
+      omega = { value = { 0, 0, 0 }, tol = 0.05 },
+      u_co = { value = { 0, 0 }, tol = pi / 9 },
+    },
+    hold = 0.5,
+    time_limit = 240,
+  },
+
+  score = function(s)
+    if not s.success then return 0 end
+    return math.floor(1000 * (1 - s.time / s.time_limit))
+  end,
+  medals = { bronze = 250, silver = 600, gold = 800 },  -- 180 s, 96 s, 48 s
+
+  scene = { contact_trace = true, plots = { "u_a", "v_a" }, record_rate = 100 },
+}
