@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "game/commands/ExitCode.h"
+#include "game/commands/RunCommand.h"
 #include "game/commands/SimCommand.h"
 #include "game/commands/VersionCommand.h"
 
@@ -20,6 +21,7 @@ struct CommandEntry {
 
 constexpr CommandEntry kCommands[] = {
     {"sim", "run a scenario's physics headless and write the trajectory as CSV", hemiroll::game::runSimCommand},
+    {"run", "play a level with a bot (headless) and print the result as one JSON line", hemiroll::game::runRunCommand},
     {"version", "print the version", hemiroll::game::runVersionCommand},
 };
 

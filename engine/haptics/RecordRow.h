@@ -1,7 +1,8 @@
 #pragma once
 // What the servo loop hands to a recorder: one RecordRow every recordEvery
-// ticks (the history unit's time series) and one TickInput every tick (the
-// device reading, for replays). Plain values only, so that both are trivially
+// ticks (the history unit's time series), one TickInput every tick (the
+// device reading and the tick's lateness) and one AppliedCommand per command
+// the tick applied (these two make a replay). Plain values only, so that both are trivially
 // copyable and cross to the recorder's thread through an SpscRing as bytes.
 // The rings are owned by the caller (engine/record or a test) and only
 // pointed to by ServoLoopDef; the tick pushes and never waits: a full ring
@@ -12,6 +13,7 @@
 
 #include "engine/haptics/EngagementRamp.h"
 #include "engine/haptics/ForceSafety.h"
+#include "engine/haptics/ServoCommand.h"
 #include "engine/haptics/ServoSnapshot.h"
 #include "engine/haptics/SpscRing.h"
 #include "engine/physics/DomainEvents.h"
@@ -39,20 +41,30 @@ struct RecordRow {
 };
 
 // The device reading one tick used (what HapticDevice::read returned), in
-// device coordinates: enough to replay the tick exactly.
+// device coordinates, and the lateness the tick was given (the loop-overrun
+// watchdog reads it): with the commands, enough to replay the tick exactly.
 struct TickInput {
   std::uint64_t tick = 0;            // the tick that read it (the first tick is 1)
   Triple position{};                 // [m]
   Triple velocity{};                 // [m/s]
   std::uint32_t buttons = 0;
   bool fresh = true;
+  std::int64_t latenessNs = 0;       // [ns], 0 headless
+};
+
+// A command as the loop applied it, at the start of `tick`.
+struct AppliedCommand {
+  std::uint64_t tick = 0;
+  ServoCommand command;
 };
 
 // 4096 rows: 4 s of slack at 1 kHz recording (41 s at 100 Hz) before a
 // stalled writer costs a row; about 1.1 MB, allocated once by the owner.
 using RecordRing = SpscRing<RecordRow, 4096>;
-// 8192 inputs: 8 s of slack at 1 kHz; about 0.5 MB.
+// 8192 inputs: 8 s of slack at 1 kHz; about 0.6 MB.
 using InputRing = SpscRing<TickInput, 8192>;
+// Commands are rare (a few per trial); 256 is four command rings' worth.
+using CommandRing = SpscRing<AppliedCommand, 256>;
 
 inline RecordRow recordRowOf(const ServoSnapshot& s) {
   RecordRow r;

@@ -133,6 +133,8 @@ void ServoLoop::drainCommands() {
 }
 
 void ServoLoop::apply(const ServoCommand& c) {
+  if (def_.commandRing != nullptr && !def_.commandRing->push(AppliedCommand{ticks_.load(std::memory_order_relaxed) + 1, c}))
+    inputDropped_.store(inputDropped_.load(std::memory_order_relaxed) + 1, std::memory_order_relaxed);
   switch (c.kind) {
     case ServoCommandKind::Engage: safety_.engage(); break;
     case ServoCommandKind::Disengage: safety_.disengage(); break;
@@ -159,7 +161,7 @@ void ServoLoop::tick(std::int64_t latenessNs) {
   // Device -> scene; the proxy is held for the whole step (zero-order hold).
   const DeviceReading reading = device_.read(stepper_.time());
   const char* deviceError = device_.error();
-  if (def_.inputRing != nullptr) logInput(reading);
+  if (def_.inputRing != nullptr) logInput(reading, latenessNs);
   proxy_.position = def_.mapping.positionToScene(reading.position);
   proxy_.velocity = def_.mapping.velocityToScene(reading.velocity);
 
@@ -249,13 +251,14 @@ void ServoLoop::publish(const physics::CouplingForces& forces, double distance, 
     recordDropped_.store(recordDropped_.load(std::memory_order_relaxed) + 1, std::memory_order_relaxed);
 }
 
-void ServoLoop::logInput(const DeviceReading& reading) {
+void ServoLoop::logInput(const DeviceReading& reading, std::int64_t latenessNs) {
   TickInput in;
   in.tick = ticks_.load(std::memory_order_relaxed) + 1;  // the tick now running
   in.position = toTriple(reading.position);
   in.velocity = toTriple(reading.velocity);
   in.buttons = reading.buttons;
   in.fresh = reading.fresh;
+  in.latenessNs = latenessNs;
   if (!def_.inputRing->push(in))
     inputDropped_.store(inputDropped_.load(std::memory_order_relaxed) + 1, std::memory_order_relaxed);
 }

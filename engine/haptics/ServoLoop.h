@@ -72,6 +72,7 @@ struct ServoLoopDef {
   RecordRing* recordRing = nullptr;
   int recordEvery = 10;                  // ticks per recorded row: 10 = 100 Hz at 1 kHz, 1 = every tick
   InputRing* inputRing = nullptr;        // every tick's device reading (replays)
+  CommandRing* commandRing = nullptr;    // every command applied (replays)
 };
 
 // The loop's timing in one struct, for a status line or a recording's
@@ -119,7 +120,7 @@ class ServoLoop {
   std::uint64_t ticks() const { return ticks_.load(std::memory_order_relaxed); }
   std::uint64_t missedTicks() const { return missed_.load(std::memory_order_relaxed); }
   std::uint64_t wakeups() const { return wakeups_.load(std::memory_order_relaxed); }
-  // Rows and inputs lost to a full recording ring since construction.
+  // Rows, and inputs or commands, lost to a full recording ring since construction.
   std::uint64_t recordDropped() const { return recordDropped_.load(std::memory_order_relaxed); }
   std::uint64_t inputDropped() const { return inputDropped_.load(std::memory_order_relaxed); }
   RealtimeResult realtime() const;
@@ -134,7 +135,7 @@ class ServoLoop {
   void drainCommands();
   void apply(const ServoCommand& c);
   void publish(const physics::CouplingForces& forces, double distance, double injected, std::int64_t latenessNs);
-  void logInput(const DeviceReading& reading);
+  void logInput(const DeviceReading& reading, std::int64_t latenessNs);
 
   ServoLoopDef def_;
   HapticDevice& device_;

@@ -19,13 +19,14 @@
 //   record::TrialMeta meta;                  // ids, level name + hash, params,
 //   meta.trialId = "trial-003"; ...          // coupling, device, rates
 //   auto rows = std::make_unique<haptics::RecordRing>();
-//   auto inputs = std::make_unique<haptics::InputRing>();
+//   auto inputs = std::make_unique<haptics::InputRing>();      // optional:
+//   auto commands = std::make_unique<haptics::CommandRing>();  // replay log
 //   def.recordRing = rows.get(); def.recordEvery = meta.recordEvery;
-//   def.inputRing = inputs.get();            // optional: replay log
+//   def.inputRing = inputs.get(); def.commandRing = commands.get();
 //   record::TrialRecorder rec = session.beginTrial(meta);
 //   record::ReplayLogger replay(session.replayPath(meta.trialId), {.dt = def.period, ...});
 //   haptics::ServoLoop loop(def, device);
-//   rec.startWriter(*rows); replay.startWriter(*inputs);
+//   rec.startWriter(*rows); replay.startWriter(*inputs, commands.get());
 //   loop.start(); ... loop.stop();
 //   record::TrialEnd end{.outcome = "success", .reason = "reached the goal",
 //                        .hasTiming = true, .timing = loop.timingSummary(),
@@ -37,6 +38,8 @@
 //
 // Headless runs skip the threads: rec.push(row) (or rec.drain(*rows) between
 // runHeadless chunks) on the calling thread; the same formatting path.
+// Replaying: log = ReplayReader::load(path); a ServoLoop built from the same
+// level with a haptics::ReplayDevice(log.inputs); ReplayRunner::run(loop, log).
 
 #include "engine/record/BidsExport.h"
 #include "engine/record/CsvRowFormat.h"
@@ -46,6 +49,7 @@
 #include "engine/record/ReplayFormat.h"
 #include "engine/record/ReplayLogger.h"
 #include "engine/record/ReplayReader.h"
+#include "engine/record/ReplayRunner.h"
 #include "engine/record/ResultsFile.h"
 #include "engine/record/Sidecar.h"
 #include "engine/record/TrialMeta.h"

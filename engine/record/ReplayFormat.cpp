@@ -52,6 +52,8 @@ ReplayHeaderBytes encodeReplayHeader(const ReplayHeader& h) {
   putU64(&b[56], h.checksum);
   putText(&b[64], kReplaySoftwareVersionSize, h.softwareVersion);
   putText(&b[96], kReplayLevelHashSize, h.levelHash);
+  putU64(&b[224], h.commandCount);
+  putU32(&b[232], static_cast<std::uint32_t>(kReplayCommandSize));
   return b;
 }
 
@@ -62,8 +64,9 @@ std::string decodeReplayHeader(const ReplayHeaderBytes& b, ReplayHeader& h) {
   if (h.formatVersion != kReplayFormatVersion)
     return "replay format version " + std::to_string(h.formatVersion) + ", this build reads version " +
            std::to_string(kReplayFormatVersion);
-  if (getU32(&b[12]) != kReplayHeaderSize || getU32(&b[16]) != kReplayRecordSize)
-    return "unexpected header or record size (bytes 12-19)";
+  if (getU32(&b[12]) != kReplayHeaderSize || getU32(&b[16]) != kReplayRecordSize ||
+      getU32(&b[232]) != kReplayCommandSize)
+    return "unexpected header or record sizes (bytes 12-19, 232-235)";
   h.flags = getU32(&b[20]);
   h.dt = getF64(&b[24]);
   h.seed = getU64(&b[32]);
@@ -72,6 +75,7 @@ std::string decodeReplayHeader(const ReplayHeaderBytes& b, ReplayHeader& h) {
   h.checksum = getU64(&b[56]);
   h.softwareVersion = getText(&b[64], kReplaySoftwareVersionSize);
   h.levelHash = getText(&b[96], kReplayLevelHashSize);
+  h.commandCount = getU64(&b[224]);
   return {};
 }
 
@@ -82,6 +86,7 @@ ReplayRecordBytes encodeReplayRecord(const haptics::TickInput& in) {
   for (int i = 0; i < 3; ++i) putF64(&b[32 + 8 * i], in.velocity[static_cast<std::size_t>(i)]);
   putU32(&b[56], in.buttons);
   b[60] = in.fresh ? 1 : 0;
+  putU64(&b[64], static_cast<std::uint64_t>(in.latenessNs));
   return b;
 }
 
@@ -92,7 +97,42 @@ haptics::TickInput decodeReplayRecord(const ReplayRecordBytes& b) {
   for (int i = 0; i < 3; ++i) in.velocity[static_cast<std::size_t>(i)] = getF64(&b[32 + 8 * i]);
   in.buttons = getU32(&b[56]);
   in.fresh = b[60] != 0;
+  in.latenessNs = static_cast<std::int64_t>(getU64(&b[64]));
   return in;
+}
+
+ReplayCommandBytes encodeReplayCommand(const haptics::AppliedCommand& a) {
+  ReplayCommandBytes b{};
+  const haptics::ServoCommand& c = a.command;
+  putU64(&b[0], a.tick);
+  putU32(&b[8], static_cast<std::uint32_t>(c.kind));
+  putU32(&b[12], static_cast<std::uint32_t>(c.coupling.method));
+  putF64(&b[16], c.coupling.stiffness);
+  putF64(&b[24], c.coupling.damping);
+  putF64(&b[32], c.coupling.alpha);
+  b[40] = c.coupling.visualOnly ? 1 : 0;
+  for (std::size_t i = 0; i < 12; ++i) putF64(&b[48 + 8 * i], c.state[i]);
+  putF64(&b[144], c.time);
+  return b;
+}
+
+std::string decodeReplayCommand(const ReplayCommandBytes& b, haptics::AppliedCommand& a) {
+  const std::uint32_t kind = getU32(&b[8]), method = getU32(&b[12]);
+  if (kind > static_cast<std::uint32_t>(haptics::ServoCommandKind::ClearFault))
+    return "unknown command kind " + std::to_string(kind);
+  if (method > static_cast<std::uint32_t>(physics::ForceMethod::M3)) return "unknown force method " + std::to_string(method);
+  if (b[40] > 1) return "bad visualOnly byte";
+  haptics::ServoCommand& c = a.command;
+  a.tick = getU64(&b[0]);
+  c.kind = static_cast<haptics::ServoCommandKind>(kind);
+  c.coupling.method = static_cast<physics::ForceMethod>(method);
+  c.coupling.stiffness = getF64(&b[16]);
+  c.coupling.damping = getF64(&b[24]);
+  c.coupling.alpha = getF64(&b[32]);
+  c.coupling.visualOnly = b[40] != 0;
+  for (std::size_t i = 0; i < 12; ++i) c.state[i] = getF64(&b[48 + 8 * i]);
+  c.time = getF64(&b[144]);
+  return {};
 }
 
 std::uint64_t fnv1a(const unsigned char* data, std::size_t size, std::uint64_t hash) {

@@ -1,5 +1,7 @@
 #include "engine/record/ReplayLogger.h"
 
+#include <vector>
+
 #include "engine/record/DurableFile.h"
 #include "engine/record/RecordError.h"
 #include "engine/record/TrialMeta.h"
@@ -22,7 +24,12 @@ struct ReplayLogger::Impl {
     ++header.tickCount;
   }
 
-  std::size_t drain(haptics::InputRing& ring) {
+  void write(const haptics::AppliedCommand& c) { commands.push_back(encodeReplayCommand(c)); }
+
+  std::size_t drain(haptics::InputRing& ring, haptics::CommandRing* commandRing) {
+    // Commands first: one applied at tick k was pushed before tick k's input.
+    haptics::AppliedCommand c;
+    while (commandRing != nullptr && commandRing->pop(c)) write(c);
     std::size_t n = 0;
     haptics::TickInput in;
     while (ring.pop(in)) {
@@ -36,6 +43,7 @@ struct ReplayLogger::Impl {
   ReplayHeader header;
   double pollInterval;
   DurableFile file;
+  std::vector<ReplayCommandBytes> commands;
   std::string problem;
   bool finished = false;
   WriterThread writer;  // last: joined first
@@ -48,6 +56,7 @@ ReplayLogger::ReplayLogger(const std::filesystem::path& path, const ReplayHeader
   h.tickCount = 0;
   h.firstTick = 1;
   h.checksum = kFnvOffset;
+  h.commandCount = 0;
   if (h.softwareVersion.empty()) h.softwareVersion = softwareVersion();
   if (h.softwareVersion.size() >= kReplaySoftwareVersionSize || h.levelHash.size() >= kReplayLevelHashSize)
     throw RecordError(path.string() + ": software version or level hash too long for the replay header");
@@ -71,12 +80,15 @@ ReplayLogger& ReplayLogger::operator=(ReplayLogger&& other) noexcept {
 }
 
 void ReplayLogger::push(const haptics::TickInput& in) { impl_->write(in); }
+void ReplayLogger::push(const haptics::AppliedCommand& command) { impl_->write(command); }
 
-std::size_t ReplayLogger::drain(haptics::InputRing& ring) { return impl_->drain(ring); }
+std::size_t ReplayLogger::drain(haptics::InputRing& inputs, haptics::CommandRing* commands) {
+  return impl_->drain(inputs, commands);
+}
 
-void ReplayLogger::startWriter(haptics::InputRing& ring) {
+void ReplayLogger::startWriter(haptics::InputRing& inputs, haptics::CommandRing* commands) {
   Impl* impl = impl_.get();
-  impl->writer.start([impl, &ring] { impl->drain(ring); }, impl->pollInterval);
+  impl->writer.start([impl, &inputs, commands] { impl->drain(inputs, commands); }, impl->pollInterval);
 }
 
 void ReplayLogger::stopWriter() { impl_->writer.stop(); }
@@ -89,6 +101,11 @@ void ReplayLogger::finish(std::uint64_t droppedInputs) {
     impl_->problem = std::to_string(droppedInputs) + " inputs were lost (the input ring overflowed)";
   // The complete flag only when every tick is there: a replay with a hole
   // cannot reproduce the run, and the reader refuses it.
+  for (const ReplayCommandBytes& c : impl_->commands) {
+    impl_->header.checksum = fnv1a(c.data(), c.size(), impl_->header.checksum);
+    impl_->file.write(std::string_view(reinterpret_cast<const char*>(c.data()), c.size()));
+  }
+  impl_->header.commandCount = impl_->commands.size();
   if (impl_->problem.empty()) impl_->header.flags |= kReplayComplete;
   const ReplayHeaderBytes bytes = encodeReplayHeader(impl_->header);
   impl_->file.writeAt(0, bytes.data(), bytes.size());

@@ -1,9 +1,11 @@
 #pragma once
-// Writes a replay log (ReplayFormat.h): the device reading of every tick,
-// taken from the servo loop's InputRing by a writer thread (or pushed by the
-// calling thread in headless runs), so the tick itself only copies 64 bytes
-// into a preallocated ring. finish() rewrites the header with the count, the
-// checksum and the complete flag. Ticks must arrive consecutively: a gap (a
+// Writes a replay log (ReplayFormat.h): the device reading and lateness of
+// every tick and every command applied, taken from the servo loop's
+// InputRing and CommandRing by a writer thread (or pushed by the calling
+// thread in headless runs), so the tick itself only copies a few bytes into
+// preallocated rings. Inputs stream to the file as they come; commands (a
+// few per trial) are kept and written after them by finish(), which then
+// rewrites the header with the counts, the checksum and the complete flag. Ticks must arrive consecutively: a gap (a
 // full ring dropped inputs) makes the log unusable for a replay, and finish()
 // says so (the file is then left without the complete flag).
 
@@ -27,8 +29,10 @@ class ReplayLogger {
   ReplayLogger& operator=(ReplayLogger&&) noexcept;
 
   void push(const haptics::TickInput& in);
-  std::size_t drain(haptics::InputRing& ring);
-  void startWriter(haptics::InputRing& ring);
+  void push(const haptics::AppliedCommand& command);
+  // Pops and writes what the rings hold now; returns how many inputs.
+  std::size_t drain(haptics::InputRing& inputs, haptics::CommandRing* commands = nullptr);
+  void startWriter(haptics::InputRing& inputs, haptics::CommandRing* commands = nullptr);
   void stopWriter();
   // droppedInputs: ServoLoop::inputDropped(). Throws RecordError when the log
   // is unusable (inputs lost, a tick out of order, an I/O error).

@@ -22,10 +22,13 @@ ReplayLog ReplayReader::load(const std::filesystem::path& path) {
   if ((h.flags & kReplayComplete) == 0)
     throw RecordError(where + "the log was never finished (an interrupted run, or inputs were lost)");
   const std::size_t body = bytes.size() - kReplayHeaderSize;
-  if (body % kReplayRecordSize != 0 || body / kReplayRecordSize != h.tickCount)
+  // Both counts are bounded by the file's size before they are multiplied.
+  if (h.tickCount > body / kReplayRecordSize || h.commandCount > body / kReplayCommandSize ||
+      h.tickCount * kReplayRecordSize + h.commandCount * kReplayCommandSize != body)
     throw RecordError(where + "truncated or padded: the header announces " + std::to_string(h.tickCount) +
-                      " records, the file holds " + std::to_string(body) + " bytes of records (" +
-                      std::to_string(kReplayRecordSize) + " each)");
+                      " inputs of " + std::to_string(kReplayRecordSize) + " bytes and " +
+                      std::to_string(h.commandCount) + " commands of " + std::to_string(kReplayCommandSize) +
+                      " bytes, the file holds " + std::to_string(body) + " bytes after the header");
   const auto* data = reinterpret_cast<const unsigned char*>(bytes.data()) + kReplayHeaderSize;
   if (fnv1a(data, body, kFnvOffset) != h.checksum)
     throw RecordError(where + "the records fail the checksum (the file is corrupt)");
@@ -39,6 +42,21 @@ ReplayLog ReplayReader::load(const std::filesystem::path& path) {
                         std::to_string(kReplayHeaderSize + k * kReplayRecordSize) + "): tick " +
                         std::to_string(in.tick) + " out of sequence or bad flag byte");
     log.inputs.push_back(in);
+  }
+  const unsigned char* commands = data + h.tickCount * kReplayRecordSize;
+  for (std::uint64_t k = 0; k < h.commandCount; ++k) {
+    ReplayCommandBytes rec;
+    std::memcpy(rec.data(), commands + k * kReplayCommandSize, rec.size());
+    haptics::AppliedCommand c;
+    std::string problem = decodeReplayCommand(rec, c);
+    if (problem.empty() && (c.tick < h.firstTick || c.tick >= h.firstTick + h.tickCount ||
+                            (!log.commands.empty() && c.tick < log.commands.back().tick)))
+      problem = "tick " + std::to_string(c.tick) + " out of order or outside the logged ticks";
+    if (!problem.empty())
+      throw RecordError(where + "command " + std::to_string(k) + " (byte " +
+                        std::to_string(kReplayHeaderSize + h.tickCount * kReplayRecordSize + k * kReplayCommandSize) +
+                        "): " + problem);
+    log.commands.push_back(c);
   }
   return log;
 }

@@ -1,8 +1,8 @@
 #pragma once
 // Loads a replay log (ReplayFormat.h) for ReplayDevice. A file that is not a
 // replay, has another format version, is truncated, was never finished, or
-// whose records fail the checksum or skip a tick, is a RecordError naming the
-// file and the byte offset or record.
+// whose records fail the checksum, skip a tick or hold an unknown command, is
+// a RecordError naming the file and the byte offset or record.
 
 #include <filesystem>
 #include <vector>
@@ -15,6 +15,7 @@ namespace hemiroll::record {
 struct ReplayLog {
   ReplayHeader header;
   std::vector<haptics::TickInput> inputs;
+  std::vector<haptics::AppliedCommand> commands;  // in the order applied
 };
 
 class ReplayReader {

@@ -48,6 +48,7 @@ TEST(ReplayFormatTest, RecordsRoundTripBitForBit) {
   in.velocity = {1e300, -1.0 / 3.0, 42.0};
   in.buttons = 0x80000001u;
   in.fresh = false;
+  in.latenessNs = -3;
   const ReplayRecordBytes b = encodeReplayRecord(in);
   EXPECT_EQ(b[56], 0x01);
   EXPECT_EQ(b[59], 0x80);
@@ -57,6 +58,30 @@ TEST(ReplayFormatTest, RecordsRoundTripBitForBit) {
   EXPECT_EQ(std::memcmp(back.velocity.data(), in.velocity.data(), sizeof in.velocity), 0);
   EXPECT_EQ(back.buttons, in.buttons);
   EXPECT_EQ(back.fresh, false);
+  EXPECT_EQ(back.latenessNs, -3);
+}
+
+TEST(ReplayFormatTest, CommandsRoundTripBitForBit) {
+  haptics::AppliedCommand a;
+  a.tick = 77;
+  a.command.kind = haptics::ServoCommandKind::ResetState;
+  a.command.coupling.method = physics::ForceMethod::M1;
+  a.command.coupling.stiffness = 0.1 + 0.2;
+  a.command.coupling.visualOnly = true;
+  for (std::size_t i = 0; i < 12; ++i) a.command.state[i] = -1.0 / static_cast<double>(i + 3);
+  a.command.time = 12.25;
+  ReplayCommandBytes b = encodeReplayCommand(a);
+  haptics::AppliedCommand back;
+  ASSERT_EQ(decodeReplayCommand(b, back), "");
+  EXPECT_EQ(back.tick, 77u);
+  EXPECT_EQ(back.command.kind, a.command.kind);
+  EXPECT_EQ(back.command.coupling.method, physics::ForceMethod::M1);
+  EXPECT_EQ(std::bit_cast<std::uint64_t>(back.command.coupling.stiffness), std::bit_cast<std::uint64_t>(0.1 + 0.2));
+  EXPECT_TRUE(back.command.coupling.visualOnly);
+  EXPECT_EQ(std::memcmp(back.command.state.data(), a.command.state.data(), sizeof a.command.state), 0);
+  EXPECT_EQ(back.command.time, 12.25);
+  b[8] = 200;  // no such command kind
+  EXPECT_EQ(decodeReplayCommand(b, back), "unknown command kind 200");
 }
 
 TEST(ReplayFormatTest, WrongMagicOrVersionIsNamed) {

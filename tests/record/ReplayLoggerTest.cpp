@@ -2,17 +2,19 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <memory>
+#include <thread>
 
 #include "engine/haptics/ReplayDevice.h"
 #include "engine/haptics/ServoLoop.h"
 #include "engine/haptics/SimulatedHandDevice.h"
-#include "engine/record/DurableFile.h"
 #include "engine/record/RecordError.h"
 #include "engine/record/RecordingReader.h"
 #include "engine/record/ReplayReader.h"
+#include "engine/record/ReplayRunner.h"
 #include "engine/record/TrialRecorder.h"
 #include "tests/record/support/RecordRows.h"
 #include "tests/support/TempDirectory.h"
@@ -24,7 +26,6 @@ using haptics::Vec3;
 
 constexpr double kRadius = 0.04;  // default hemisphere: the mass point rests at (0, 0, R)
 constexpr double kPi = 3.141592653589793;
-constexpr long kTicks = 3000;     // 3 s at 1 kHz: engagement, ramp, coupled motion
 
 // The hand means to circle 5 mm about the mass point's rest position.
 haptics::SimulatedHandDevice::Intent circling(double t) {
@@ -33,82 +34,153 @@ haptics::SimulatedHandDevice::Intent circling(double t) {
           Vec3(r * w * std::cos(w * t), r * w * std::sin(w * t), 0.0)};
 }
 
-struct RecordedRun {
-  physics::ForceDrivenState state;
-  std::filesystem::path csv;
-  std::uint64_t dropped = 0;
-};
-
-// A headless run of the loop with `device`, recording every tick's row (and
-// the inputs, when `replayPath` is given) by draining the rings between
-// chunks of ticks, as a writer thread would.
-RecordedRun record(haptics::HapticDevice& device, const std::filesystem::path& dir, const std::string& trialId,
-           const std::filesystem::path& replayPath = {}) {
-  auto rows = std::make_unique<haptics::RecordRing>();
-  auto inputs = std::make_unique<haptics::InputRing>();
-  haptics::ServoLoopDef def;
-  def.requestRealtime = false;
-  def.recordRing = rows.get();
-  def.recordEvery = 1;
-  def.inputRing = inputs.get();
-  TrialMeta meta;
-  meta.trialId = trialId;
-  meta.recordEvery = 1;
-  TrialRecorder rec(dir, meta);
-  std::unique_ptr<ReplayLogger> logger;
-  ReplayHeader header;
-  header.levelHash = "test-level";
-  header.seed = 99;
-  if (!replayPath.empty()) logger = std::make_unique<ReplayLogger>(replayPath, header);
-  haptics::ServoLoop loop(def, device);
-  haptics::ServoCommand engage;
-  engage.kind = haptics::ServoCommandKind::Engage;
-  loop.post(engage);
-  for (long done = 0; done < kTicks; done += 100) {
-    loop.runHeadless(100);
-    rec.drain(*rows);
-    haptics::TickInput in;
-    if (logger) logger->drain(*inputs);
-    else
-      while (inputs->pop(in)) {
-      }
-  }
-  rec.finish(TrialEnd{});
-  if (logger) logger->finish(loop.inputDropped());
-  return {loop.state(), rec.csvPath(), loop.recordDropped() + loop.inputDropped()};
+haptics::ServoCommand command(haptics::ServoCommandKind kind) {
+  haptics::ServoCommand c;
+  c.kind = kind;
+  return c;
 }
 
-TEST(ReplayLoggerTest, AReplayReproducesTheRunBitForBit) {
+// A gain change mid-run (M3, stiffer than the default 250 N/m; softer
+// gains let this hand lose the mass point off the face).
+haptics::ServoCommand stiffer() {
+  haptics::ServoCommand c = command(haptics::ServoCommandKind::SetCoupling);
+  c.coupling.stiffness = 300.0;
+  return c;
+}
+
+// Rings for one loop; every row recorded (recordEvery = 1).
+struct Rings {
+  std::unique_ptr<haptics::RecordRing> rows = std::make_unique<haptics::RecordRing>();
+  std::unique_ptr<haptics::InputRing> inputs = std::make_unique<haptics::InputRing>();
+  std::unique_ptr<haptics::CommandRing> commands = std::make_unique<haptics::CommandRing>();
+
+  haptics::ServoLoopDef def(bool logInputs) const {
+    haptics::ServoLoopDef d;
+    d.requestRealtime = false;
+    d.recordRing = rows.get();
+    d.recordEvery = 1;
+    if (logInputs) {
+      d.inputRing = inputs.get();
+      d.commandRing = commands.get();
+    }
+    return d;
+  }
+};
+
+TrialRecorder recorder(const std::filesystem::path& dir, const std::string& id) {
+  TrialMeta meta;
+  meta.trialId = id;
+  meta.recordEvery = 1;
+  return TrialRecorder(dir, meta);
+}
+
+ReplayHeader header() {
+  ReplayHeader h;
+  h.levelHash = "test-level";
+  h.seed = 99;
+  return h;
+}
+
+// Replays `log` headless into <dir>/<id>.csv; returns the end state.
+physics::ForceDrivenState replay(const ReplayLog& log, const std::filesystem::path& dir, const std::string& id) {
+  Rings rings;
+  haptics::ReplayDevice device(log.inputs);
+  haptics::ServoLoop loop(rings.def(false), device);
+  TrialRecorder rec = recorder(dir, id);
+  rec.startWriter(*rings.rows);
+  EXPECT_EQ(ReplayRunner::run(loop, log), log.inputs.size());
+  EXPECT_EQ(device.error(), nullptr);
+  rec.finish(TrialEnd{});
+  EXPECT_EQ(loop.recordDropped(), 0u);
+  return loop.state();
+}
+
+void expectSameRows(const std::filesystem::path& a, const std::filesystem::path& b, std::size_t rows) {
+  const Recording ra = RecordingReader::load(a), rb = RecordingReader::load(b);
+  ASSERT_EQ(ra.rows.size(), rows);
+  ASSERT_EQ(rb.rows.size(), rows);
+  for (std::size_t i = 0; i < rows; ++i) ASSERT_TRUE(test::sameBits(ra.rows[i], rb.rows[i])) << "row " << i;
+}
+
+TEST(ReplayLoggerTest, AHeadlessRunReplaysBitForBit) {
   hemiroll::test::TempDirectory dir;
+  constexpr long kTicks = 3000;  // 3 s at 1 kHz: engagement, ramp, coupled motion, a gain change
+  Rings rings;
   haptics::SimulatedHandDevice hand(circling);
-  const RecordedRun original = record(hand, dir.path(), "original", dir.path() / "original.replay");
-  ASSERT_EQ(original.dropped, 0u);
+  haptics::ServoLoop loop(rings.def(true), hand);
+  TrialRecorder rec = recorder(dir.path(), "original");
+  ReplayLogger logger(dir.path() / "original.replay", header());
+  loop.post(command(haptics::ServoCommandKind::Engage));
+  for (long done = 0; done < kTicks; done += 100) {
+    if (done == 1500) loop.post(stiffer());
+    loop.runHeadless(100);
+    rec.drain(*rings.rows);
+    logger.drain(*rings.inputs, rings.commands.get());
+  }
+  rec.finish(TrialEnd{});
+  logger.finish(loop.inputDropped());
+  ASSERT_EQ(loop.recordDropped() + loop.inputDropped(), 0u);
 
   const ReplayLog log = ReplayReader::load(dir.path() / "original.replay");
   EXPECT_EQ(log.header.tickCount, static_cast<std::uint64_t>(kTicks));
   EXPECT_EQ(log.header.levelHash, "test-level");
   EXPECT_EQ(log.header.seed, 99u);
-  haptics::ReplayDevice replay(log.inputs);
-  const RecordedRun again = record(replay, dir.path(), "replayed");
-  EXPECT_EQ(replay.position(), static_cast<std::size_t>(kTicks));
-  EXPECT_EQ(replay.error(), nullptr);
+  ASSERT_EQ(log.commands.size(), 2u);
+  EXPECT_EQ(log.commands[0].tick, 1u);
+  EXPECT_EQ(log.commands[1].tick, 1501u);
+  EXPECT_EQ(log.commands[1].command.coupling.stiffness, 300.0);
 
-  EXPECT_EQ(std::memcmp(original.state.data(), again.state.data(), sizeof(double) * 12), 0);
-  const Recording a = RecordingReader::load(original.csv), b = RecordingReader::load(again.csv);
-  ASSERT_EQ(a.rows.size(), static_cast<std::size_t>(kTicks));
-  ASSERT_EQ(b.rows.size(), a.rows.size());
-  for (std::size_t i = 0; i < a.rows.size(); ++i) ASSERT_TRUE(test::sameBits(a.rows[i], b.rows[i])) << "row " << i;
+  const physics::ForceDrivenState again = replay(log, dir.path(), "replayed");
+  EXPECT_EQ(std::memcmp(loop.state().data(), again.data(), sizeof(double) * 12), 0);
+  expectSameRows(rec.csvPath(), dir.path() / "replayed.csv", kTicks);
   // The run was not trivial: the hand engaged and the hemisphere rolled.
-  EXPECT_EQ(a.rows.back().engagement, haptics::Engagement::Engaged) << haptics::safetyFaultName(a.rows.back().fault) << " " << a.rows.back().time;
-  EXPECT_GT(std::hypot(a.rows.back().state[7], a.rows.back().state[8]), 1e-5);  // contact moved > 10 um
+  const Recording r = RecordingReader::load(rec.csvPath());
+  EXPECT_EQ(r.rows.back().engagement, haptics::Engagement::Engaged) << haptics::safetyFaultName(r.rows.back().fault);
+  EXPECT_GT(std::hypot(r.rows.back().state[7], r.rows.back().state[8]), 1e-5);  // contact moved > 10 um
 
-  // And the comparison can fail: one input 1 nm off changes the end state.
-  // (One ulp, ~1e-18 m, can vanish in the rounding of the state's sums.)
-  std::vector<haptics::TickInput> nudged = log.inputs;
-  nudged[1500].position[0] += 1e-9;
-  haptics::ReplayDevice off(nudged);
-  const RecordedRun different = record(off, dir.path(), "nudged");
-  EXPECT_NE(std::memcmp(original.state.data(), different.state.data(), sizeof(double) * 12), 0);
+  // And the comparison can fail: one input 1 nm off, or the gain change one
+  // tick late, changes the end state. (One ulp of position, ~1e-18 m, can
+  // vanish in the rounding of the state's sums.)
+  ReplayLog nudged = log;
+  nudged.inputs[1500].position[0] += 1e-9;
+  EXPECT_NE(std::memcmp(loop.state().data(), replay(nudged, dir.path(), "nudged").data(), sizeof(double) * 12), 0);
+  ReplayLog late = log;
+  late.commands[1].tick += 1;
+  EXPECT_NE(std::memcmp(loop.state().data(), replay(late, dir.path(), "late").data(), sizeof(double) * 12), 0);
+}
+
+// A run on the real clock, commands posted from another thread at whatever
+// tick they land on, rings drained by writer threads: the replay, headless,
+// still repeats every row bit for bit (lateness included).
+TEST(ReplayLoggerTest, ARealTimeRunReplaysBitForBit) {
+  hemiroll::test::TempDirectory dir;
+  Rings rings;
+  haptics::SimulatedHandDevice hand(circling);
+  haptics::ServoLoop loop(rings.def(true), hand);
+  TrialRecorder rec = recorder(dir.path(), "live");
+  ReplayLogger logger(dir.path() / "live.replay", header());
+  rec.startWriter(*rings.rows);
+  logger.startWriter(*rings.inputs, rings.commands.get());
+  loop.start();
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  loop.post(command(haptics::ServoCommandKind::Engage));
+  std::this_thread::sleep_for(std::chrono::milliseconds(400));
+  loop.post(stiffer());
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  loop.stop();
+  rec.finish(TrialEnd{});
+  logger.finish(loop.inputDropped());
+  ASSERT_EQ(loop.recordDropped() + loop.inputDropped(), 0u);
+
+  const ReplayLog log = ReplayReader::load(dir.path() / "live.replay");
+  ASSERT_EQ(log.inputs.size(), loop.ticks());
+  ASSERT_EQ(log.commands.size(), 2u);
+  const physics::ForceDrivenState again = replay(log, dir.path(), "replayed");
+  EXPECT_EQ(std::memcmp(loop.state().data(), again.data(), sizeof(double) * 12), 0);
+  expectSameRows(rec.csvPath(), dir.path() / "replayed.csv", static_cast<std::size_t>(loop.ticks()));
+  const Recording r = RecordingReader::load(rec.csvPath());
+  EXPECT_EQ(r.rows.back().engagement, haptics::Engagement::Engaged);  // engaged, the force ramping in
+  EXPECT_GT(r.rows.back().rampScale, 0.0);
 }
 
 TEST(ReplayLoggerTest, LostInputsMakeTheLogUnusable) {

@@ -20,6 +20,10 @@ std::filesystem::path writeLog(const hemiroll::test::TempDirectory& dir, int tic
     in.position = {0.001 * k, -0.002 * k, 0.04};
     logger.push(in);
   }
+  haptics::AppliedCommand engage;
+  engage.tick = 2;
+  engage.command.kind = haptics::ServoCommandKind::Engage;
+  logger.push(engage);
   if (finish) logger.finish();
   return path;
 }
@@ -40,6 +44,9 @@ TEST(ReplayReaderTest, LoadsWhatTheLoggerWrote) {
   EXPECT_EQ(log.inputs[9].tick, 10u);
   EXPECT_EQ(log.inputs[9].position[0], 0.001 * 10);
   EXPECT_EQ(log.header.softwareVersion, softwareVersion());
+  ASSERT_EQ(log.commands.size(), 1u);
+  EXPECT_EQ(log.commands[0].tick, 2u);
+  EXPECT_EQ(log.commands[0].command.kind, haptics::ServoCommandKind::Engage);
 }
 
 TEST(ReplayReaderTest, BrokenLogsGiveClearErrors) {
@@ -55,6 +62,17 @@ TEST(ReplayReaderTest, BrokenLogsGiveClearErrors) {
   flipped[kReplayHeaderSize + 20 * kReplayRecordSize + 9] ^= 0x04;  // one bit of record 20's x
   dir.write("log.replay", flipped);
   EXPECT_NE(errorOf(path).find("checksum"), std::string::npos) << errorOf(path);
+  // A command at a tick the log does not hold (checksum fixed up, so only
+  // the command check can object).
+  std::string outside = good;
+  const std::size_t command = kReplayHeaderSize + 50 * kReplayRecordSize;
+  outside[command] = 99;
+  const auto* records = reinterpret_cast<const unsigned char*>(outside.data()) + kReplayHeaderSize;
+  const std::uint64_t sum = fnv1a(records, outside.size() - kReplayHeaderSize, kFnvOffset);
+  for (int i = 0; i < 8; ++i) outside[56 + static_cast<std::size_t>(i)] = static_cast<char>(sum >> (8 * i));
+  dir.write("log.replay", outside);
+  EXPECT_NE(errorOf(path).find("command 0 (byte " + std::to_string(command) + "): tick 99"), std::string::npos)
+      << errorOf(path);
   std::string version = good;
   version[8] = 7;
   dir.write("log.replay", version);

@@ -1,0 +1,54 @@
+#pragma once
+// What a bot sees each tick, as plain numbers. The host (the trial loop)
+// fills it from the servo loop's state; BotScript copies it into one Lua
+// table that is built once and reused, so a tick allocates nothing.
+//
+// Frames: "scene" is the physics base frame (x, y on the plane, z up) [m];
+// "face" coordinates are the paper's p = (x_p, y_p) on the flat face.
+// Task fields are whatever the level declares; unset targets are NaN-free:
+// targetSet says which of the twelve state slots carry a target.
+
+#include <array>
+#include <string>
+
+namespace hemiroll::script {
+
+using Triple3 = std::array<double, 3>;
+
+struct BotObservation {
+  double time = 0.0;                 // simulation time [s]
+  std::array<double, 12> state{};    // the 12-state, physics/StateLayout.h order and names
+  Triple3 mass{};                    // mass point position, scene [m]
+  Triple3 massVelocity{};            // mass point velocity, scene [m/s]
+  Triple3 centre{};                  // centre of the flat face (= sphere centre), scene [m]
+  Triple3 faceX{}, faceY{}, normal{};  // the face's x, y axes and normal, scene (unit vectors)
+  Triple3 contact{};                 // contact point on the plane, scene [m]
+  Triple3 proxy{};                   // the proxy the device delivered last tick, scene [m]
+  Triple3 force{};                   // coupling force on the mass point, scene [N]
+  double proxyDistance = 0.0;        // proxy to mass point [m]
+  bool engaged = false;              // the coupling is on (the proxy came within reach after engage)
+  // The task (filled from the level's judge; zero and unset without one).
+  std::array<double, 12> target{};
+  std::array<double, 12> tolerance{};
+  std::array<bool, 12> targetSet{};
+  double timeLimit = 0.0;            // [s]; 0 = none
+  double holdTime = 0.0;             // how long the target must hold [s]
+  double held = 0.0;                 // how long it has held so far [s]
+  int stage = 0;                     // index of the current waypoint/target (0-based)
+};
+
+// Once per trial, for init(level_info, seed).
+struct BotLevelInfo {
+  std::string name;                  // the level's name
+  std::string file;                  // the level file as given
+  double radius = 0.04, shellMass = 0.1, pointMass = 1.0, gravity = 9.81;  // [m], [kg], [kg], [m/s^2]
+  std::string method = "M3";         // coupling method
+  double stiffness = 250.0, damping = 10.0, alpha = 2.0;  // [N/m], [N s/m], [-]
+  double dt = 0.001;                 // servo tick [s]
+  double timeLimit = 0.0;            // [s]; 0 = none
+  double engageDistance = 0.01;      // the proxy must come this close to the mass point to engage [m]
+  double workspaceRadius = 0.1;      // the device's reach about its origin, scene [m] (after mapping)
+  Triple3 workspaceCentre{};         // the device origin in the scene [m]
+};
+
+}  // namespace hemiroll::script

@@ -1,0 +1,30 @@
+#pragma once
+// The flags of `hemiroll run`, parsed and checked before any file is read.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace hemiroll::game {
+
+struct RunOptions {
+  std::string levelPath;
+  std::string botPath;                     // --bot (required)
+  std::uint64_t seed = 0;                  // --seed: 0 .. 2^63 - 1
+  std::optional<std::string> recordDir;    // --record DIR
+  bool realtime = false;                   // --realtime
+  bool help = false;                       // --help
+};
+
+struct RunOptionsResult {
+  RunOptions options;
+  std::string error;  // empty when the flags are good
+};
+
+// Parses the arguments after "run". Accepts "--flag value" and "--flag=value".
+RunOptionsResult parseRunOptions(const std::vector<std::string>& args);
+
+const char* runUsage();
+
+}  // namespace hemiroll::game

@@ -1,0 +1,39 @@
+#include "game/play/BotDevice.h"
+
+namespace hemiroll::game {
+
+BotDevice::BotDevice(const haptics::DeviceSpec& spec, const haptics::WorkspaceMapping& mapping, double tickPeriod)
+    : spec_(spec), mapping_(mapping), period_(tickPeriod) {}
+
+haptics::DeviceReading BotDevice::read(double) { return reading_; }
+
+namespace {
+// Beyond this a pose only says "far away": clamping the components first
+// keeps the mapping and the norm below from overflowing to inf [m].
+constexpr double kFar = 1e6;
+}  // namespace
+
+Vec3 BotDevice::toDevice(const Vec3& scenePosition) {
+  const Vec3 bounded = scenePosition.cwiseMax(-kFar).cwiseMin(kFar);
+  Vec3 p = (bounded - mapping_.offset) / mapping_.scale;
+  const double reach = p.norm();
+  limited_ = reach > spec_.workspaceRadius;
+  if (limited_) p *= spec_.workspaceRadius / reach;
+  return p;
+}
+
+void BotDevice::setPose(const Vec3& scenePosition) {
+  const Vec3 p = toDevice(scenePosition);
+  reading_.velocity = hasPose_ ? Vec3((p - reading_.position) / period_) : Vec3::Zero();
+  reading_.position = p;
+  hasPose_ = true;
+}
+
+void BotDevice::setPose(const Vec3& scenePosition, const Vec3& sceneVelocity) {
+  reading_.position = toDevice(scenePosition);
+  // At the stop the device does not move outwards, whatever the bot says.
+  reading_.velocity = limited_ ? Vec3::Zero() : Vec3(sceneVelocity / mapping_.scale);
+  hasPose_ = true;
+}
+
+}  // namespace hemiroll::game

@@ -1,0 +1,85 @@
+#pragma once
+// One trial of a level played by a bot, with the tick code of real-time play:
+// every tick
+//   observation -> bot.act (Lua) -> BotDevice pose
+//   -> ServoLoop::tick (device, coupling, physics, events, safety, ramp)
+//   -> TaskJudge::judge -> TrialSummaryAccumulator::add
+//   -> LevelScript::update (on_update at the level's rate, on_success/on_fail)
+// until the judge ends the trial; then the level's score function.
+//
+// Headless (the default) runs ticks back to back with no clock: as fast as
+// the CPU allows and bit-for-bit deterministic for the same level, bot and
+// seed. `realtime` paces the same ticks at the servo period on absolute
+// deadlines (SteadyServoClock), on the calling thread: the bot still runs
+// inside each tick, which real-time play with a person never does (there the
+// servo loop owns its thread and no Lua runs in it). docs/RUN.md says so.
+//
+// Ends early, as a failure with a reason, when the bot fails ("bot error:
+// file:line: ...", from init or act), when a safety watchdog trips ("safety:
+// <fault>"), or when a level callback fails (the level runtime reports it).
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "engine/haptics/ServoLoop.h"
+#include "engine/physics/StateLayout.h"
+#include "engine/script/BotScript.h"
+#include "engine/script/LevelLoader.h"
+#include "engine/script/TrialSummary.h"
+
+namespace hemiroll::game {
+
+struct TrialSettings {
+  std::uint64_t seed = 0;    // handed to the bot's init (the level was loaded with it)
+  bool realtime = false;     // pace ticks at the servo period
+  // Safety margin on the length of a trial: the judge ends it at the level's
+  // time limit; this cap only guards against a level that never ends.
+  double maxTimeFactor = 1.01;
+  // Recording (engine/record, through the servo loop's ring): the loop
+  // pushes a row every recordEvery ticks into recordRing, and the trial calls
+  // drainRecording every kDrainEveryTicks ticks and once at the end.
+  haptics::RecordRing* recordRing = nullptr;
+  int recordEvery = 10;
+  std::function<void()> drainRecording;
+};
+
+struct TrialResult {
+  script::TrialOutcome outcome = script::TrialOutcome::Failure;
+  std::string reason;
+  double time = 0.0;                 // simulated time at the end [s]
+  long long ticks = 0;
+  std::optional<double> score;       // nullopt: no score function, or it failed
+  script::Medal medal = script::Medal::None;
+  std::string scoreError;            // the score function's failure, if any
+  script::TrialSummary summary;
+  physics::ForceDrivenState finalState = physics::ForceDrivenState::Zero();
+  double maxRenderedForce = 0.0;     // largest |force| sent to the device [N]
+  double maxProxyDistance = 0.0;     // largest proxy to mass point distance [m]
+  double wallTime = 0.0;             // [s]
+};
+
+class HeadlessTrial {
+ public:
+  // 1 s at 1 kHz: the ring (4096 rows) never fills between drains.
+  static constexpr std::uint64_t kDrainEveryTicks = 1000;
+
+  // `level` and `bot` are used, not copied; both must outlive run().
+  HeadlessTrial(script::LoadedLevel& level, script::BotScript& bot, const TrialSettings& settings);
+
+  TrialResult run();
+
+  // The servo loop's definition for a level (params, initial state,
+  // coupling, mapping; default safety and device), for tests and tools.
+  static haptics::ServoLoopDef loopDefFor(const script::LevelDef& level);
+  static haptics::DeviceSpec deviceSpec();
+  static script::BotLevelInfo levelInfoFor(const script::LevelDef& level, const std::string& file);
+
+ private:
+  script::LoadedLevel& level_;
+  script::BotScript& bot_;
+  TrialSettings settings_;
+};
+
+}  // namespace hemiroll::game

@@ -1,0 +1,69 @@
+#include "game/play/JsonLine.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace hemiroll::game {
+
+std::string JsonLine::quote(std::string_view text) {
+  std::string out = "\"";
+  for (const char c : text) {
+    switch (c) {
+      case '"': out += "\\\""; break;
+      case '\\': out += "\\\\"; break;
+      case '\n': out += "\\n"; break;
+      case '\r': out += "\\r"; break;
+      case '\t': out += "\\t"; break;
+      case '\b': out += "\\b"; break;
+      case '\f': out += "\\f"; break;
+      default:
+        if (static_cast<unsigned char>(c) < 0x20) {
+          char escaped[8];
+          std::snprintf(escaped, sizeof escaped, "\\u%04x", static_cast<unsigned>(static_cast<unsigned char>(c)));
+          out += escaped;
+        } else {
+          out += c;
+        }
+    }
+  }
+  return out + "\"";
+}
+
+std::string JsonLine::number(double value) {
+  if (!std::isfinite(value)) return "null";
+  char text[40];
+  std::snprintf(text, sizeof text, "%.17g", value);
+  return text;
+}
+
+void JsonLine::key(std::string_view name) {
+  if (text_.size() > 1) text_ += ",";
+  text_ += quote(name);
+  text_ += ":";
+}
+
+JsonLine& JsonLine::add(std::string_view name, std::string_view value) {
+  key(name);
+  text_ += quote(value);
+  return *this;
+}
+
+JsonLine& JsonLine::add(std::string_view name, double value) {
+  key(name);
+  text_ += number(value);
+  return *this;
+}
+
+JsonLine& JsonLine::add(std::string_view name, long long value) {
+  key(name);
+  text_ += std::to_string(value);
+  return *this;
+}
+
+JsonLine& JsonLine::addNull(std::string_view name) {
+  key(name);
+  text_ += "null";
+  return *this;
+}
+
+}  // namespace hemiroll::game

@@ -1,0 +1,32 @@
+#pragma once
+// One JSON object on one line, for machine-read results (`hemiroll run`).
+// Strings are escaped per RFC 8259 (quote, backslash, control characters;
+// other bytes pass through, so UTF-8 stays UTF-8). Numbers are written with
+// 17 significant digits (they read back to the same double); a non-finite
+// number is written as null, because JSON has no NaN or Infinity.
+
+#include <string>
+#include <string_view>
+
+namespace hemiroll::game {
+
+class JsonLine {
+ public:
+  JsonLine& add(std::string_view key, std::string_view value);
+  JsonLine& add(std::string_view key, const char* value) { return add(key, std::string_view(value)); }
+  JsonLine& add(std::string_view key, double value);
+  JsonLine& add(std::string_view key, long long value);
+  JsonLine& addNull(std::string_view key);
+
+  // "{...}" without a newline.
+  std::string str() const { return text_ + "}"; }
+
+  static std::string quote(std::string_view text);
+  static std::string number(double value);
+
+ private:
+  void key(std::string_view name);
+  std::string text_ = "{";
+};
+
+}  // namespace hemiroll::game

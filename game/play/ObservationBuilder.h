@@ -1,0 +1,30 @@
+#pragma once
+// Turns the servo loop's state after a tick into what a bot sees
+// (script::BotObservation) and what a level's callbacks see
+// (script::TrialObservation): mass point, face axes, contact point in the
+// scene frame, and the current stage's targets from the judge. Pure
+// computation on plain numbers; allocates nothing, so it may run every tick.
+
+#include "engine/haptics/ServoSnapshot.h"
+#include "engine/physics/HemisphereParams.h"
+#include "engine/physics/StateLayout.h"
+#include "engine/script/BotObservation.h"
+#include "engine/script/TaskJudge.h"
+
+namespace hemiroll::game {
+
+class ObservationBuilder {
+ public:
+  explicit ObservationBuilder(const physics::HemisphereParams& params) : constants_(params) {}
+
+  // `time`, `state`: the loop's after the last tick; `snapshot`: its last
+  // published tick (proxy, force, engagement), or a default one before the
+  // first tick; `judge`: the task as it stands.
+  void fill(double time, const physics::ForceDrivenState& state, const haptics::ServoSnapshot& snapshot,
+            const script::TaskJudge& judge, script::BotObservation& out) const;
+
+ private:
+  physics::ModelConstants constants_;
+};
+
+}  // namespace hemiroll::game

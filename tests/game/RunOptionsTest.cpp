@@ -1,0 +1,67 @@
+// game/commands/RunOptions: the flags of `hemiroll run`, checked before any
+// file is read.
+
+#include "game/commands/RunOptions.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+namespace hemiroll::game {
+namespace {
+
+using ::testing::HasSubstr;
+
+TEST(RunOptions, ReadsEveryFlagInBothSpellings) {
+  const RunOptionsResult r =
+      parseRunOptions({"level.lua", "--bot", "b.lua", "--seed=42", "--record", "out", "--realtime"});
+  ASSERT_EQ(r.error, "");
+  EXPECT_EQ(r.options.levelPath, "level.lua");
+  EXPECT_EQ(r.options.botPath, "b.lua");
+  EXPECT_EQ(r.options.seed, 42u);
+  EXPECT_EQ(r.options.recordDir, "out");
+  EXPECT_TRUE(r.options.realtime);
+}
+
+TEST(RunOptions, DefaultsAreSeedZeroHeadlessNoRecording) {
+  const RunOptionsResult r = parseRunOptions({"--bot=b.lua", "level.lua"});
+  ASSERT_EQ(r.error, "");
+  EXPECT_EQ(r.options.seed, 0u);
+  EXPECT_FALSE(r.options.recordDir);
+  EXPECT_FALSE(r.options.realtime);
+}
+
+TEST(RunOptions, LargestSeedIsTheLargestLuaInteger) {
+  EXPECT_EQ(parseRunOptions({"l.lua", "--bot", "b", "--seed", "9223372036854775807"}).options.seed,
+            9223372036854775807u);
+  EXPECT_THAT(parseRunOptions({"l.lua", "--bot", "b", "--seed", "9223372036854775808"}).error,
+              HasSubstr("--seed needs a whole number"));
+}
+
+TEST(RunOptions, BadFlagsSayWhat) {
+  struct Case {
+    std::vector<std::string> args;
+    const char* expected;
+  };
+  const Case cases[] = {
+      {{}, "missing the level file"},
+      {{"l.lua"}, "missing --bot"},
+      {{"l.lua", "--bot"}, "flag --bot needs a value"},
+      {{"l.lua", "--bot", ""}, "flag --bot needs a bot file"},
+      {{"l.lua", "--bot", "b", "--seed", "-1"}, "--seed needs a whole number"},
+      {{"l.lua", "--bot", "b", "--seed", "1.5"}, "--seed needs a whole number"},
+      {{"l.lua", "--bot", "b", "--seed", ""}, "--seed needs a whole number"},
+      {{"l.lua", "--bot", "b", "--record="}, "flag --record needs a directory"},
+      {{"l.lua", "--bot", "b", "--fast"}, "unknown flag '--fast'"},
+      {{"l.lua", "m.lua", "--bot", "b"}, "unexpected argument 'm.lua'"},
+  };
+  for (const Case& c : cases) EXPECT_THAT(parseRunOptions(c.args).error, HasSubstr(c.expected)) << c.expected;
+}
+
+TEST(RunOptions, HelpNeedsNothingElse) {
+  const RunOptionsResult r = parseRunOptions({"--help"});
+  EXPECT_EQ(r.error, "");
+  EXPECT_TRUE(r.options.help);
+}
+
+}  // namespace
+}  // namespace hemiroll::game
