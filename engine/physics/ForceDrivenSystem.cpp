@@ -1,7 +1,6 @@
 #include "engine/physics/ForceDrivenSystem.h"
 
 #include <cmath>
-#include <cstring>
 
 namespace hemiroll::physics {
 
@@ -20,59 +19,20 @@ RollingGeometry geometryOf(const ModelConstants& c, const ForceDrivenState& x) {
 ForceDrivenSystem::ForceDrivenSystem(const HemisphereParams& params, const DomainLimits& limits)
     : dynamics_(params), limits_(limits), cosMaxTilt_(std::cos(limits.maxTilt)) {}
 
-void ForceDrivenSystem::setFree() {
-  ++inputRevision_;
-  input_ = Input::Free;
-  proxyFn_ = nullptr;
-}
-
-void ForceDrivenSystem::setFaceForce(const Vec2& f) {
-  ++inputRevision_;
-  input_ = Input::FaceForce;
-  faceForce_ = f;
-  proxyFn_ = nullptr;
-}
-
-void ForceDrivenSystem::setCoupling(const CouplingDef& def, const ProxyTrajectory& proxy) {
-  ++inputRevision_;
-  input_ = Input::Coupling;
-  coupling_ = def;
-  proxyFn_ = &proxy;
-}
-
-void ForceDrivenSystem::setCoupling(const CouplingDef& def) {
-  ++inputRevision_;
-  input_ = Input::Coupling;
-  coupling_ = def;
-  proxyFn_ = nullptr;
-}
-
-void ForceDrivenSystem::holdProxy(const ProxyPose& pose) {
-  // Bitwise, not ==: -0.0 and 0.0 give the same force, but a sleeping
-  // stepper must wake on any change that a step could see.
-  const bool same = std::memcmp(pose.position.data(), heldProxy_.position.data(), sizeof(double) * 3) == 0 &&
-                    std::memcmp(pose.velocity.data(), heldProxy_.velocity.data(), sizeof(double) * 3) == 0;
-  if (same) return;
-  heldProxy_ = pose;
-  ++inputRevision_;
-}
-
 Real3 ForceDrivenSystem::handForceAt(const RollingGeometry& g, double t, const ForceDrivenState& x,
                                      const Real3& omegaH) const {
   const HeadingFrame& f = g.frame;
-  const ProxyPose proxy = proxyAt(t);
   const Real3 centre{x[u_a], x[v_a], dynamics_.constants().params.radius};
-  const Real3 dr = f.toHeading(centre - Real3::from(proxy.position)) + g.rhoP;
-  const Real3 dv = cross(omegaH, g.lever) + g.rhoPDot - f.toHeading(Real3::from(proxy.velocity));
-  return handForce(coupling_, f.k, dr, dv);
+  return input_.handForce(t, f.k, centre, g.rhoP, cross(omegaH, g.lever) + g.rhoPDot,
+                          [&f](const Real3& v) { return f.toHeading(v); });
 }
 
 Real3 ForceDrivenSystem::inputForce(const RollingGeometry& g, double t, const ForceDrivenState& x,
                                     const Real3& omegaH) const {
-  switch (input_) {
-    case Input::Free: return {0.0, 0.0, 0.0};
-    case Input::FaceForce: return g.frame.inPlane(Real2::from(faceForce_));
-    case Input::Coupling: return modelForce(coupling_, g.frame.k, handForceAt(g, t, x, omegaH));
+  switch (input_.mode()) {
+    case ForceInput::Mode::Free: return {0.0, 0.0, 0.0};
+    case ForceInput::Mode::FaceForce: return g.frame.inPlane(Real2::from(input_.faceForce()));
+    case ForceInput::Mode::Coupling: return modelForce(input_.coupling(), g.frame.k, handForceAt(g, t, x, omegaH));
   }
   return {0.0, 0.0, 0.0};
 }
@@ -121,11 +81,11 @@ CouplingForces ForceDrivenSystem::couplingForces(double t, const ForceDrivenStat
   const RollingGeometry g = geometryOf(dynamics_.constants(), x);
   const HeadingFrame& f = g.frame;
   const Real3 omegaH = f.toHeading(omegaOf(x));
-  if (input_ != Input::Coupling) return {Vec3::Zero(), f.toBase(inputForce(g, t, x, omegaH)).eigen(), Vec3::Zero()};
+  if (!coupled()) return {Vec3::Zero(), f.toBase(inputForce(g, t, x, omegaH)).eigen(), Vec3::Zero()};
   const Real3 hand = handForceAt(g, t, x, omegaH);
   const Vec3 handBase = f.toBase(hand).eigen();
-  return {handBase, f.toBase(modelForce(coupling_, f.k, hand)).eigen(),
-          coupling_.visualOnly ? Vec3::Zero() : Vec3(-handBase)};
+  return {handBase, f.toBase(modelForce(coupling(), f.k, hand)).eigen(),
+          coupling().visualOnly ? Vec3::Zero() : Vec3(-handBase)};
 }
 
 }  // namespace hemiroll::physics

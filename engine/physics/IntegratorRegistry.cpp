@@ -47,4 +47,9 @@ std::unique_ptr<Integrator<8>> IntegratorRegistry::makePrescribed(std::string_vi
   return e ? e->make8() : nullptr;
 }
 
+std::unique_ptr<Integrator<13>> IntegratorRegistry::makeRotation(std::string_view name) const {
+  const Entry* e = find(name);
+  return e ? e->make13() : nullptr;
+}
+
 }  // namespace hemiroll::physics

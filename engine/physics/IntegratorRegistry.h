@@ -2,8 +2,8 @@
 // Integrators by name, so that command-line flags, tools and levels select
 // them with a string ("rk4") and a new method becomes available everywhere by
 // registering it once in IntegratorRegistry.cpp. Each entry makes the method
-// for both state sizes in use: the 12-state force-driven model and the
-// 8-state prescribed drive.
+// for every state size in use: the 12-state force-driven model, its 13-state
+// quaternion form (RotationDrivenSystem.h) and the 8-state prescribed drive.
 
 #include <memory>
 #include <string>
@@ -32,12 +32,15 @@ class IntegratorRegistry {
   // A fresh integrator of that name, or nullptr if there is none.
   std::unique_ptr<Integrator<12>> makeForceDriven(std::string_view name) const;
   std::unique_ptr<Integrator<8>> makePrescribed(std::string_view name) const;
+  std::unique_ptr<Integrator<13>> makeRotation(std::string_view name) const;
 
   template <int N>
   std::unique_ptr<Integrator<N>> make(std::string_view name) const {
-    static_assert(N == 12 || N == 8, "only the 12-state and 8-state models exist");
+    static_assert(N == 12 || N == 13 || N == 8, "only the 12-, 13- and 8-state models exist");
     if constexpr (N == 12) {
       return makeForceDriven(name);
+    } else if constexpr (N == 13) {
+      return makeRotation(name);
     } else {
       return makePrescribed(name);
     }
@@ -51,7 +54,8 @@ class IntegratorRegistry {
     const bool adaptive = probe.adaptive() != nullptr;
     entries_.push_back(Entry{IntegratorInfo{std::move(name), std::move(description), order, adaptive},
                              [] { return std::unique_ptr<Integrator<12>>(new Method<12>()); },
-                             [] { return std::unique_ptr<Integrator<8>>(new Method<8>()); }});
+                             [] { return std::unique_ptr<Integrator<8>>(new Method<8>()); },
+                             [] { return std::unique_ptr<Integrator<13>>(new Method<13>()); }});
   }
 
  private:
@@ -59,6 +63,7 @@ class IntegratorRegistry {
     IntegratorInfo info;
     std::unique_ptr<Integrator<12>> (*make12)();
     std::unique_ptr<Integrator<8>> (*make8)();
+    std::unique_ptr<Integrator<13>> (*make13)();
   };
   const Entry* find(std::string_view name) const;
 

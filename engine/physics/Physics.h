@@ -13,6 +13,7 @@
 // Depends on Eigen and the standard library only.
 
 #include "engine/physics/AdaptiveIntegrator.h"
+#include "engine/physics/BodyRotation.h"
 #include "engine/physics/CouplingStability.h"
 #include "engine/physics/DomainEvents.h"
 #include "engine/physics/DormandPrince54.h"
@@ -20,12 +21,14 @@
 #include "engine/physics/Energy.h"
 #include "engine/physics/ForceCoupling.h"
 #include "engine/physics/ForceDrivenSystem.h"
+#include "engine/physics/ForceInput.h"
 #include "engine/physics/GaussLegendre.h"
 #include "engine/physics/HemisphereParams.h"
 #include "engine/physics/Integrator.h"
 #include "engine/physics/Orientation.h"
 #include "engine/physics/PrescribedDriveSystem.h"
 #include "engine/physics/RollingDynamics.h"
+#include "engine/physics/RotationDrivenSystem.h"
 #include "engine/physics/RoseDrive.h"
 #include "engine/physics/StateLayout.h"
 #include "engine/physics/Stepper.h"

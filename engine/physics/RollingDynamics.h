@@ -56,19 +56,26 @@ inline HeadingFrame makeHeadingFrame(double u_o, double v_o, double psi) {
                       {-u.sin, v.sin * u.cos, v.cos * u.cos}};
 }
 
-// Everything that depends on the configuration (u_o, v_o, psi, p) and the
-// mass point's velocity relative to the body, in the heading frame.
-struct RollingGeometry {
-  HeadingFrame frame;
+// Everything that depends on the configuration (orientation, p) and the
+// mass point's velocity relative to the body, in a frame that shares the
+// vertical with the base frame: the heading frame of the 12-state model
+// (HeadingFrame), or the base frame itself when the orientation is a
+// quaternion (BodyFrame in BodyRotation.h). A Frame gives the face axes
+// i, j, k and inPlane()/toFace() between face coordinates and the frame.
+template <class Frame>
+struct RollingGeometryIn {
+  Frame frame;
   Real3 rhoP;     // rho_p = R N p, mass point from the face centre
   Real3 rhoPDot;  // R N p', its velocity relative to the body
   Real3 lever;    // d = rho_p - rho_c, from the contact point to the mass point
 };
+using RollingGeometry = RollingGeometryIn<HeadingFrame>;
 
-inline RollingGeometry makeGeometry(const ModelConstants& c, const HeadingFrame& frame, const Real2& p,
-                                    const Real2& pDot) {
+template <class Frame>
+inline RollingGeometryIn<Frame> makeGeometry(const ModelConstants& c, const Frame& frame, const Real2& p,
+                                             const Real2& pDot) {
   const Real3 rho = frame.inPlane(p);
-  return RollingGeometry{frame, rho, frame.inPlane(pDot), {rho.x, rho.y, rho.z + c.params.radius}};
+  return RollingGeometryIn<Frame>{frame, rho, frame.inPlane(pDot), {rho.x, rho.y, rho.z + c.params.radius}};
 }
 
 // What one evaluation passes from the 3x3 solve to the mass point (heading frame).
@@ -91,7 +98,9 @@ class RollingDynamics {
   // pushes the mass point with component externalNormalForce = k.F along the
   // face normal (zero for M1 and for the prescribed drive; M2 and M3 pass
   // theirs through the face).
-  BodyAcceleration bodyAcceleration(const RollingGeometry& g, const Real3& w, double externalNormalForce) const {
+  template <class Frame>
+  BodyAcceleration bodyAcceleration(const RollingGeometryIn<Frame>& g, const Real3& w,
+                                    double externalNormalForce) const {
     const double mp = c_.params.pointMass, R = c_.params.radius, grav = c_.params.gravity;
     const Real3& k = g.frame.k;
     BodyAcceleration a;
@@ -115,14 +124,16 @@ class RollingDynamics {
   }
 
   // p'' of the force-driven model for in-face force f, eqs. (30), (34), (36).
-  Real2 pointAcceleration(const RollingGeometry& g, const BodyAcceleration& a, const Real2& f) const {
+  template <class Frame>
+  Real2 pointAcceleration(const RollingGeometryIn<Frame>& g, const BodyAcceleration& a, const Real2& f) const {
     const Real2 q = g.frame.toFace(cross(g.lever, a.omegaDot) - a.pointBias);
     const double invMass = 1.0 / c_.params.pointMass;
     return {f.x * invMass + q.x, f.y * invMass + q.y};
   }
 
   // f that realises a prescribed p'' (eq. 46), for the 8-state drive.
-  Real2 prescribedForce(const RollingGeometry& g, const BodyAcceleration& a, const Real2& pDDot) const {
+  template <class Frame>
+  Real2 prescribedForce(const RollingGeometryIn<Frame>& g, const BodyAcceleration& a, const Real2& pDDot) const {
     const Real2 q = g.frame.toFace(cross(g.lever, a.omegaDot) - a.pointBias);
     const double mp = c_.params.pointMass;
     return {mp * (pDDot.x - q.x), mp * (pDDot.y - q.y)};

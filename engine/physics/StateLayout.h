@@ -37,6 +37,16 @@ inline constexpr int u_a = 3, v_a = 4, u_o = 5, v_o = 6, psi = 7;
 }  // namespace body_slot
 using BodyState = StateVector<8>;
 
+// The force-driven model with the orientation as a quaternion (BodyRotation.h):
+// slots 0..8 as in the 12-state model, then q = (q_w, q_x, q_y, q_z) in
+// place of (u_o, v_o, psi).
+namespace rotation_slot {
+inline constexpr int x_p = 0, y_p = 1, xd_p = 2, yd_p = 3;
+inline constexpr int w_x = 4, w_y = 5, w_z = 6;
+inline constexpr int u_a = 7, v_a = 8, q_w = 9, q_x = 10, q_y = 11, q_z = 12;
+}  // namespace rotation_slot
+using RotationState = StateVector<13>;
+
 inline constexpr const char* kStateNames[12] = {"x_p", "y_p", "xd_p", "yd_p", "w_x", "w_y",
                                                 "w_z", "u_a", "v_a",  "u_o",  "v_o", "psi"};
 

@@ -23,6 +23,8 @@ struct ScenarioDef {
   std::optional<double> duration;        // [s], > 0
   std::optional<double> timeStep;        // `dt` [s], > 0
   std::optional<std::string> integrator;  // a name in physics::IntegratorRegistry
+  std::optional<double> tolerance;        // `tol` [-], > 0: adaptive integrators only
+  std::optional<std::string> orientation; // "angles" or "quaternion" (physics::OrientationForm)
 };
 
 }  // namespace hemiroll::script

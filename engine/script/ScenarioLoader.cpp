@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "engine/physics/IntegratorRegistry.h"
+#include "engine/physics/RotationDrivenSystem.h"
 #include "engine/script/ConstantProxyTrajectory.h"
 #include "engine/script/LuaProxyTrajectory.h"
 #include "engine/script/LuaSandbox.h"
@@ -174,7 +175,8 @@ ScenarioDef readScenario(const std::shared_ptr<LuaSandbox>& sandbox, const std::
   if (lua_type(L, -1) != LUA_TTABLE)
     throw ScriptError(name + ": the scenario must return a table, got " + describeLuaValue(L, -1));
   const LuaTableReader top(L, -1, name, "");
-  top.rejectUnknownKeys({"description", "params", "initial", "drive", "duration", "dt", "integrator"});
+  top.rejectUnknownKeys(
+      {"description", "params", "initial", "drive", "duration", "dt", "integrator", "tol", "orientation"});
   ScenarioDef out;
   out.source = name;
   (void)top.string("description");
@@ -193,6 +195,14 @@ ScenarioDef readScenario(const std::shared_ptr<LuaSandbox>& sandbox, const std::
   if (out.integrator && !registry.contains(*out.integrator))
     top.fail("integrator",
              "unknown integrator '" + *out.integrator + "' (available: " + joinNames(registry.list()) + ")");
+  out.tolerance = top.number("tol");
+  if (out.tolerance && !(*out.tolerance > 0.0)) top.fail("tol", "must be a positive number");
+  out.orientation = top.string("orientation");
+  physics::OrientationForm form;
+  if (out.orientation && !physics::parseOrientationForm(*out.orientation, form))
+    top.fail("orientation", "must be 'angles' or 'quaternion', got '" + *out.orientation + "'");
+  if (out.orientation && out.drive.kind == DriveKind::Rose && form == physics::OrientationForm::Quaternion)
+    top.fail("orientation", "the rose drive integrates the 8-state prescribed model; 'quaternion' applies to free and proxy drives");
   return out;
 }
 

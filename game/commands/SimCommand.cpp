@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "engine/physics/IntegratorRegistry.h"
+#include "engine/physics/RotationDrivenSystem.h"
 #include "engine/script/ScenarioLoader.h"
 #include "engine/script/ScriptError.h"
 #include "game/commands/ExitCode.h"
@@ -32,7 +33,10 @@ RunSettings resolveSettings(const SimOptions& o, const script::ScenarioDef& scen
   s.timeStep = o.timeStep.value_or(scenario.timeStep.value_or(SimOptions::kDefaultTimeStep));
   s.integrator = o.integrator.value_or(scenario.integrator.value_or(SimOptions::kDefaultIntegrator));
   s.every = o.every;
-  s.tolerance = o.tolerance.value_or(SimOptions::kDefaultTolerance);
+  s.tolerance = o.tolerance.value_or(scenario.tolerance.value_or(SimOptions::kDefaultTolerance));
+  // Both names were checked when they were read (flags and scenario alike).
+  if (const auto form = o.orientation ? o.orientation : scenario.orientation)
+    physics::parseOrientationForm(*form, s.orientation);
   return s;
 }
 
@@ -89,6 +93,11 @@ int runSimCommand(const std::vector<std::string>& args) {
   const RunSettings settings = resolveSettings(options, scenario);
   if (settings.duration / settings.timeStep > kMaxSteps) {
     std::cerr << "hemiroll sim: duration / dt asks for more than 1e10 steps; check --dt\n";
+    return kExitUsage;
+  }
+  if (settings.orientation == physics::OrientationForm::Quaternion && scenario.drive.kind == script::DriveKind::Rose) {
+    std::cerr << "hemiroll sim: --orientation quaternion applies to free and proxy drives; " << options.scenarioPath
+              << " uses the rose drive (the 8-state prescribed model)\n";
     return kExitUsage;
   }
 

@@ -12,7 +12,8 @@ struct SimOptions {
   std::optional<double> duration;          // --duration [s]; else the scenario's, else kDefaultDuration
   std::optional<double> timeStep;          // --dt [s]; else the scenario's, else kDefaultTimeStep
   std::optional<std::string> integrator;   // --integrator; else the scenario's, else kDefaultIntegrator
-  std::optional<double> tolerance;         // --tol: adaptive integrators only; else kDefaultTolerance
+  std::optional<double> tolerance;         // --tol: adaptive integrators only; else the scenario's, else kDefaultTolerance
+  std::optional<std::string> orientation;  // --orientation angles|quaternion; else the scenario's, else angles
   long long every = 1;                     // --every: a row every N steps
   std::optional<std::string> outPath;      // --out; stdout when absent
   bool help = false;                       // --help

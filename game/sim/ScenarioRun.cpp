@@ -12,6 +12,7 @@
 #include "engine/physics/Orientation.h"
 #include "engine/physics/PrescribedDriveSystem.h"
 #include "engine/physics/RoseDrive.h"
+#include "engine/physics/RotationDrivenSystem.h"
 #include "engine/physics/Stepper.h"
 #include "engine/physics/SubsteppingIntegrator.h"
 
@@ -31,11 +32,19 @@ std::unique_ptr<physics::Integrator<N>> makeIntegrator(const std::string& name, 
   return integrator;
 }
 
-// The stepping loop shared by both models; `observe` turns (t, x) into a row.
-template <int N, class Observe>
+// For the models that need nothing after each step.
+struct NothingAfterStep {
+  template <class State>
+  void operator()(const State&) const {}
+};
+
+// The stepping loop shared by all models; `observe` turns (t, x) into a row,
+// `afterStep` sees every state on the step grid (the quaternion form keeps
+// psi continuous there).
+template <int N, class Observe, class AfterStep = NothingAfterStep>
 RunSummary integrate(const physics::OdeSystem<N>& system, physics::Integrator<N>& integrator,
                      const physics::StateVector<N>& x0, const RunSettings& settings, const Observe& observe,
-                     const ScenarioRun::RowCallback& onRow) {
+                     const ScenarioRun::RowCallback& onRow, const AfterStep& afterStep = {}) {
   physics::Stepper<N> stepper(system, integrator, x0, 0.0);
   RunSummary summary;
   auto emit = [&] {
@@ -66,6 +75,7 @@ RunSummary integrate(const physics::OdeSystem<N>& system, physics::Integrator<N>
     // at 35.000000000009); put the clock on the exact grid i * dt instead, so
     // that the drive is evaluated at the nominal times and the CSV shows them.
     if (!stepper.adaptive()) stepper.reset(stepper.state(), target);
+    afterStep(stepper.state());
     if (i % settings.every == 0 || i == steps) emit();
   }
   return summary;
@@ -104,42 +114,78 @@ RunSummary ScenarioRun::runRose(const RowCallback& onRow) const {
   return integrate<8>(system, *integrator, x0, settings_, observe, onRow);
 }
 
-RunSummary ScenarioRun::runForceDriven(const RowCallback& onRow) const {
-  physics::ForceDrivenSystem system(scenario_.params);
-  if (scenario_.drive.kind == script::DriveKind::Proxy)
-    system.setCoupling(scenario_.drive.coupling, *scenario_.drive.proxy);
+namespace {
+
+// Both forms of the force-driven model take the scenario's input the same way.
+template <class System>
+void applyDrive(const script::ScenarioDef& scenario, System& system) {
+  if (scenario.drive.kind == script::DriveKind::Proxy)
+    system.setCoupling(scenario.drive.coupling, *scenario.drive.proxy);
   else
     system.setFree();
+}
+
+// A coupling too stiff for the fixed step is substepped (CouplingStability.h);
+// one substep (every paper setting) is the integrator itself, bit for bit.
+template <int N>
+int substepsFor(const physics::ForceDrivenSystem& system, physics::Integrator<N>& integrator,
+                const RunSettings& settings, double pointMass) {
+  if (!system.coupled() || integrator.adaptive()) return 1;
+  return physics::couplingStepPolicy(settings.integrator, system.coupling(), pointMass, settings.timeStep).substeps;
+}
+
+// Rows (energy, forces) are computed only for the rows written (every
+// `every`-th step), never for the steps in between; both forms give the
+// 12-state here.
+TrajectoryRow rowOf(const physics::ForceDrivenSystem& system, double t, const physics::ForceDrivenState& x) {
+  TrajectoryRow row;
+  row.time = t;
+  row.state = x;
+  row.energy = physics::mechanicalEnergy(system.dynamics(), x).total();
+  if (system.coupled()) {
+    const physics::CouplingForces forces = system.couplingForces(t, x);
+    // Face coordinates: the components along the body's x and y axes,
+    // the first two columns of R (eq. 6).
+    using namespace physics::force_slot;
+    const physics::Mat3 R = physics::makeOrientation(x[u_o], x[v_o], x[psi]).R;
+    row.faceForce = physics::Vec2(R.col(0).dot(forces.modelForce), R.col(1).dot(forces.modelForce));
+    row.handForce = forces.handForce;
+  }
+  return row;
+}
+
+}  // namespace
+
+RunSummary ScenarioRun::runForceDriven(const RowCallback& onRow) const {
+  // The 12-state model also computes the rows of the quaternion form.
+  physics::ForceDrivenSystem system(scenario_.params);
+  applyDrive(scenario_, system);
+  if (settings_.orientation == physics::OrientationForm::Quaternion) return runRotation(system, onRow);
+
   auto integrator = makeIntegrator<12>(settings_.integrator, settings_.tolerance);
-  // A coupling too stiff for the fixed step is substepped (CouplingStability.h);
-  // one substep (every paper setting) is the integrator itself, bit for bit.
-  const int substeps =
-      system.coupled() && !integrator->adaptive()
-          ? physics::couplingStepPolicy(settings_.integrator, system.coupling(), scenario_.params.pointMass,
-                                        settings_.timeStep)
-                .substeps
-          : 1;
+  const int substeps = substepsFor<12>(system, *integrator, settings_, scenario_.params.pointMass);
   physics::SubsteppingIntegrator<12> policed(*integrator, substeps);
   physics::Integrator<12>& stepping = substeps > 1 ? static_cast<physics::Integrator<12>&>(policed) : *integrator;
-  // Rows (energy, forces) are computed here, only for the rows written
-  // (every `every`-th step), never for the steps in between.
-  auto observe = [&](double t, const physics::ForceDrivenState& x) {
-    TrajectoryRow row;
-    row.time = t;
-    row.state = x;
-    row.energy = physics::mechanicalEnergy(system.dynamics(), x).total();
-    if (system.coupled()) {
-      const physics::CouplingForces forces = system.couplingForces(t, x);
-      // Face coordinates: the components along the body's x and y axes,
-      // the first two columns of R (eq. 6).
-      using namespace physics::force_slot;
-      const physics::Mat3 R = physics::makeOrientation(x[u_o], x[v_o], x[psi]).R;
-      row.faceForce = physics::Vec2(R.col(0).dot(forces.modelForce), R.col(1).dot(forces.modelForce));
-      row.handForce = forces.handForce;
-    }
-    return row;
-  };
+  auto observe = [&](double t, const physics::ForceDrivenState& x) { return rowOf(system, t, x); };
   return integrate<12>(system, stepping, scenario_.initial, settings_, observe, onRow);
+}
+
+RunSummary ScenarioRun::runRotation(const physics::ForceDrivenSystem& rows, const RowCallback& onRow) const {
+  physics::RotationDrivenSystem system(scenario_.params);
+  applyDrive(scenario_, system);
+  auto integrator = makeIntegrator<13>(settings_.integrator, settings_.tolerance);
+  const int substeps = substepsFor<13>(rows, *integrator, settings_, scenario_.params.pointMass);
+  physics::SubsteppingIntegrator<13> policed(*integrator, substeps);
+  physics::Integrator<13>& stepping = substeps > 1 ? static_cast<physics::Integrator<13>&>(policed) : *integrator;
+
+  const physics::RotationState x0 = physics::toRotationState(scenario_.initial);
+  physics::HeadingTracker heading(physics::quaternionOf(x0), scenario_.initial[physics::force_slot::psi]);
+  auto follow = [&](const physics::RotationState& x) { heading.follow(physics::quaternionOf(x)); };
+  auto observe = [&](double t, const physics::RotationState& x) {
+    follow(x);  // an event row lies inside a step that afterStep has not seen
+    return rowOf(rows, t, physics::toContactState(x, heading.psi(physics::quaternionOf(x))));
+  };
+  return integrate<13>(system, stepping, x0, settings_, observe, onRow, follow);
 }
 
 }  // namespace hemiroll::game

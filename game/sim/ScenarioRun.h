@@ -1,7 +1,7 @@
 #pragma once
 // Runs a loaded scenario headless: builds the model its drive asks for (the
 // 8-state prescribed drive for "rose", the 12-state force-driven model for
-// "free" and "proxy"), steps it with the chosen integrator through the
+// "free" and "proxy", or its 13-state quaternion form on request), steps it with the chosen integrator through the
 // event-locating Stepper, and hands sampled rows to a callback.
 //
 // Rows: the initial state, every `every`-th step, the last step, and, when a
@@ -11,6 +11,8 @@
 #include <string>
 
 #include "engine/physics/DomainEvents.h"
+#include "engine/physics/ForceDrivenSystem.h"
+#include "engine/physics/RotationDrivenSystem.h"
 #include "engine/script/ScenarioDef.h"
 #include "game/sim/TrajectoryRow.h"
 
@@ -23,6 +25,9 @@ struct RunSettings {
   long long every = 1;           // a row every N steps
   double tolerance = 1e-8;       // adaptive integrators only (--tol); they step freely and
                                  // the rows on the timeStep grid come from dense output
+  // Free and proxy drives only: the quaternion form integrates the same
+  // physics on 13 states (RotationDrivenSystem.h); rows are the 12-state.
+  physics::OrientationForm orientation = physics::OrientationForm::ContactAngles;
 };
 
 struct RunSummary {
@@ -51,6 +56,7 @@ class ScenarioRun {
  private:
   RunSummary runRose(const RowCallback& onRow) const;
   RunSummary runForceDriven(const RowCallback& onRow) const;
+  RunSummary runRotation(const physics::ForceDrivenSystem& rows, const RowCallback& onRow) const;
 
   script::ScenarioDef scenario_;  // a copy: shares the proxy (and its Lua state), owns the rest
   RunSettings settings_;

@@ -22,6 +22,8 @@ TEST(SimOptions, ReadsEveryFlagInBothSpellings) {
   EXPECT_EQ(r.options.integrator, "rk4");
   EXPECT_EQ(r.options.every, 10);
   EXPECT_EQ(r.options.outPath, "x.csv");
+  EXPECT_EQ(parse({"s.lua", "--orientation=quaternion"}).options.orientation, "quaternion");
+  EXPECT_EQ(parse({"s.lua", "--tol", "1e-9"}).options.tolerance, 1e-9);
 }
 
 TEST(SimOptions, DefaultsLeaveTheScenarioInCharge) {
@@ -32,6 +34,7 @@ TEST(SimOptions, DefaultsLeaveTheScenarioInCharge) {
   EXPECT_FALSE(r.options.integrator.has_value());
   EXPECT_EQ(r.options.every, 1);
   EXPECT_FALSE(r.options.outPath.has_value());
+  EXPECT_FALSE(r.options.orientation.has_value());
 }
 
 TEST(SimOptions, HelpAndListNeedNoScenario) {
@@ -56,6 +59,8 @@ TEST(SimOptions, BadFlagsAreExplained) {
   EXPECT_THAT(parse({"s.lua", "--integrator", "euler"}).error, HasSubstr("unknown integrator 'euler' (available: rk4"));
   EXPECT_THAT(parse({"s.lua", "t.lua"}).error, HasSubstr("unexpected argument 't.lua'"));
   EXPECT_THAT(parse({"s.lua", "--out="}).error, HasSubstr("--out needs a file name"));
+  EXPECT_THAT(parse({"s.lua", "--orientation", "euler"}).error,
+              HasSubstr("--orientation needs 'angles' or 'quaternion', got 'euler'"));
 }
 
 }  // namespace

@@ -141,6 +141,21 @@ TEST(ScenarioLoader, MistakesNameTheFieldPath) {
   EXPECT_THAT(errorOf("return {drive = {kind = 'free'}, integrator = 'euler'}"),
               HasSubstr("s.lua: integrator: unknown integrator 'euler' (available: rk4"));
   EXPECT_THAT(errorOf("return {drive = {kind = 'free'}, durration = 1}"), HasSubstr("s.lua: unknown field 'durration'"));
+  EXPECT_THAT(errorOf("return {drive = {kind = 'free'}, tol = 0}"), HasSubstr("s.lua: tol: must be a positive number"));
+  EXPECT_THAT(errorOf("return {drive = {kind = 'free'}, tol = 'tight'}"), HasSubstr("s.lua: tol: expected a number"));
+  EXPECT_THAT(errorOf("return {drive = {kind = 'free'}, orientation = 'euler'}"),
+              HasSubstr("s.lua: orientation: must be 'angles' or 'quaternion', got 'euler'"));
+  EXPECT_THAT(errorOf("return {drive = {kind = 'rose'}, orientation = 'quaternion'}"),
+              HasSubstr("s.lua: orientation: the rose drive"));
+}
+
+TEST(ScenarioLoader, ToleranceAndOrientationAreOptional) {
+  const ScenarioDef plain = load("return {drive = {kind = 'free'}}");
+  EXPECT_FALSE(plain.tolerance.has_value());
+  EXPECT_FALSE(plain.orientation.has_value());
+  const ScenarioDef set = load("return {drive = {kind = 'free'}, integrator = 'dop853', tol = 1e-10, orientation = 'quaternion'}");
+  EXPECT_EQ(set.tolerance, 1e-10);
+  EXPECT_EQ(set.orientation, "quaternion");
 }
 
 TEST(ScenarioLoader, FilesAreNamedAsGiven) {

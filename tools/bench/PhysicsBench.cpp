@@ -57,6 +57,42 @@ void BM_ForceDrivenRk4Step(benchmark::State& state) {
 }
 BENCHMARK(BM_ForceDrivenRk4Step)->Arg(0)->Arg(1)->ArgName("coupledM3");
 
+// The same model with the orientation as a quaternion (RotationDrivenSystem.h),
+// on the same state.
+void configure(RotationDrivenSystem& system, int mode) {
+  if (mode == 0) system.setFree();
+  if (mode == 1) {
+    system.setCoupling(CouplingDef{});
+    system.holdProxy(typicalProxy());
+  }
+}
+
+void BM_RotationDerivative(benchmark::State& state) {
+  RotationDrivenSystem system{HemisphereParams{}};
+  configure(system, static_cast<int>(state.range(0)));
+  RotationState x = toRotationState(typicalState()), dx;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(x);
+    system.derivative(0.0, x, dx);
+    benchmark::DoNotOptimize(dx);
+  }
+}
+BENCHMARK(BM_RotationDerivative)->Arg(0)->Arg(1)->ArgName("coupledM3");
+
+void BM_RotationRk4Step(benchmark::State& state) {
+  RotationDrivenSystem system{HemisphereParams{}};
+  configure(system, static_cast<int>(state.range(0)));
+  RungeKutta4<13> rk4;
+  const RotationState x0 = toRotationState(typicalState());
+  RotationState x = x0;
+  for (auto _ : state) {
+    rk4.step(system, 0.0, x, 1e-3);
+    benchmark::DoNotOptimize(x);
+    x = x0;
+  }
+}
+BENCHMARK(BM_RotationRk4Step)->Arg(0)->Arg(1)->ArgName("coupledM3");
+
 BodyState typicalBody() { return typicalState().tail<8>(); }
 
 void BM_PrescribedDerivative(benchmark::State& state) {
