@@ -7,18 +7,26 @@
 // "file:line" or "file: field.path", typed reads of script data
 // (LuaTableReader), and loading scenario files into plain C++ definitions
 // (ScenarioLoader -> ScenarioDef), including proxy trajectories written in
-// Lua (LuaProxyTrajectory).
+// Lua (LuaProxyTrajectory). Levels (docs/LEVELS.md): loading level files
+// (LevelLoader -> LevelDef + LevelScript, every error "file:line:"), judging
+// a declared task natively every tick (TaskJudge, Lua-free, allocation-free),
+// trial summaries (TrialSummaryAccumulator), level callbacks and scoring
+// (LevelScript), and the engine services `require` (scripts/ modules only)
+// and the seeded `hemiroll.random` (ScriptModules, EngineRandom).
 //
 // What a script can reach: the base functions assert, error, getmetatable,
 // ipairs, next, pairs, pcall, print (to stderr), rawequal, rawlen, select,
 // setmetatable (without __gc), tonumber, tostring, type, xpcall, _VERSION, _G;
 // copies of string (no dump), table, math (no random, randomseed) and utf8.
 // Nothing else: no io, os, debug, package, coroutine, load, loadfile, dofile,
-// require, collectgarbage, rawget, rawset; the string metatable is hidden.
+// collectgarbage, rawget, rawset; `require` only where the engine installs
+// its own (ScriptModules.h); the string metatable is hidden.
 //
-// Must not know: the game, commands, command-line flags, files other than the
-// script it is asked to load, threads, clocks, devices, rendering, levels'
-// rules. Depends on engine/physics (for the definitions it fills) and Lua.
+// Must not know: any particular level (the judge evaluates what a level
+// declares), the game, commands, command-line flags, files other than the
+// script it is asked to load and modules under the scripts/ directory it is
+// given, threads, clocks, devices, rendering. Depends on engine/physics (for
+// the definitions it fills) and Lua.
 //
 // Known limit: the quota counts Lua VM instructions, so a single long call
 // into a C library function (a pathological string.find pattern) is not
@@ -26,6 +34,10 @@
 
 #include "engine/script/ConstantProxyTrajectory.h"
 #include "engine/script/DriveDef.h"
+#include "engine/script/EngineRandom.h"
+#include "engine/script/LevelDef.h"
+#include "engine/script/LevelLoader.h"
+#include "engine/script/LevelScript.h"
 #include "engine/script/LuaProxyTrajectory.h"
 #include "engine/script/LuaSandbox.h"
 #include "engine/script/LuaTableReader.h"
@@ -33,3 +45,8 @@
 #include "engine/script/ScenarioDef.h"
 #include "engine/script/ScenarioLoader.h"
 #include "engine/script/ScriptError.h"
+#include "engine/script/ScriptModules.h"
+#include "engine/script/TaskDef.h"
+#include "engine/script/TaskJudge.h"
+#include "engine/script/TrialSummary.h"
+#include "engine/script/TrialSummaryAccumulator.h"

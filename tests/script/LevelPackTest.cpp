@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <set>
 
 #include "engine/script/LevelLoader.h"
@@ -123,6 +124,29 @@ TEST(LevelPack, ThePapersLevelIsThePapersExperiment) {
         ADD_FAILURE() << "unexpected target";
     }
   }
+}
+
+// docs/LEVELS.md's complete example is a level that loads, with every key.
+TEST(LevelPack, TheDocumentedExampleLoads) {
+  std::ifstream doc(std::string(HEMIROLL_SOURCE_DIR) + "/docs/LEVELS.md");
+  std::string line, example;
+  bool inside = false;
+  while (std::getline(doc, line)) {
+    if (!inside && line == "```lua") {
+      inside = true;
+    } else if (inside && line == "```") {
+      break;
+    } else if (inside) {
+      example += line + "\n";
+    }
+  }
+  ASSERT_FALSE(example.empty());
+  const LevelDef d = LevelLoader(repositoryOptions()).loadSource(example, "example.lua").def;
+  EXPECT_EQ(d.name, "Example");
+  EXPECT_EQ(d.task.forbidden.size(), 1u);
+  EXPECT_TRUE(d.task.failure.area.has_value());
+  EXPECT_TRUE(d.scoring.hasMedals);
+  EXPECT_TRUE(d.callbacks.onStart && d.callbacks.onUpdate && d.callbacks.onSuccess && d.callbacks.onFail);
 }
 
 TEST(LevelPack, TheRoseSceneIsWatchOnlyAndNamesItsBot) {
