@@ -32,6 +32,12 @@ void syncDirectory(const std::filesystem::path& dir) {
 DurableFile::DurableFile(const std::filesystem::path& path, const char* mode) : path_(path) {
   file_ = std::fopen(path.c_str(), mode);
   if (file_ == nullptr) throw RecordError(systemError(path, "cannot open for writing"));
+  // 1 MiB: more than a second of rows even at 1 kHz, so data reaches the
+  // kernel when flush() says so (the recorders' interval), predictably, in
+  // few large writes - not whenever a small default buffer happens to fill.
+  // (glibc ignores the size unless it is given the buffer.)
+  buffer_ = std::make_unique<char[]>(kBufferSize);
+  std::setvbuf(file_, buffer_.get(), _IOFBF, kBufferSize);
   syncDirectory(path.parent_path());
 }
 

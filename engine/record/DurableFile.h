@@ -6,6 +6,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <string_view>
 
@@ -32,6 +33,8 @@ class DurableFile {
   void fail(const char* what);
 
   std::filesystem::path path_;
+  static constexpr std::size_t kBufferSize = std::size_t{1} << 20;
+  std::unique_ptr<char[]> buffer_;  // stdio's buffer; outlives file_ (closed in the destructor's body)
   std::FILE* file_ = nullptr;
   std::string error_;
 };

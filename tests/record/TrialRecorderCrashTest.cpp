@@ -1,6 +1,9 @@
 // kill -9 in the middle of a trial: a finished trial stays intact and the
 // interrupted one keeps everything but its last moments.
 //
+// The rows reach the kernel only when the recorder flushes (its 1 MiB stdio
+// buffer never fills in 0.5 s here), so this checks the interval flush.
+//
 // The bound: the writer drains the ring every pollInterval (5 ms) and
 // flushes (fflush: the rows reach the kernel, which keeps them when the
 // process dies; fdatasync: the disk) every flushInterval (0.5 s). Rows still
@@ -44,7 +47,9 @@ TEST(TrialRecorderCrashTest, KillNineLosesAtMostTheLastSecondAndNoFinishedTrial)
   while (!std::filesystem::exists(csv) && std::chrono::steady_clock::now() < giveUp)
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
   const bool started = std::filesystem::exists(csv);
-  if (started) std::this_thread::sleep_for(std::chrono::seconds(2));
+  // 2.45 s: just before the fifth 0.5 s flush after the recorder opened,
+  // near the worst case (a kill just after a flush would lose almost nothing).
+  if (started) std::this_thread::sleep_for(std::chrono::milliseconds(2450));
   const double killedAt = steadySeconds();
   kill(pid, SIGKILL);
   int status = 0;
