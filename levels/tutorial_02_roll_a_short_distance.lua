@@ -1,15 +1,18 @@
 -- Tutorial 2: roll a short distance. The same forgiving masses as tutorial
 -- 1. Rolling without slipping ties the contact point to the tilt: in a
--- straight roll u_a = -R u_o, so 5 mm of travel needs a tilt of 0.125 rad,
--- held by keeping the mass point about 2 cm off centre. (`hemiroll sim`: a
--- proxy held at x = 1.5 cm gives u_a = 3.5 mm; the contact point grows
--- with the offset.)
+-- straight roll u_a = -R u_o, so 4 mm of travel needs a tilt of 0.1 rad,
+-- held by keeping the mass point off centre. Checked with `hemiroll sim`
+-- (M3, kr 250, kv 10): a proxy eased over 2 s to x = 1.9, 2.1 or 2.3 cm (at
+-- the face's height) and held there settles at u_a = 3.9, 4.05 and 4.1 mm,
+-- inside this band, and the hold is met at about 3.9 s. A static proxy
+-- gains little beyond that (3.5 mm at 4 cm: the mass point is pulled down
+-- the tilted face), so the target sits where a simple controller gets.
 
 return {
   name = "02 Roll a short distance",
-  description = "Roll the contact point 5 mm along +x and keep the hemisphere still there for 2 s. " ..
-    "Technique: move the mass point slowly towards +x (about 2 cm) and wait; the hemisphere " ..
-    "rolls until it balances. Adjust a little at a time: more offset, more travel.",
+  description = "Roll the contact point 4 mm along +x and keep the hemisphere still there for 2 s. " ..
+    "Technique: move the mass point slowly about 2 cm towards +x and wait; the hemisphere " ..
+    "rolls until it balances. Adjust a little at a time.",
   author = "hemiroll",
   difficulty = 1,
   version = "1",
@@ -19,7 +22,7 @@ return {
 
   task = {
     targets = {
-      u_ca = { value = { 0.005, 0 }, tol = 0.0015 },
+      u_ca = { value = { 0.004, 0 }, tol = 0.0015 },
       omega_norm = { value = 0, tol = 0.02 },
       p_dot = { value = { 0, 0 }, tol = 0.003 },
     },
@@ -36,6 +39,6 @@ return {
   scene = { contact_trace = true, plots = { "u_a", "x_p" }, record_rate = 100 },
   callbacks = {
     rate = 10,
-    on_start = function(state) hemiroll.message("Roll the contact point 5 mm towards +x", 4) end,
+    on_start = function(state) hemiroll.message("Roll the contact point 4 mm towards +x", 4) end,
   },
 }
