@@ -12,11 +12,14 @@
 // engagement with ramp-in/out, watchdogs for device errors, stale data and
 // instability), and the 1 kHz servo loop (ServoLoop: pacing on absolute
 // deadlines, catch-up policy, timing statistics, the lock-free snapshot
-// buffer and command ring, the headless mode).
+// buffer and command ring, the headless mode), and what the loop hands to
+// a recorder (RecordRow.h: rows, per-tick inputs and applied commands into
+// caller-owned lock-free rings) and the ReplayDevice that plays inputs back.
 //
 // Must not know: rendering, windows or SDL (devices that need SDL live in
 // engine/haptics/devices, a library of their own, with the factory that
-// makes devices by name), Lua, files, levels, recordings.
+// makes devices by name), Lua, files, levels, recording formats (the rings'
+// consumers and every file live in engine/record).
 // Depends on engine/physics and the standard library (and the POSIX clock,
 // scheduler and, for the UDP bridge, sockets) only.
 
@@ -30,6 +33,8 @@
 #include "engine/haptics/MouseDevice.h"
 #include "engine/haptics/PointerMapping.h"
 #include "engine/haptics/RealtimeThread.h"
+#include "engine/haptics/RecordRow.h"
+#include "engine/haptics/ReplayDevice.h"
 #include "engine/haptics/ScriptedDevice.h"
 #include "engine/haptics/ServoClock.h"
 #include "engine/haptics/ServoCommand.h"
