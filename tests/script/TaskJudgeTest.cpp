@@ -5,8 +5,31 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
+#include <new>
+
+#include "engine/script/TrialSummaryAccumulator.h"
+
+// Counts heap allocations while armed, to check that judging a tick
+// allocates nothing (the replacement covers the whole script_tests program;
+// one per program: add other counters here, not in a second file).
+namespace {
+std::atomic<bool> gCountAllocations{false};
+std::atomic<long> gAllocations{0};
+}  // namespace
+
+// noinline: GCC otherwise inlines these into the standard containers and
+// warns (falsely) that free() meets a pointer from operator new.
+[[gnu::noinline]] void* operator new(std::size_t size) {
+  if (gCountAllocations.load(std::memory_order_relaxed)) gAllocations.fetch_add(1, std::memory_order_relaxed);
+  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
+  throw std::bad_alloc();
+}
+[[gnu::noinline]] void operator delete(void* p) noexcept { std::free(p); }
+[[gnu::noinline]] void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace hemiroll::script {
 namespace {
@@ -259,6 +282,52 @@ TEST(TaskJudge, SlotTargetsListTheCurrentStage) {
   for (int i = 0; i < 12; ++i) EXPECT_EQ(set[static_cast<std::size_t>(i)], i == slot::v_a) << i;
   EXPECT_EQ(value[slot::v_a], -0.04);
   EXPECT_EQ(tolerance[slot::v_a], 0.004);
+}
+
+TEST(TaskJudge, JudgingATickAllocatesNothing) {
+  // Stages, zones, an area, the hold timer running and resetting, a stage
+  // passed and success: every path of judge() and of the summary's add().
+  TaskDef task;
+  for (double x : {0.001, 0.002}) {
+    StageDef stage;
+    stage.targets.push_back({TaskVariable::u_a, x, 0.0005});
+    stage.targets.push_back({TaskVariable::omega_norm, 0.0, 1.0});
+    stage.targets.push_back({TaskVariable::psi, 0.0, 1.0});
+    stage.hold = 0.05;
+    task.stages.push_back(stage);
+  }
+  ZoneDef pit;
+  pit.center = {0.5, 0.5};
+  pit.radius = 0.01;
+  task.forbidden = {pit, pit};
+  ZoneDef area;
+  area.shape = ZoneShape::Box;
+  area.min = {-1, -1};
+  area.max = {1, 1};
+  task.failure.area = area;
+  TaskJudge judge(task);
+  TrialSummaryAccumulator summary;
+  {  // self-check: the counter sees a direct call (a new-expression may be elided)
+    const bool previous = gCountAllocations.exchange(true);
+    void* volatile probe = ::operator new(16);
+    ::operator delete(probe);
+    gCountAllocations = previous;
+  }
+  ASSERT_EQ(gAllocations.exchange(0), 1);
+  gCountAllocations = true;
+  JudgeInput in;
+  EffortInput effort;
+  for (int tick = 0; tick < 400 && !judge.finished(); ++tick) {
+    in.time = tick * 0.001;
+    in.state[slot::u_a] = 0.00001 * tick;  // through stage 1's band, then stage 2's
+    effort.proxyPosition.x() = in.state[slot::u_a];
+    judge.judge(in);
+    summary.add(in, effort, judge);
+  }
+  gCountAllocations = false;
+  EXPECT_EQ(gAllocations.load(), 0);
+  EXPECT_EQ(judge.outcome(), TrialOutcome::Success);  // every path was taken
+  EXPECT_EQ(judge.stagesPassed(), 2);
 }
 
 }  // namespace
