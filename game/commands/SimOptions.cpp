@@ -56,7 +56,7 @@ const char* simUsage() {
          "  --orientation F    free and proxy drives: integrate the orientation as the\n"
          "                     paper's contact angles ('angles', 12 states, default) or\n"
          "                     as a quaternion ('quaternion', 13 states, no trigonometry\n"
-         "                     per evaluation: ~25% faster RK4 steps); the CSV is the same\n"
+         "                     per evaluation); the CSV is the same\n"
          "  --every N          write a row every N steps (default 1); the first and last\n"
          "                     states are always written\n"
          "  --out FILE.csv     write the CSV to FILE instead of stdout\n"
