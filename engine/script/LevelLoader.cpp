@@ -3,6 +3,7 @@
 #include <lua.hpp>
 
 #include <cctype>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -82,12 +83,16 @@ void readParams(const LuaTableReader& top, physics::HemisphereParams& params) {
     top.fail(problem.substr(0, problem.find(' ')), problem.substr(problem.find(' ') + 1));
 }
 
-void readInitial(const LuaTableReader& top, physics::ForceDrivenState& initial) {
+void readInitial(const LuaTableReader& top, double radius, physics::ForceDrivenState& initial) {
   initial.setZero();
   const auto table = top.table("initial");
   if (!table) return;
   rejectUnknownLevelKeys(*table, {"x_p", "y_p", "xd_p", "yd_p", "w_x", "w_y", "w_z", "u_a", "v_a", "u_o", "v_o", "psi"});
   for (int slot = 0; slot < 12; ++slot) initial[slot] = table->number(physics::kStateNames[slot], 0.0);
+  // A start off the face would end every trial on its first tick.
+  if (std::hypot(initial[physics::force_slot::x_p], initial[physics::force_slot::y_p]) >= radius)
+    table->fail(table->typeOf("x_p") != LUA_TNIL ? "x_p" : "y_p",
+                "the mass point must start on the face: |(x_p, y_p)| < R = " + std::to_string(radius) + " m");
 }
 
 void readForce(const LuaTableReader& top, physics::CouplingDef& coupling) {
@@ -192,7 +197,7 @@ LevelDef readLevel(lua_State* L, const std::string& name) {
   def.source = name;
   readMeta(top, def);
   readParams(top, def.params);
-  readInitial(top, def.initial);
+  readInitial(top, def.params.radius, def.initial);
   readForce(top, def.coupling);
   readDevice(top, def.mapping);
   readLevelTask(top, def.task);

@@ -152,6 +152,7 @@ INSTANTIATE_TEST_SUITE_P(
         ErrorCase{"return {\n name = 'x',\n params = {\n  R = -1 } }", "lv.lua:4: params.R: (radius) must be"},
         ErrorCase{"return {\n name = 'x',\n params = {\n  m_p = 0/0 } }", "lv.lua:4: params.m_p: expected a finite number, got nan"},
         ErrorCase{"return {\n description = 'no name' }", "lv.lua:1: name: missing"},
+        ErrorCase{"return { name = 'x', initial = {\n y_p = 0.05 } }", "lv.lua:2: initial.y_p: the mass point must start on the face"},
         ErrorCase{"return {\n name = 'x',\n difficulty = 7 }", "lv.lua:3: difficulty: expected a whole number from 1 to 5"},
         ErrorCase{"return {\n name = 'x',\n force = {\n  method = 'M4' } }", "lv.lua:4: force.method: unknown method 'M4'"},
         ErrorCase{"return {\n name = 'x',\n force = {\n  kr = -5 } }", "lv.lua:4: force.kr: (stiffness) must be"},
