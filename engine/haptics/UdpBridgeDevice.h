@@ -22,7 +22,9 @@
 // paused with that sentence as the reason. This is the bridge's own clock,
 // independent of the loop's tick count, so a stalled servo thread cannot
 // hide a silent client. ForceSafety's stale-data watchdog (staleLimit, also
-// 10 ms of non-fresh reads) is a second, independent line behind it.
+// 10 ms of non-fresh reads) is a second, independent line behind it. Before
+// the first good state error() says that no client has spoken yet, so start
+// the loop after waitForClient().
 //
 // Security: binds to 127.0.0.1 by default. Any other address (a device on
 // another machine) must be asked for with allowNonLoopback, because anyone

@@ -14,7 +14,8 @@
 //     SDL_JoystickGetAxis/GetButton/GetAttached, SDL_HapticUpdateEffect.
 //     SDL serialises joystick access with its own joystick lock, so this may
 //     run beside the main thread's event pump (which then also sees the
-//     axis events: harmless).
+//     axis events: harmless). A program with no event pump should call
+//     SDL_JoystickEventState(SDL_IGNORE) so that those events do not pile up.
 //   - the servo thread: read() and sendForce() call no SDL at all (SDL's
 //     joystick lock is shared with the UI thread, and a USB write may block),
 //     they only swap TripleBuffers with the device thread.
