@@ -54,14 +54,8 @@ void ForceDrivenSystem::derivative(double t, const ForceDrivenState& x, ForceDri
   dxdt[y_p] = x[yd_p];
   dxdt[xd_p] = pDDot.x;
   dxdt[yd_p] = pDDot.y;
-  dxdt[w_x] = omegaDot.x;
-  dxdt[w_y] = omegaDot.y;
-  dxdt[w_z] = omegaDot.z;
-  dxdt[u_a] = rates.u_a;
-  dxdt[v_a] = rates.v_a;
-  dxdt[u_o] = rates.u_o;
-  dxdt[v_o] = rates.v_o;
-  dxdt[psi] = rates.psi;
+  static_assert(w_x == body && psi == body + 7, "slots 4..11 are the body state");
+  writeBodyRates(dxdt.data() + body, omegaDot, rates);
 }
 
 DomainMargins ForceDrivenSystem::margins(double, const ForceDrivenState& x) const {

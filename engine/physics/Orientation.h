@@ -31,6 +31,19 @@ inline ContactRates contactRates(double cosV, double sinV, double cosPsi, double
   const double secV = 1.0 / cosV;
   return ContactRates{radius * w.y, -radius * w.x, -a * secV, -w.x * cosPsi + w.y * sinPsi, -w.z - a * sinV * secV};
 }
+// The hemisphere's eight rates (w', then the contact rates) in the slot order
+// of body_slot, which is also slots 4..11 of the 12-state model: both models
+// write their tail through this one function.
+inline void writeBodyRates(double* out, const Real3& omegaDot, const ContactRates& r) {
+  out[0] = omegaDot.x;
+  out[1] = omegaDot.y;
+  out[2] = omegaDot.z;
+  out[3] = r.u_a;
+  out[4] = r.v_a;
+  out[5] = r.u_o;
+  out[6] = r.v_o;
+  out[7] = r.psi;
+}
 inline ContactRates contactRates(const Orientation& o, double radius, const Vec3& omega) {
   return contactRates(o.cv, o.sv, o.cpsi, o.spsi, radius, Real3::from(omega));
 }

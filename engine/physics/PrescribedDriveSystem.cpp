@@ -26,14 +26,8 @@ void PrescribedDriveSystem::derivative(double t, const BodyState& x, BodyState& 
   // Eq. (47): p'' does not enter the hemisphere's dynamics.
   const Real3 omegaDot = f.toBase(dynamics_.bodyAcceleration(g, omegaH, 0.0).omegaDot);
   const ContactRates rates = contactRates(f.cv, f.sv, f.cpsi, f.spsi, c.params.radius, omega);
-  dxdt[w_x] = omegaDot.x;
-  dxdt[w_y] = omegaDot.y;
-  dxdt[w_z] = omegaDot.z;
-  dxdt[u_a] = rates.u_a;
-  dxdt[v_a] = rates.v_a;
-  dxdt[u_o] = rates.u_o;
-  dxdt[v_o] = rates.v_o;
-  dxdt[psi] = rates.psi;
+  static_assert(w_x == 0 && psi == 7, "the body state is w, then the contact coordinates");
+  writeBodyRates(dxdt.data(), omegaDot, rates);
 }
 
 DomainMargins PrescribedDriveSystem::margins(double t, const BodyState& x) const {
