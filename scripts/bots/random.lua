@@ -6,14 +6,15 @@
 -- Behaviour, all from hemiroll.random (seeded by --seed, so a seed replays
 -- exactly):
 --   - it starts on the mass point (so the coupling engages), then heads for
---     a new random goal every 0.05-0.5 s at a random speed up to 1.5 m/s
---     (the device's velocity guard trips at 2 m/s): goals near the mass
---     point, anywhere in the device's workspace, or far outside it (the
---     device stops at its workspace sphere);
+--     a new random goal every 0.05-0.5 s: mostly (70%) a point within 2 cm
+--     of the mass point at up to 5 cm/s, which keeps the trial going; else
+--     anywhere in the device's workspace (20%) or far outside it (10%: the
+--     device stops at its workspace sphere) at up to 1.5 m/s (the device's
+--     velocity guard trips at 2 m/s);
 --   - "wild" seeds (seed % 3 == 2) also teleport now and then: one tick from
 --     here to a random point, which trips the velocity guard;
 --   - "nan" seeds (seed % 5 == 4) return NaN once, at a random time in the
---     first second: the trial must end with "bot error: ... nan ...".
+--     first 0.3 s: the trial must end with "bot error: ... nan ...".
 
 local bot = { name = "random" }
 
@@ -31,18 +32,20 @@ function bot.init(level, seed)
   workspace = level.workspace
   dt = level.dt
   wild = seed % 3 == 2
-  nan_time = (seed % 5 == 4) and uniform(0.1, 1.0) or nil
+  nan_time = (seed % 5 == 4) and uniform(0.05, 0.3) or nil
 end
 
 local function pick_goal(obs)
-  local kind = rand(3)
+  local kind = rand()
   local m = obs.mass
-  if kind == 1 then      -- near the mass point
+  if kind < 0.7 then      -- near the mass point, gently
     gx, gy, gz = m.x + uniform(-0.02, 0.02), m.y + uniform(-0.02, 0.02), m.z + uniform(-0.01, 0.01)
-  elseif kind == 2 then  -- anywhere in (a cube around) the workspace
+    speed = uniform(0.001, 0.05)
+    return
+  elseif kind < 0.9 then  -- anywhere in (a cube around) the workspace
     local r = workspace.radius
     gx, gy, gz = workspace.x + uniform(-r, r), workspace.y + uniform(-r, r), workspace.z + uniform(-r, r)
-  else                   -- far outside: the device must stop at its sphere
+  else                    -- far outside: the device must stop at its sphere
     gx, gy, gz = uniform(-1e3, 1e3), uniform(-1e3, 1e3), uniform(-1e3, 1e3)
   end
   speed = uniform(0.01, 1.5)

@@ -85,10 +85,15 @@ TEST(HeadlessTrial, ABotErrorEndsTheTrialWithItsPosition) {
 }
 
 TEST(HeadlessTrial, NanFromABotIsABotErrorNotANanState) {
-  // random.lua returns NaN once for seeds with seed % 5 == 4.
-  const TrialResult r = play(kOpenLevel, kBots + "random.lua", 4);
-  EXPECT_THAT(r.reason, HasSubstr("returned nan"));
-  EXPECT_THAT(r.reason, HasSubstr("random.lua:"));
+  const test::TempDirectory dir;
+  const std::string bot = dir.write("nan.lua",
+                                    "return {name = 'nan', act = function(t, obs)\n"
+                                    "  local m = obs.mass\n"
+                                    "  return m.x, t > 0.1 and 0 / 0 or m.y, m.z\nend}");
+  const TrialResult r = play(kOpenLevel, bot, 0);
+  EXPECT_EQ(r.outcome, TrialOutcome::Failure);
+  EXPECT_THAT(r.reason, HasSubstr("nan.lua:1: act(t = 0.1"));
+  EXPECT_THAT(r.reason, HasSubstr("returned nan as value 2 (y)"));
   EXPECT_TRUE(r.finalState.allFinite());
 }
 

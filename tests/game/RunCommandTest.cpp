@@ -1,0 +1,216 @@
+// `hemiroll run`, end to end: the real binary in a child process. One JSON
+// line on stdout with the contract's keys; exit 0 success, 1 failure, 2 bad
+// input with one message naming the file and line; reproducible per seed.
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <regex>
+#include <string>
+#include <vector>
+
+#include "tests/support/ProcessRunner.h"
+#include "tests/support/TempDirectory.h"
+
+namespace hemiroll::test {
+namespace {
+
+using ::testing::HasSubstr;
+using ::testing::MatchesRegex;
+using ::testing::Not;
+
+const std::string kBinary = HEMIROLL_BINARY;
+const std::string kSource = HEMIROLL_SOURCE_DIR;
+const std::string kSolver = kSource + "/scripts/bots/tutorial_solver.lua";
+const std::string kRandom = kSource + "/scripts/bots/random.lua";
+
+ProcessResult hemiroll(const std::vector<std::string>& args) { return runProcess(kBinary, args); }
+
+// A level that ends quickly either way: the target is the start (held
+// 0.2 s) unless the bot moves, and the time limit is 1 s.
+constexpr const char* kQuickLevel = R"lua(
+return {
+  name = "quick \"test\" level",
+  params = { R = 0.04, m_s = 1.0, m_p = 0.2, g = 9.81 },
+  task = { targets = { u_ca = { value = {0, 0}, tol = 0.004 } }, hold = 0.2, time_limit = 1 },
+  score = function(s) return s.success and 10 or 0 end,
+  medals = { bronze = 1, silver = 5, gold = 10 },
+}
+)lua";
+constexpr const char* kUnreachable = R"lua(
+return { name = "far", task = { targets = { u_ca = { value = {0.5, 0}, tol = 0.004 } }, time_limit = 0.3 } }
+)lua";
+constexpr const char* kHoldBot = R"lua(
+local x, y, z
+return { name = "hold", act = function(t, obs)
+  if not x then x, y, z = obs.mass.x, obs.mass.y, obs.mass.z end
+  return x, y, z
+end }
+)lua";
+
+// The JSON line with wall_time cut out (the one key that may differ).
+std::string withoutWallTime(const std::string& line) {
+  return std::regex_replace(line, std::regex(R"("wall_time":[^,}]*)"), "\"wall_time\":_");
+}
+
+const char* kLinePattern =
+    R"re(\{"level":"[^"]*","bot":"[^"]*","outcome":"(success|failure)","reason":"([^"\\]|\\.)*",)re"
+    R"re("time":[-0-9.e]+,"score":([-0-9.e]+|null),"medal":"(none|bronze|silver|gold)","ticks":[0-9]+,)re"
+    R"re("wall_time":[0-9.e-]+\})re";
+
+// stdout holds exactly one line: the result.
+std::string onlyLine(const std::string& out) {
+  EXPECT_EQ(std::count(out.begin(), out.end(), '\n'), 1) << out;
+  return out.substr(0, out.find('\n'));
+}
+
+TEST(RunCommand, SuccessPrintsOneJsonLineAndExitsZero) {
+  const TempDirectory dir;
+  const ProcessResult r = hemiroll({"run", dir.write("quick.lua", kQuickLevel), "--bot", dir.write("hold.lua", kHoldBot)});
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_THAT(onlyLine(r.out), MatchesRegex(kLinePattern));
+  EXPECT_THAT(r.out, HasSubstr(R"("outcome":"success","reason":"target held")"));
+  EXPECT_THAT(r.out, HasSubstr(R"("score":10,"medal":"gold")"));
+  // The hold counts from the first tick inside (t = 1 ms): met at 0.201 s.
+  EXPECT_THAT(r.out, HasSubstr(R"("ticks":201,)"));
+}
+
+TEST(RunCommand, FailureExitsOneAndNamesTheReason) {
+  const TempDirectory dir;
+  const ProcessResult r = hemiroll({"run", dir.write("far.lua", kUnreachable), "--bot", dir.write("hold.lua", kHoldBot)});
+  EXPECT_EQ(r.exitCode, 1) << r.err;
+  EXPECT_THAT(onlyLine(r.out), MatchesRegex(kLinePattern));
+  EXPECT_THAT(r.out, HasSubstr(R"("outcome":"failure","reason":"time limit reached")"));
+  EXPECT_THAT(r.out, HasSubstr(R"("score":null)")) << "a level without a score function has no score";
+}
+
+TEST(RunCommand, BotErrorIsAFailureWithFileAndLine) {
+  const TempDirectory dir;
+  const std::string bot = dir.write("broken_act.lua", "return {name = 'b', act = function(t, obs)\n  return nil + 1\nend}");
+  const ProcessResult r = hemiroll({"run", dir.write("quick.lua", kQuickLevel), "--bot", bot});
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_THAT(r.out, HasSubstr(R"("reason":"bot error: )"));
+  EXPECT_THAT(r.out, HasSubstr("broken_act.lua:2: attempt to perform arithmetic on a nil value"));
+}
+
+TEST(RunCommand, SameSeedSameLineApartFromWallTime) {
+  const std::string level = kSource + "/levels/paper_reaching.lua";
+  const ProcessResult a = hemiroll({"run", level, "--bot", kRandom, "--seed", "11"});
+  const ProcessResult b = hemiroll({"run", level, "--bot", kRandom, "--seed", "11"});
+  const ProcessResult c = hemiroll({"run", level, "--bot", kRandom, "--seed", "12"});
+  ASSERT_THAT(onlyLine(a.out), MatchesRegex(kLinePattern));
+  EXPECT_EQ(withoutWallTime(a.out), withoutWallTime(b.out));
+  EXPECT_NE(withoutWallTime(a.out), withoutWallTime(c.out)) << "the seed must matter";
+}
+
+TEST(RunCommand, StringsAreEscaped) {
+  const TempDirectory dir;
+  const std::string bot = dir.write("quote.lua", "return {name = 'q', act = function(t, obs)\n  error('say \"no\"\\\\')\nend}");
+  const ProcessResult r = hemiroll({"run", dir.write("quick.lua", kQuickLevel), "--bot", bot});
+  EXPECT_THAT(onlyLine(r.out), MatchesRegex(kLinePattern));
+  EXPECT_THAT(r.out, HasSubstr(R"(say \"no\"\\)"));
+}
+
+TEST(RunCommand, RealtimeTakesRealTime) {
+  const TempDirectory dir;
+  const ProcessResult r =
+      hemiroll({"run", dir.write("far.lua", kUnreachable), "--bot", dir.write("hold.lua", kHoldBot), "--realtime"});
+  EXPECT_EQ(r.exitCode, 1) << r.err;
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(r.out, m, std::regex(R"("wall_time":([0-9.e-]+))")));
+  // 300 ticks paced at 1 kHz cannot finish sooner than 0.3 s of wall time.
+  EXPECT_GE(std::stod(m[1]), 0.3);
+}
+
+TEST(RunCommand, RecordWritesTheTrialAndAResultsRow) {
+  const TempDirectory dir;
+  const std::string level = dir.write("quick.lua", kQuickLevel), bot = dir.write("hold.lua", kHoldBot);
+  const std::string out = (dir.path() / "session").string();
+  for (int i = 0; i < 2; ++i) {
+    const ProcessResult r = hemiroll({"run", level, "--bot", bot, "--record", out});
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+  }
+  namespace fs = std::filesystem;
+  EXPECT_TRUE(fs::exists(fs::path(out) / "quick_hold_seed0.csv"));
+  EXPECT_TRUE(fs::exists(fs::path(out) / "quick_hold_seed0.json"));
+  EXPECT_TRUE(fs::exists(fs::path(out) / "quick_hold_seed0-2.csv")) << "a rerun never overwrites";
+  const ProcessResult results = runProcess("/bin/cat", {(fs::path(out) / "results.csv").string()});
+  EXPECT_THAT(results.out, HasSubstr("quick_hold_seed0-2"));
+  EXPECT_THAT(results.out, HasSubstr("success"));
+}
+
+// ---- bad input: exit 2, one message naming the file (and line), no JSON ----
+
+struct BadRun {
+  const char* name;
+  const char* level;     // nullptr: the quick level
+  const char* bot;       // nullptr: the hold bot
+  const char* expected;  // in stderr
+};
+
+std::ostream& operator<<(std::ostream& out, const BadRun& b) { return out << b.name; }
+
+class BadRunTest : public ::testing::TestWithParam<BadRun> {};
+
+TEST_P(BadRunTest, ExitsTwoNamingFileAndLine) {
+  const BadRun& bad = GetParam();
+  const TempDirectory dir;
+  const std::string level = dir.write("level.lua", bad.level ? bad.level : kQuickLevel);
+  const std::string bot = dir.write("bot.lua", bad.bot ? bad.bot : kHoldBot);
+  const ProcessResult r = hemiroll({"run", level, "--bot", bot});
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  EXPECT_THAT(r.err, HasSubstr(bad.expected));
+  EXPECT_EQ(r.out, "") << "no result line for input that could not be loaded";
+}
+
+const BadRun kBadRuns[] = {
+    {"LevelSyntax", "return {\n  name = 'x',\n  task = = 1,\n}", nullptr, "level.lua:3:"},
+    {"LevelEscape", "local f = io.open('/etc/passwd')\nreturn {name = 'x'}", nullptr, "level.lua:1:"},
+    {"LevelNoName", "return {}", nullptr, "level.lua:"},
+    {"BotSyntax", nullptr, "return {\n  name = 'b',\n  act = function( end}", "bot.lua:3:"},
+    {"BotEscapeOs", nullptr, "os.execute('true')\nreturn {}", "bot.lua:1:"},
+    {"BotEscapeRequire", nullptr, "local x = require('../../etc/passwd')\nreturn {}", "bot.lua:1:"},
+    {"BotEscapeLoad", nullptr, "load('return 1')()\nreturn {}", "bot.lua:1:"},
+    {"BotEndlessTopLevel", nullptr, "while true do end", "bot.lua:1: instruction quota"},
+    {"BotNoAct", nullptr, "return {name = 'b'}", "bot.lua: act: missing"},
+    {"BotNotATable", nullptr, "return 42", "bot.lua: a bot must return a table"},
+};
+
+INSTANTIATE_TEST_SUITE_P(Inputs, BadRunTest, ::testing::ValuesIn(kBadRuns),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+TEST(RunCommand, MissingFilesExitTwo) {
+  const TempDirectory dir;
+  const std::string bot = dir.write("hold.lua", kHoldBot);
+  ProcessResult r = hemiroll({"run", "/nonexistent/level.lua", "--bot", bot});
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_THAT(r.err, HasSubstr("/nonexistent/level.lua"));
+  EXPECT_THAT(r.err, HasSubstr("cannot open"));
+  r = hemiroll({"run", dir.write("quick.lua", kQuickLevel), "--bot", "/nonexistent/bot.lua"});
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_THAT(r.err, HasSubstr("bot.lua: cannot open file"));
+}
+
+TEST(RunCommand, WrongFlagsExitTwoWithUsage) {
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"run"}, {"run", "l.lua"}, {"run", "l.lua", "--bot", "b.lua", "--speed", "2"},
+        {"run", "l.lua", "--bot", "b.lua", "--seed", "minus one"}}) {
+    const ProcessResult r = hemiroll(args);
+    EXPECT_EQ(r.exitCode, 2) << args.size();
+    EXPECT_THAT(r.err, HasSubstr("usage: hemiroll run"));
+    EXPECT_EQ(r.out, "");
+  }
+}
+
+TEST(RunCommand, HelpListsTheCommand) {
+  EXPECT_THAT(hemiroll({"--help"}).out, HasSubstr("run"));
+  const ProcessResult r = hemiroll({"run", "--help"});
+  EXPECT_EQ(r.exitCode, 0);
+  EXPECT_THAT(r.out, HasSubstr("--bot BOT.lua"));
+  EXPECT_THAT(r.out, Not(HasSubstr("not yet available")));
+}
+
+}  // namespace
+}  // namespace hemiroll::test
