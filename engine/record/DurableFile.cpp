@@ -31,7 +31,9 @@ void syncDirectory(const std::filesystem::path& dir) {
 
 DurableFile::DurableFile(const std::filesystem::path& path, const char* mode) : path_(path) {
   file_ = std::fopen(path.c_str(), mode);
-  if (file_ == nullptr) throw RecordError(systemError(path, "cannot open for writing"));
+  if (file_ == nullptr)
+    throw RecordError(errno == EEXIST ? path.string() + ": already exists (a recording is never overwritten)"
+                                      : systemError(path, "cannot open for writing"));
   // 1 MiB: more than a second of rows even at 1 kHz, so data reaches the
   // kernel when flush() says so (the recorders' interval), predictably, in
   // few large writes - not whenever a small default buffer happens to fill.

@@ -14,7 +14,8 @@ namespace hemiroll::record {
 
 class DurableFile {
  public:
-  // mode as fopen ("wb", "r+b", "ab"). Throws RecordError naming the file.
+  // mode as fopen ("wb", "ab"; "wbx" refuses an existing file). Throws
+  // RecordError naming the file.
   DurableFile(const std::filesystem::path& path, const char* mode);
   ~DurableFile();
   DurableFile(const DurableFile&) = delete;

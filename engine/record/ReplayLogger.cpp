@@ -11,7 +11,7 @@ namespace hemiroll::record {
 
 struct ReplayLogger::Impl {
   Impl(const std::filesystem::path& p, const ReplayHeader& h, double poll)
-      : path(p), header(h), pollInterval(poll), file(p, "wb") {}
+      : path(p), header(h), pollInterval(poll), file(p, "wbx") {}
 
   void write(const haptics::TickInput& in) {
     if (header.tickCount == 0) header.firstTick = in.tick;

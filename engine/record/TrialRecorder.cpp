@@ -44,7 +44,7 @@ struct TrialRecorder::Impl {
         options(o),
         csvPath(dir / (m.trialId + ".csv")),
         sidecarPath(dir / (m.trialId + ".json")),
-        csv(csvPath, "wb") {}
+        csv(csvPath, "wbx") {}
 
   void write(const haptics::RecordRow& row) {
     line.clear();
@@ -108,6 +108,11 @@ TrialRecorder::TrialRecorder(const std::filesystem::path& dir, const TrialMeta& 
     throw RecordError("trial id '" + meta.trialId + "' is not a safe file name (letters, digits, '-', '_', '.')");
   if (!(meta.tickPeriod > 0.0) || meta.recordEvery < 1)
     throw RecordError("trial '" + meta.trialId + "': tickPeriod must be positive and recordEvery at least 1");
+  // Never over an earlier trial's files: the CSV is created exclusively, and
+  // a sidecar without its CSV is refused too.
+  const std::filesystem::path sidecar = dir / (meta.trialId + ".json");
+  if (std::filesystem::exists(sidecar))
+    throw RecordError(sidecar.string() + ": already exists (a recording is never overwritten)");
   TrialMeta m = meta;
   if (m.softwareVersion.empty()) m.softwareVersion = softwareVersion();
   impl_ = std::make_unique<Impl>(dir, m, options);

@@ -37,7 +37,8 @@ struct RecorderOptions {
 class TrialRecorder {
  public:
   // Creates the files (the directory must exist). Throws RecordError naming
-  // the file when it cannot, or when meta.trialId is not a safe file name.
+  // the file when it cannot, when it exists already (a trial is never
+  // overwritten), or when meta.trialId is not a safe file name.
   TrialRecorder(const std::filesystem::path& dir, const TrialMeta& meta, const RecorderOptions& options = {});
   // Without finish(): stops the writer, flushes, and leaves the sidecar
   // saying "complete": false (the trial did not end properly).

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <limits>
 
 #include "tests/record/support/RecordRows.h"
@@ -45,6 +46,22 @@ TEST(CsvRowFormatTest, EdgeValuesRoundTripExactly) {
     double back = 1.0;
     ASSERT_TRUE(parseDouble(text, back)) << text;
     EXPECT_EQ(std::bit_cast<std::uint64_t>(back), std::bit_cast<std::uint64_t>(v)) << text;
+  }
+}
+
+// A model that went non-finite is recorded as such (the text of NaN carries
+// no payload, so only its class and the sign of infinities are kept).
+TEST(CsvRowFormatTest, NonFiniteValuesStayNonFinite) {
+  for (const double v : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
+                         -std::numeric_limits<double>::infinity()}) {
+    std::string text;
+    appendDouble(v, text);
+    double back = 0.0;
+    ASSERT_TRUE(parseDouble(text, back)) << text;
+    EXPECT_EQ(std::isnan(back), std::isnan(v)) << text;
+    if (!std::isnan(v)) {
+      EXPECT_EQ(back, v) << text;
+    }
   }
 }
 

@@ -203,6 +203,7 @@ TEST(ReplayLoggerTest, LostInputsMakeTheLogUnusable) {
   EXPECT_THROW(ReplayReader::load(path), RecordError);
   ReplayLogger dropped(dir.path() / "dropped.replay", {});
   EXPECT_THROW(dropped.finish(5), RecordError);
+  EXPECT_THROW(ReplayLogger(path, {}), RecordError);  // never over an existing log
 }
 
 }  // namespace

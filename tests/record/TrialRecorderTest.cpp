@@ -117,6 +117,35 @@ TEST(TrialRecorderTest, RejectsUnsafeTrialIdsAndMissingFolders) {
   }
 }
 
+TEST(TrialRecorderTest, NeverOverwritesAnEarlierTrial) {
+  hemiroll::test::TempDirectory dir;
+  TrialMeta meta;
+  meta.trialId = "t6";
+  {
+    TrialRecorder first(dir.path(), meta);
+    first.push(test::randomRows(1, 6)[0]);
+    first.finish(TrialEnd{});
+  }
+  const std::string before = readWholeFile(dir.path() / "t6.csv");
+  try {
+    TrialRecorder second(dir.path(), meta);
+    FAIL() << "no error";
+  } catch (const RecordError& e) {
+    EXPECT_NE(std::string(e.what()).find("t6.json: already exists"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(readWholeFile(dir.path() / "t6.csv"), before);
+  EXPECT_TRUE(RecordingReader::load(dir.path() / "t6.csv").status.complete);
+  // A CSV alone (its sidecar lost) is not overwritten either.
+  std::filesystem::remove(dir.path() / "t6.json");
+  try {
+    TrialRecorder third(dir.path(), meta);
+    FAIL() << "no error";
+  } catch (const RecordError& e) {
+    EXPECT_NE(std::string(e.what()).find("t6.csv: already exists"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(readWholeFile(dir.path() / "t6.csv"), before);
+}
+
 TEST(TrialRecorderTest, IsMovable) {
   hemiroll::test::TempDirectory dir;
   TrialMeta meta;
