@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <cmath>
@@ -41,10 +42,27 @@ ServoCommand command(ServoCommandKind kind) {
   return c;
 }
 
+// Whether this process may use SCHED_FIFO (asked on a throwaway thread).
+bool fifoPermitted() {
+  RealtimeStatus status = RealtimeStatus::NotRequested;
+  std::thread([&] { status = requestFifoScheduling(1).status; }).join();
+  return status == RealtimeStatus::Fifo;
+}
+
 TEST(UdpBridgeEndToEndTest, ProxyFollowsTheClientForcesAreClampedAndSilenceZeroesThem) {
+  // All three threads (servo loop, bridge receiver, client) ask for
+  // SCHED_FIFO: under the normal scheduler a loaded 2-core machine (ctest -j2)
+  // starves one of them for over 10 ms now and then (two CPU hogs: 8 failures
+  // in 8 runs; with SCHED_FIFO 8 passes), which the watchdogs rightly report
+  // as a silent device or a stalled loop. Where SCHED_FIFO is not permitted
+  // (a container without CAP_SYS_NICE) they get 100 ms instead, so that the
+  // test measures the bridge rather than the machine's load; the 10 ms limit
+  // itself is tested exactly, on a fake clock, in UdpBridgeDeviceTest.
+  const double watchdog = fifoPermitted() ? 0.010 : 0.100;
   UdpBridgeDef bridgeDef;
   bridgeDef.port = 0;
   bridgeDef.spec.maxForce = kMaxForce;
+  bridgeDef.watchdog = watchdog;
   UdpBridgeDevice bridge(bridgeDef);
   ASSERT_TRUE(bridge.open()) << bridge.error();
 
@@ -54,12 +72,10 @@ TEST(UdpBridgeEndToEndTest, ProxyFollowsTheClientForcesAreClampedAndSilenceZeroe
                              "--circle-frequency", "1", "--realtime-priority", "70"});
   ASSERT_TRUE(bridge.waitForClient(5.0)) << "the client sent nothing; stderr: " << client.err();
 
-  // All three threads (servo loop, bridge receiver, client) ask for
-  // SCHED_FIFO: under the normal scheduler a loaded 2-core machine (ctest -j2)
-  // can starve one of them for over 10 ms, which the watchdog rightly
-  // reports as a silent device.
   ServoLoopDef def;
   def.safety.engagement.rampTime = 0.1;
+  def.safety.staleLimit = watchdog;
+  def.safety.maxTickLateness = std::max(def.safety.maxTickLateness, watchdog);
   ServoLoop loop(def, bridge);
   ASSERT_TRUE(loop.post(command(ServoCommandKind::Engage)));
   loop.start();
@@ -120,7 +136,7 @@ TEST(UdpBridgeEndToEndTest, ProxyFollowsTheClientForcesAreClampedAndSilenceZeroe
             << c.outOfOrder << ", lost " << c.lost << ", forces sent " << c.forcesSent << ", send failures "
             << c.sendFailures << "; fault seen " << detectMs << " ms after the client exited\n"
             << "[client]\n" << client.out() << "[scheduling] loop: " << loop.realtime().note
-            << "; receiver: " << bridge.receiverRealtime().note << "\n";
+            << "; receiver: " << bridge.receiverRealtime().note << "; watchdog " << watchdog * 1e3 << " ms\n";
   ASSERT_TRUE(summary.count("forces_received")) << client.out() << client.err();
   EXPECT_GT(summary.at("forces_received"), 1000.0);  // ~1.5 s at 1 kHz, plus the time before the loop started
   EXPECT_LE(summary.at("max_force_N"), kMaxForce);

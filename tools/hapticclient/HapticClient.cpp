@@ -103,14 +103,17 @@ ClientSummary runClient(const ClientOptions& o, const std::atomic<bool>& stop) {
   const auto total = static_cast<std::uint64_t>(std::llround(o.duration * o.rate));
   ForceInbox inbox(total);
   std::uint8_t buffer[udp::kMaxDatagram];
-  std::int64_t deadline = clock.now();
+  const std::int64_t start = clock.now();
+  std::int64_t deadline = start;
   std::uint64_t k = 0;
 
   while (!stop.load(std::memory_order_relaxed)) {
     const std::int64_t now = clock.now();
     if (now >= deadline) {
       if (k == total) break;  // the last force had one period to arrive
-      const haptics::DeviceReading r = hand.read(static_cast<double>(k) / o.rate);
+      // The hand lives on wall time, as a real one does: a client that was
+      // held up finds its hand where the intent has gone meanwhile.
+      const haptics::DeviceReading r = hand.read(static_cast<double>(now - start) * 1e-9);
       udp::StateMessage m;
       m.sequence = static_cast<std::uint32_t>(k + 1);
       m.timestampNs = static_cast<std::uint64_t>(now);
