@@ -58,6 +58,8 @@ class TrialRecorder {
   // (disk full, ...), naming the file. At most once.
   void finish(const TrialEnd& end);
 
+  // Counts as the writer left them: read them on the writing thread, or once
+  // the writer is stopped (finish(), stopWriter()).
   std::uint64_t rows() const;
   // Rows whose tick did not follow the previous row's tick by recordEvery.
   std::uint64_t tickGaps() const;
