@@ -72,7 +72,7 @@ ParsedOptions parseClientOptions(const std::vector<std::string>& args) {
       if (!number || x < 1 || x > 65535 || x != std::floor(x)) return bad("an integer port in 1..65535");
       o.port = static_cast<std::uint16_t>(x);
     } else if (flag == "--duration") {
-      if (!number || !(x > 0.0)) return bad("a positive number of seconds");
+      if (!number || !(x > 0.0 && x <= 1e6)) return bad("a positive number of seconds, at most 1e6");
       o.duration = x;
     } else if (flag == "--rate") {
       if (!number || !(x >= 1.0 && x <= 10000.0)) return bad("a rate in 1..10000 Hz");

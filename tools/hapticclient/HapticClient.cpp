@@ -42,7 +42,9 @@ double quantile(std::vector<double> v, double q) {
 // Receives what the bridge sent; keeps the sequence and round-trip books.
 class ForceInbox {
  public:
-  explicit ForceInbox(std::size_t expected) { rtts_.reserve(expected); }
+  // Room for ten minutes at 1 kHz up front; longer runs grow the vector
+  // (the client is not a servo tick) rather than reserving gigabytes.
+  explicit ForceInbox(std::uint64_t expected) { rtts_.reserve(std::min<std::uint64_t>(expected, 600'000)); }
 
   void take(const udp::ForceMessage& m, std::int64_t now, SimulatedHandDevice& hand, ClientSummary& s) {
     ++s.forcesReceived;

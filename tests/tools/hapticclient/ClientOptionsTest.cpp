@@ -36,7 +36,8 @@ TEST(ClientOptionsTest, BadValuesNameTheFlagAndTheValue) {
   const Case cases[] = {
       {{"--port", "70000"}, "--port needs an integer port in 1..65535, got '70000'"},
       {{"--port", "12.5"}, "--port needs an integer port in 1..65535, got '12.5'"},
-      {{"--duration", "-1"}, "--duration needs a positive number of seconds, got '-1'"},
+      {{"--duration", "-1"}, "--duration needs a positive number of seconds, at most 1e6, got '-1'"},
+      {{"--duration", "1e300"}, "--duration needs a positive number of seconds, at most 1e6, got '1e300'"},
       {{"--rate", "abc"}, "--rate needs a rate in 1..10000 Hz, got 'abc'"},
       {{"--hand-mass", "0"}, "--hand-mass needs a positive mass in kg, got '0'"},
       {{"--hand-stiffness", "nan"}, "--hand-stiffness needs a stiffness >= 0 in N/m, got 'nan'"},
