@@ -1,5 +1,6 @@
 // hemiroll-haptic-client: the UDP bridge's reference client (HapticClient.h).
-// Exit codes: 0 ran, 1 could not run (socket), 2 bad command line.
+// Exit codes: 0 ran, 1 could not run (socket), 2 bad command line,
+// 3 ran but no force ever came back (no bridge listening?).
 
 #include <atomic>
 #include <csignal>
@@ -35,5 +36,10 @@ int main(int argc, char** argv) {
     return 1;
   }
   printSummary(s, std::cout);
+  if (s.forcesReceived == 0) {
+    std::cerr << "hemiroll-haptic-client: no force came back from " << parsed.options.host << ":"
+              << parsed.options.port << "; is hemiroll's UDP bridge listening there?\n";
+    return 3;
+  }
   return 0;
 }
