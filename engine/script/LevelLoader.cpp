@@ -4,6 +4,7 @@
 
 #include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -233,10 +234,14 @@ LoadedLevel load(const LevelLoadOptions& options, std::string_view source, const
 }
 
 std::string readText(const std::string& path) {
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error))
+    throw ScriptError(path + ":1: " + (std::filesystem::exists(path, error) ? "not a regular file" : "no such file"));
   std::ifstream in(path, std::ios::binary);
   if (!in) throw ScriptError(path + ":1: cannot open the level file");
   std::ostringstream content;
   content << in.rdbuf();
+  if (in.bad()) throw ScriptError(path + ":1: cannot read the level file");
   std::string text = content.str();
   // As the stand-alone interpreter: skip a UTF-8 byte-order mark, blank out a
   // first line starting with '#', keeping line numbers.

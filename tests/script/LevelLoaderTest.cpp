@@ -225,8 +225,20 @@ TEST(LevelLoader, LoadFileNamesThePathAndReadsModules) {
   }
 }
 
-TEST(LevelLoader, MissingFileIsAClearError) {
-  EXPECT_THROW(LevelLoader().loadFile("/nonexistent/level.lua"), ScriptError);
+TEST(LevelLoader, MissingFileOrDirectoryIsAClearError) {
+  try {
+    LevelLoader().loadFile("/nonexistent/level.lua");
+    FAIL() << "expected a ScriptError";
+  } catch (const ScriptError& e) {
+    EXPECT_STREQ(e.what(), "/nonexistent/level.lua:1: no such file");
+  }
+  const test::TempDirectory dir;
+  try {
+    LevelLoader().loadFile(dir.path().string());
+    FAIL() << "expected a ScriptError";
+  } catch (const ScriptError& e) {
+    EXPECT_EQ(std::string(e.what()), dir.path().string() + ":1: not a regular file");
+  }
 }
 
 }  // namespace
