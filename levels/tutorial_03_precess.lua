@@ -5,7 +5,9 @@
 -- That turn is the precession the paper's subjects used (Sec. 4.2).
 -- `hemiroll sim`, same masses: the mass point circled at 1.8 cm, 8 s per
 -- turn, counter-clockwise, runs the contact round a 3.8 mm circle and turns
--- psi by about -0.11 rad per turn.
+-- psi by about -0.11 rad per turn. A proxy eased out to 1.8 cm, circled once
+-- (t = 2 .. 10.5 s) and eased back to the centre by 12 s passes the gates at
+-- 0.7, 3.5, 5.5 and 7.5 s and meets the last stage at 15.4 s (psi -0.125).
 
 local r = 0.0035  -- gate radius on the plane [m]
 local gate = 0.0015
