@@ -13,24 +13,25 @@ namespace {
 constexpr double kFar = 1e6;
 }  // namespace
 
-Vec3 BotDevice::toDevice(const Vec3& scenePosition) {
+Vec3 BotDevice::toDevice(const Vec3& scenePosition, const haptics::WorkspaceMapping& mapping,
+                         const haptics::DeviceSpec& spec, bool& limited) {
   const Vec3 bounded = scenePosition.cwiseMax(-kFar).cwiseMin(kFar);
-  Vec3 p = (bounded - mapping_.offset) / mapping_.scale;
+  Vec3 p = (bounded - mapping.offset) / mapping.scale;
   const double reach = p.norm();
-  limited_ = reach > spec_.workspaceRadius;
-  if (limited_) p *= spec_.workspaceRadius / reach;
+  limited = reach > spec.workspaceRadius;
+  if (limited) p *= spec.workspaceRadius / reach;
   return p;
 }
 
 void BotDevice::setPose(const Vec3& scenePosition) {
-  const Vec3 p = toDevice(scenePosition);
+  const Vec3 p = toDevice(scenePosition, mapping_, spec_, limited_);
   reading_.velocity = hasPose_ ? Vec3((p - reading_.position) / period_) : Vec3::Zero();
   reading_.position = p;
   hasPose_ = true;
 }
 
 void BotDevice::setPose(const Vec3& scenePosition, const Vec3& sceneVelocity) {
-  reading_.position = toDevice(scenePosition);
+  reading_.position = toDevice(scenePosition, mapping_, spec_, limited_);
   // At the stop the device does not move outwards, whatever the bot says.
   reading_.velocity = limited_ ? Vec3::Zero() : Vec3(sceneVelocity / mapping_.scale);
   hasPose_ = true;

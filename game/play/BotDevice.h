@@ -33,14 +33,17 @@ class BotDevice final : public haptics::HapticDevice {
   void setPose(const Vec3& scenePosition);
   void setPose(const Vec3& scenePosition, const Vec3& sceneVelocity);
 
+  // Scene -> device coordinates for a device of `spec` under `mapping`,
+  // stopped at the workspace sphere (`limited` says whether it was).
+  static Vec3 toDevice(const Vec3& scenePosition, const haptics::WorkspaceMapping& mapping,
+                       const haptics::DeviceSpec& spec, bool& limited);
+
   // The pose the device actually delivers, back in the scene (after the stop).
   Vec3 scenePosition() const { return mapping_.positionToScene(reading_.position); }
   const Vec3& lastForce() const { return lastForce_; }  // device frame [N]
   bool limited() const { return limited_; }             // the last pose was outside the workspace
 
  private:
-  Vec3 toDevice(const Vec3& scenePosition);
-
   haptics::DeviceSpec spec_;
   haptics::WorkspaceMapping mapping_;
   double period_;

@@ -4,12 +4,12 @@
 #include <chrono>
 #include <cmath>
 
-#include "engine/haptics/ServoClock.h"
 #include "engine/script/ScriptError.h"
 #include "engine/script/TaskJudge.h"
 #include "engine/script/TrialSummaryAccumulator.h"
 #include "game/play/BotDevice.h"
 #include "game/play/ObservationBuilder.h"
+#include "game/play/RealtimeTrial.h"
 
 namespace hemiroll::game {
 
@@ -63,6 +63,7 @@ script::BotLevelInfo HeadlessTrial::levelInfoFor(const script::LevelDef& level, 
 }
 
 TrialResult HeadlessTrial::run() {
+  if (settings_.realtime) return RealtimeTrial(level_, bot_, settings_).run();
   const auto wallStart = std::chrono::steady_clock::now();
   const script::LevelDef& def = level_.def;
   script::LevelScript& levelScript = *level_.script;
@@ -96,9 +97,6 @@ TrialResult HeadlessTrial::run() {
 
   const double period = loopDef.period;
   const auto maxTicks = static_cast<std::uint64_t>(std::ceil(def.task.timeLimit * settings_.maxTimeFactor / period)) + 1;
-  haptics::SteadyServoClock clock;
-  const auto periodNs = static_cast<std::int64_t>(std::llround(period * 1e9));
-  std::int64_t deadline = settings_.realtime ? clock.now() + periodNs : 0;
 
   while (!judge.finished() && loop.ticks() < maxTicks) {
     observer.fill(loop.time(), loop.state(), snapshot, judge, obs);
@@ -115,10 +113,6 @@ TrialResult HeadlessTrial::run() {
     else
       device.setPose(vec(action.position));
 
-    if (settings_.realtime) {
-      clock.waitUntil(deadline);
-      deadline += periodNs;
-    }
     loop.tick();
     loop.latest(snapshot);
 

@@ -7,12 +7,11 @@
 //   -> LevelScript::update (on_update at the level's rate, on_success/on_fail)
 // until the judge ends the trial; then the level's score function.
 //
-// Headless (the default) runs ticks back to back with no clock: as fast as
-// the CPU allows and bit-for-bit deterministic for the same level, bot and
-// seed. `realtime` paces the same ticks at the servo period on absolute
-// deadlines (SteadyServoClock), on the calling thread: the bot still runs
-// inside each tick, which real-time play with a person never does (there the
-// servo loop owns its thread and no Lua runs in it). docs/RUN.md says so.
+// Headless (the default) runs ticks back to back on the calling thread with
+// no clock: as fast as the CPU allows and bit-for-bit deterministic for the
+// same level, bot and seed. `realtime` hands the trial to RealtimeTrial: the
+// servo loop on its own thread at 1 kHz, the bot on this thread at 500 Hz
+// with a lock-free hand-over (no Lua in the servo thread).
 //
 // Ends early, as a failure with a reason, when the bot fails ("bot error:
 // file:line: ...", from init or act), when a safety watchdog trips ("safety:
@@ -33,7 +32,7 @@ namespace hemiroll::game {
 
 struct TrialSettings {
   std::uint64_t seed = 0;    // handed to the bot's init (the level was loaded with it)
-  bool realtime = false;     // pace ticks at the servo period
+  bool realtime = false;     // servo thread at 1 kHz, bot beside it (RealtimeTrial)
   // Safety margin on the length of a trial: the judge ends it at the level's
   // time limit; this cap only guards against a level that never ends.
   double maxTimeFactor = 1.01;
