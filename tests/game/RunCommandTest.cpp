@@ -126,11 +126,19 @@ TEST(RunCommand, RealtimeTakesRealTime) {
 
 TEST(RunCommand, RealtimeSucceedsWithTheBotBesideTheServoThread) {
   const TempDirectory dir;
-  const ProcessResult r =
-      hemiroll({"run", dir.write("quick.lua", kQuickLevel), "--bot", dir.write("hold.lua", kHoldBot), "--realtime"});
-  EXPECT_EQ(r.exitCode, 0) << r.err << r.out;
-  EXPECT_THAT(onlyLine(r.out), MatchesRegex(kLinePattern));
-  EXPECT_THAT(r.out, HasSubstr(R"("outcome":"success","reason":"target held")"));
+  const std::string level = dir.write("quick.lua", kQuickLevel), bot = dir.write("hold.lua", kHoldBot);
+  // On a loaded machine the servo thread can be starved past its overrun
+  // watchdog (20 ms); that is the environment, not the code, so such an
+  // attempt is retried (at most three); any other failure fails the test.
+  for (int attempt = 0; attempt < 3; ++attempt) {
+    const ProcessResult r = hemiroll({"run", level, "--bot", bot, "--realtime"});
+    if (r.out.find("safety: servo loop stalled") != std::string::npos) continue;
+    EXPECT_EQ(r.exitCode, 0) << r.err << r.out;
+    EXPECT_THAT(onlyLine(r.out), MatchesRegex(kLinePattern));
+    EXPECT_THAT(r.out, HasSubstr(R"("outcome":"success","reason":"target held")"));
+    return;
+  }
+  ADD_FAILURE() << "the servo loop stalled in three attempts";
 }
 
 TEST(RunCommand, RecordWritesTheTrialAndAResultsRow) {
