@@ -94,6 +94,7 @@ TrialResult HeadlessTrial::run() {
     judge.finish(TrialOutcome::Failure, std::string("bot error: ") + e.what(), loop.time());
   }
   levelScript.start(levelView, judge);
+  if (judge.finished()) levelScript.update(levelView, judge);  // on_fail for a failed init
 
   const double period = loopDef.period;
   const auto maxTicks = static_cast<std::uint64_t>(std::ceil(def.task.timeLimit * settings_.maxTimeFactor / period)) + 1;

@@ -79,7 +79,10 @@ TrialResult RealtimeTrial::run() {
     judge.finish(TrialOutcome::Failure, std::string("bot error: ") + e.what(), 0.0);
   }
   levelScript.start(levelView, judge);
-  if (!judge.finished()) callBot(0.0);  // a pose before the first tick
+  if (judge.finished())
+    levelScript.update(levelView, judge);  // on_fail for a failed init
+  else
+    callBot(0.0);  // a pose before the first tick
 
   long long judgedTicks = 0;
   if (!judge.finished()) {

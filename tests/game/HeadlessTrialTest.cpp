@@ -84,6 +84,28 @@ TEST(HeadlessTrial, ABotErrorEndsTheTrialWithItsPosition) {
   EXPECT_TRUE(r.finalState.allFinite());
 }
 
+TEST(HeadlessTrial, AFailedInitEndsTheTrialAndTheLevelHearsOfIt) {
+  // The level's on_fail ends the trial a second way; the first reason stays.
+  constexpr const char* kListening = R"lua(
+return { name = "listening", task = { targets = { u_ca = { value = {0.5, 0}, tol = 0.004 } }, time_limit = 1 },
+  callbacks = { on_fail = function(state, reason) hemiroll.message("heard: " .. reason) end } }
+)lua";
+  const test::TempDirectory dir;
+  const std::string bot = dir.write("bad_init.lua",
+                                    "return {name = 'b', init = function(level, seed)\n  error('no level for me')\nend,\n"
+                                    "  act = function(t, obs) return 0, 0, 0 end}");
+  script::LoadedLevel l = level(kListening);
+  script::BotScript b(bot);
+  const TrialResult r = HeadlessTrial(l, b, TrialSettings{}).run();
+  EXPECT_EQ(r.outcome, TrialOutcome::Failure);
+  EXPECT_THAT(r.reason, HasSubstr("bot error: "));
+  EXPECT_THAT(r.reason, HasSubstr("bad_init.lua:2: no level for me"));
+  EXPECT_EQ(r.ticks, 0);
+  const std::vector<script::LevelMessage> messages = l.script->takeMessages();
+  ASSERT_EQ(messages.size(), 1u);
+  EXPECT_THAT(messages[0].text, HasSubstr("heard: bot error"));
+}
+
 TEST(HeadlessTrial, NanFromABotIsABotErrorNotANanState) {
   const test::TempDirectory dir;
   const std::string bot = dir.write("nan.lua",
