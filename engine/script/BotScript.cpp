@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <lua.hpp>
 
 #include "engine/physics/StateLayout.h"
@@ -111,6 +112,14 @@ void pushView(lua_State* L, ObservationViews* views, int kind, int codes) {
   lua_setmetatable(L, -2);
 }
 
+// A shipped bot lives in scripts/bots/, so its modules are in the directory
+// above its own; a bot elsewhere gets a level's rule (<dir>/../scripts).
+std::string botScriptsDir(const std::string& path) {
+  const std::filesystem::path directory = std::filesystem::path(path).parent_path();
+  if (directory.filename() == "bots") return (directory / "..").string();
+  return defaultScriptsDir(path);
+}
+
 std::string formatTime(double t) {
   char text[32];
   std::snprintf(text, sizeof text, "%.9g", t);
@@ -129,7 +138,7 @@ std::string definitionOf(lua_State* L, int index) {
 BotScript::BotScript(const std::string& path, const BotLoadOptions& options)
     : sandbox_(std::make_shared<LuaSandbox>(options.limits)), views_(std::make_unique<ObservationViews>()), path_(path) {
   lua_State* L = sandbox_->state();
-  installRequire(*sandbox_, options.scriptsDir.empty() ? defaultScriptsDir(path) : options.scriptsDir);
+  installRequire(*sandbox_, options.scriptsDir.empty() ? botScriptsDir(path) : options.scriptsDir);
   installRandom(*sandbox_, options.seed);
   sandbox_->runFile(path, 1);
   if (lua_type(L, -1) != LUA_TTABLE) {

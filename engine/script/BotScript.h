@@ -41,8 +41,9 @@ struct BotAction {
 
 struct BotLoadOptions {
   SandboxLimits limits;
-  // Where the bot's require() finds modules; "" = defaultScriptsDir(path)
-  // (scripts/bots/x.lua -> scripts/, so require("lib.vec") works).
+  // Where the bot's require() finds modules; "" = the directory above a
+  // bot in a bots/ directory (scripts/bots/x.lua -> scripts/, so
+  // require("lib.vec") finds scripts/lib/vec.lua), else defaultScriptsDir.
   std::string scriptsDir;
   std::uint64_t seed = 0;  // hemiroll.random's seed (also passed to init)
 };

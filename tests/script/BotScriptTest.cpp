@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <string>
 
 #include "engine/script/ScriptError.h"
@@ -210,6 +211,18 @@ TEST(BotScript, RequireAndRandomComeFromTheEngine) {
   options.seed = 8;
   BotScript c(path, options);
   EXPECT_NE(c.act({}).position[1], first.position[1]);
+}
+
+TEST(BotScript, ABotInBotsRequiresFromTheScriptsDirectoryAboveIt) {
+  const TempDirectory dir;
+  std::filesystem::create_directories(dir.path() / "scripts" / "bots");
+  std::filesystem::create_directories(dir.path() / "scripts" / "lib");
+  dir.write("scripts/lib/twice.lua", "return function(x) return 2 * x end");
+  const std::string path =
+      dir.write("scripts/bots/b.lua", "local twice = require('lib.twice')\n"
+                                      "return {name = 'b', act = function(t, obs) return twice(1), twice(2), twice(3) end}");
+  BotScript bot(path);
+  EXPECT_EQ(bot.act({}).position, (Triple3{2.0, 4.0, 6.0}));
 }
 
 }  // namespace
