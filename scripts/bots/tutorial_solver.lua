@@ -14,10 +14,11 @@
 --   one knob per direction sets either.
 --   The bot moves (X, Y) slowly in the direction that reduces the error
 --   (integral action, so the equilibrium itself is found without a model):
---     X' = ko (u_o - u_o*)      when u_o is a target (more +X tilts to -u_o)
---     X' = ka (u_a* - u_a)      when u_a is a target
---     Y' = ko (v_o* - v_o)      when v_o is a target (more +Y tilts to +v_o)
---     Y' = ka (v_a* - v_a)      when v_a is a target
+--     X' = ka (u_a* - u_a)      when u_a is a target (and u_o, if one, is
+--                               inside its band)
+--     X' = ko (u_o - u_o*)      else, when u_o is a target (more +X tilts to -u_o)
+--     Y' = ka (v_a* - v_a)      likewise for y
+--     Y' = ko (v_o* - v_o)      (more +Y tilts to +v_o)
 --   with the speed limited to vmax. The gains make the integral loop about
 --   three times slower than the hemisphere settles (~1.5 s), so the loop does
 --   not ring: ko = 0.05 m/(rad s), ka = 1.5 1/s, vmax = 1 cm/s. An upright,
@@ -73,9 +74,20 @@ function bot.act(t, obs)
     local cx, cy = precess(obs, want.psi, obs.tolerance.psi)
     return X + cx, Y + cy, m.z
   end
+  -- Per direction: the contact point when it is a target and the tilt (if
+  -- also a target) is inside its band; else the tilt.
+  local tol = obs.tolerance
   local vx, vy = 0, 0
-  if want.u_o then vx = ko * (s.u_o - want.u_o) elseif want.u_a then vx = ka * (want.u_a - s.u_a) end
-  if want.v_o then vy = ko * (want.v_o - s.v_o) elseif want.v_a then vy = ka * (want.v_a - s.v_a) end
+  if want.u_a and not (want.u_o and math.abs(s.u_o - want.u_o) > tol.u_o) then
+    vx = ka * (want.u_a - s.u_a)
+  elseif want.u_o then
+    vx = ko * (s.u_o - want.u_o)
+  end
+  if want.v_a and not (want.v_o and math.abs(s.v_o - want.v_o) > tol.v_o) then
+    vy = ka * (want.v_a - s.v_a)
+  elseif want.v_o then
+    vy = ko * (want.v_o - s.v_o)
+  end
   X = X + clamp(vx, vmax) * dt
   Y = Y + clamp(vy, vmax) * dt
   return X, Y, m.z
