@@ -12,7 +12,10 @@
 // a declared task natively every tick (TaskJudge, Lua-free, allocation-free),
 // trial summaries (TrialSummaryAccumulator), level callbacks and scoring
 // (LevelScript), and the engine services `require` (scripts/ modules only)
-// and the seeded `hemiroll.random` (ScriptModules, EngineRandom).
+// and the seeded `hemiroll.random` (ScriptModules, EngineRandom). Bots
+// (docs/RUN.md): loading a bot module in its own sandbox and calling its
+// init/act with a read-only observation view that allocates nothing per tick
+// (BotScript, BotObservation); the trial loop that feeds it is the game's.
 //
 // What a script can reach: the base functions assert, error, getmetatable,
 // ipairs, next, pairs, pcall, print (to stderr), rawequal, rawlen, select,
@@ -32,6 +35,8 @@
 // into a C library function (a pathological string.find pattern) is not
 // interrupted; the memory cap still bounds what it can allocate.
 
+#include "engine/script/BotObservation.h"
+#include "engine/script/BotScript.h"
 #include "engine/script/ConstantProxyTrajectory.h"
 #include "engine/script/DriveDef.h"
 #include "engine/script/EngineRandom.h"
