@@ -8,6 +8,7 @@
 
 #include "game/commands/ExitCode.h"
 #include "game/commands/RunCommand.h"
+#include "game/commands/ScreenshotCommand.h"
 #include "game/commands/SimCommand.h"
 #include "game/commands/VersionCommand.h"
 
@@ -22,6 +23,7 @@ struct CommandEntry {
 constexpr CommandEntry kCommands[] = {
     {"sim", "run a scenario's physics headless and write the trajectory as CSV", hemiroll::game::runSimCommand},
     {"run", "play a level with a bot (headless) and print the result as one JSON line", hemiroll::game::runRunCommand},
+    {"screenshot", "render one frame of a level offscreen and write it as a PNG", hemiroll::game::runScreenshotCommand},
     {"version", "print the version", hemiroll::game::runVersionCommand},
 };
 
@@ -29,7 +31,7 @@ void printUsage(std::ostream& out) {
   out << "usage: hemiroll COMMAND [ARGS...]\n"
          "       hemiroll --help | hemiroll COMMAND --help\n"
          "\ncommands:\n";
-  for (const CommandEntry& c : kCommands) out << "  " << c.name << std::string(10 - c.name.size(), ' ') << c.summary << "\n";
+  for (const CommandEntry& c : kCommands) out << "  " << c.name << std::string(12 - c.name.size(), ' ') << c.summary << "\n";
 }
 
 }  // namespace

@@ -11,6 +11,8 @@ packages=(
   libsundials-dev libboost-dev gnuplot-nox
   nlohmann-json3-dev
   libsdl2-dev
+  libepoxy-dev libassimp-dev libstb-dev
+  xvfb xauth libgl1-mesa-dri libglx-mesa0 libegl-mesa0
 )
 
 missing=()

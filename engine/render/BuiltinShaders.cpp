@@ -1,0 +1,59 @@
+#include "engine/render/BuiltinShaders.h"
+
+namespace hemiroll::render {
+
+const char* const kBuiltinSceneVertex = R"glsl(#version 330 core
+// hemiroll scene shader (engine/render/Renderer): one vertex layout for
+// everything; lit solids and unlit lines/decals share it.
+layout(location = 0) in vec3 aPosition;
+layout(location = 1) in vec3 aNormal;
+layout(location = 2) in vec4 aColor;
+
+uniform mat4 uModel;
+uniform mat4 uViewProjection;
+uniform mat3 uNormalMatrix;
+
+out vec3 vWorld;
+out vec3 vNormal;
+out vec4 vColor;
+
+void main() {
+  vec4 world = uModel * vec4(aPosition, 1.0);
+  vWorld = world.xyz;
+  vNormal = uNormalMatrix * aNormal;
+  vColor = aColor;
+  gl_Position = uViewProjection * world;
+}
+)glsl";
+
+const char* const kBuiltinSceneFragment = R"glsl(#version 330 core
+// Lambert + a little Blinn-Phong from one directional light, plus ambient;
+// uLit = 0 passes the colour through (lines, floor decals).
+in vec3 vWorld;
+in vec3 vNormal;
+in vec4 vColor;
+
+uniform int uLit;
+uniform vec4 uTint;
+uniform vec3 uLightDirection;  // towards the light, unit
+uniform vec3 uEye;
+
+out vec4 fragColor;
+
+void main() {
+  vec4 base = vColor * uTint;
+  if (uLit == 0) {
+    fragColor = base;
+    return;
+  }
+  vec3 n = normalize(vNormal);
+  if (!gl_FrontFacing) n = -n;
+  vec3 v = normalize(uEye - vWorld);
+  vec3 h = normalize(uLightDirection + v);
+  float diffuse = max(dot(n, uLightDirection), 0.0);
+  float specular = pow(max(dot(n, h), 0.0), 32.0) * 0.25;
+  fragColor = vec4(base.rgb * (0.35 + 0.65 * diffuse) + vec3(specular), base.a);
+}
+)glsl";
+
+}  // namespace hemiroll::render

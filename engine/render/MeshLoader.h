@@ -1,0 +1,24 @@
+#pragma once
+// Meshes from files through assimp (glTF, GLB, OBJ and whatever else it
+// reads): all meshes of the file, triangulated, with smooth normals where the
+// file has none, centred on their bounding box and scaled to fit the unit
+// sphere, so the renderer places any marker mesh like its procedural one.
+// A missing, unreadable or empty file is not an error here: the result says
+// why and the caller draws its built-in fallback.
+
+#include <optional>
+#include <string>
+
+#include "engine/render/MeshData.h"
+
+namespace hemiroll::render {
+
+struct LoadedMesh {
+  std::optional<MeshData> mesh;  // empty on failure
+  std::string error;             // "path: why" when empty
+};
+
+// `color` is used for vertices without colours in the file.
+LoadedMesh loadMeshFile(const std::string& path, Rgba color = {1, 1, 1, 1});
+
+}  // namespace hemiroll::render

@@ -1,0 +1,183 @@
+#include "engine/render/Renderer.h"
+
+#include <epoxy/gl.h>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+
+#include "engine/render/BuiltinShaders.h"
+#include "engine/render/HemisphereMesh.h"
+#include "engine/render/MeshLoader.h"
+#include "engine/render/PrimitiveMeshes.h"
+#include "engine/render/SceneGeometry.h"
+
+namespace hemiroll::render {
+
+namespace {
+
+constexpr float kSky[3] = {0.62f, 0.72f, 0.84f};
+constexpr Rgba kFloor{0.82f, 0.81f, 0.78f, 1.0f};
+constexpr Rgba kMassPoint{0.95f, 0.75f, 0.10f, 1.0f};
+constexpr Rgba kProxy{0.20f, 0.45f, 0.95f, 0.85f};
+constexpr Rgba kArrow{0.95f, 0.30f, 0.10f, 1.0f};
+constexpr Rgba kWhite{1, 1, 1, 1};
+constexpr double kMassPointRadii = 0.12;  // [R]: visible at the follow distance, small beside the face
+constexpr double kProxyRadii = 0.10;      // [R]
+constexpr double kShadowRadii = 0.9;      // [R]
+// Room for the trace plus the target/zone outlines and a spring coil.
+constexpr std::size_t kExtraLineVertices = 8192;
+constexpr std::size_t kDecalVertices = 8192;
+
+Eigen::Vector3f toVec(const Vec3d& v) { return {float(v[0]), float(v[1]), float(v[2])}; }
+
+Eigen::Matrix4f translateScale(const Eigen::Vector3f& t, float s) {
+  Eigen::Matrix4f m = Eigen::Matrix4f::Identity();
+  m.topLeftCorner<3, 3>() *= s;
+  m.topRightCorner<3, 1>() = t;
+  return m;
+}
+
+Eigen::Matrix3f rotationOf(const Mat3d& r) {
+  Eigen::Matrix3f m;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) m(i, j) = float(r[3 * i + j]);
+  return m;
+}
+
+}  // namespace
+
+Renderer::Renderer(const RendererDef& def) : def_(def) {
+  std::string note;
+  program_ = ShaderProgram::loadWithFallback(def_.assetsDir + "/shaders", "scene",
+                                             {kBuiltinSceneVertex, "built-in scene.vert"},
+                                             {kBuiltinSceneFragment, "built-in scene.frag"}, note);
+  if (!note.empty()) notes_.push_back(note);
+  u_ = {program_.uniform("uModel"), program_.uniform("uViewProjection"), program_.uniform("uNormalMatrix"),
+        program_.uniform("uLit"),   program_.uniform("uTint"),           program_.uniform("uLightDirection"),
+        program_.uniform("uEye")};
+
+  hemisphere_ = GpuMesh::makeStatic(makeHemisphereMesh());
+  sphere_ = GpuMesh::makeStatic(makeSphereMesh());
+  arrow_ = GpuMesh::makeStatic(makeArrowMesh());
+  shadow_ = GpuMesh::makeStatic(makeDiscMesh(32, {0, 0, 0, 0.45f}, {0, 0, 0, 0}));
+  floor_ = GpuMesh::makeStatic(makeQuadMesh(kFloor));
+  grid_ = GpuMesh::makeStatic(makeFloorGrid(def_.floorExtent));
+  if (!def_.proxyMesh.empty()) {
+    LoadedMesh loaded = loadMeshFile(def_.assetsDir + "/" + def_.proxyMesh, kWhite);
+    if (loaded.mesh) proxy_ = GpuMesh::makeStatic(*loaded.mesh);
+    else notes_.push_back(loaded.error + " (using the built-in proxy marker)");
+  }
+  if (!proxy_.valid()) proxy_ = GpuMesh::makeStatic(makeOctahedronMesh(kWhite));
+
+  const std::size_t lineCapacity = 2 * def_.traceCapacity + kExtraLineVertices;
+  lines_ = GpuMesh::makeDynamic(Primitive::Lines, lineCapacity);
+  decals_ = GpuMesh::makeDynamic(Primitive::Triangles, kDecalVertices);
+  lineScratch_.reserve(lineCapacity);
+  decalScratch_.reserve(kDecalVertices);
+  clean_.targets.reserve(16);
+  clean_.forbidden.reserve(16);
+}
+
+Renderer::~Renderer() = default;
+
+void Renderer::drawMesh(const GpuMesh& mesh, const Eigen::Matrix4f& model, Rgba tint, bool lit) {
+  glUniformMatrix4fv(u_.model, 1, GL_FALSE, model.data());
+  const Eigen::Matrix3f normal = model.topLeftCorner<3, 3>().inverse().transpose();
+  glUniformMatrix3fv(u_.normalMatrix, 1, GL_FALSE, normal.data());
+  glUniform4f(u_.tint, tint.r, tint.g, tint.b, tint.a);
+  glUniform1i(u_.lit, lit ? 1 : 0);
+  mesh.draw();
+}
+
+void Renderer::render(const RenderScene& scene, int width, int height) {
+  lastClean_ = sanitizer_.sanitize(scene, clean_);
+  const RenderScene& s = clean_;
+  camera_ = makeCameraView(s.camera, s.centre, s.radius, height > 0 ? double(width) / height : 1.0);
+
+  glViewport(0, 0, width, height);
+  glClearColor(kSky[0], kSky[1], kSky[2], 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  program_.use();
+  glUniformMatrix4fv(u_.viewProjection, 1, GL_FALSE, camera_.viewProjection.data());
+  const Eigen::Vector3f light = Eigen::Vector3f(0.4f, -0.5f, 0.75f).normalized();
+  glUniform3f(u_.lightDirection, light.x(), light.y(), light.z());
+  glUniform3f(u_.eye, camera_.eye.x(), camera_.eye.y(), camera_.eye.z());
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  glDisable(GL_CULL_FACE);  // the face disc and the markers are seen from both sides
+
+  drawFloorLayer(s);
+  drawSolids(s);
+}
+
+void Renderer::drawFloorLayer(const RenderScene& s) {
+  glDisable(GL_DEPTH_TEST);
+  glDepthMask(GL_FALSE);
+  const Eigen::Matrix4f identity = Eigen::Matrix4f::Identity();
+  drawMesh(floor_, translateScale(Eigen::Vector3f::Zero(), float(def_.floorExtent)), kWhite, false);
+  drawMesh(grid_, identity, kWhite, false);
+
+  decalScratch_.clear();
+  appendZoneFills(s, decalScratch_);
+  appendTargetFills(s, def_.floorExtent, decalScratch_);
+  decals_.update(decalScratch_.data(), decalScratch_.size());
+  drawMesh(decals_, identity, kWhite, false);
+
+  // The contact shadow: under the contact point, which is below the sphere centre.
+  const Eigen::Vector3f contact(float(s.centre[0]), float(s.centre[1]), 0.0f);
+  drawMesh(shadow_, translateScale(contact, float(kShadowRadii * s.radius)), kWhite, false);
+
+  lineScratch_.clear();
+  appendZoneOutlines(s, lineScratch_);
+  appendTargetOutlines(s, def_.floorExtent, lineScratch_);
+  if (s.trace) appendTraceLines(*s.trace, s.time, lineScratch_);
+  lines_.update(lineScratch_.data(), lineScratch_.size());
+  drawMesh(lines_, identity, kWhite, false);
+}
+
+void Renderer::drawSolids(const RenderScene& s) {
+  glEnable(GL_DEPTH_TEST);
+  glDepthMask(GL_TRUE);
+  glDepthFunc(GL_LESS);
+  const float radius = float(s.radius);
+  const Eigen::Vector3f centre = toVec(s.centre);
+  const Eigen::Matrix3f rotation = rotationOf(s.orientation);
+
+  Eigen::Matrix4f body = Eigen::Matrix4f::Identity();
+  body.topLeftCorner<3, 3>() = rotation * radius;
+  body.topRightCorner<3, 1>() = centre;
+  drawMesh(hemisphere_, body, kWhite, true);
+
+  // The mass point sits on the face: its centre one ball radius above the face plane.
+  const float ball = float(kMassPointRadii) * radius;
+  const Eigen::Vector3f massPoint =
+      centre + rotation * Eigen::Vector3f(float(s.massPoint[0]), float(s.massPoint[1]), ball);
+  drawMesh(sphere_, translateScale(massPoint, ball), kMassPoint, true);
+
+  const double forceNorm = std::sqrt(s.force[0] * s.force[0] + s.force[1] * s.force[1] + s.force[2] * s.force[2]);
+  const double length = std::min(forceNorm * std::abs(s.forceScale), def_.maxArrowRadii * s.radius);
+  if (length > 1e-3 * s.radius) {
+    // Rotate +z onto the force direction; thickness follows R, length the force.
+    const Eigen::Vector3f dir = Eigen::Vector3f(float(s.force[0]), float(s.force[1]), float(s.force[2])).normalized();
+    const Eigen::Matrix3f align = Eigen::Quaternionf::FromTwoVectors(Eigen::Vector3f::UnitZ(), dir).toRotationMatrix();
+    Eigen::Matrix4f model = Eigen::Matrix4f::Identity();
+    model.topLeftCorner<3, 3>() = align * Eigen::Vector3f(radius, radius, float(length)).asDiagonal();
+    model.topRightCorner<3, 1>() = massPoint;
+    drawMesh(arrow_, model, kArrow, true);
+  }
+
+  if (s.showProxy) {
+    const Eigen::Vector3f proxy = toVec(s.proxyPosition);
+    drawMesh(proxy_, translateScale(proxy, float(kProxyRadii) * radius), kProxy, true);
+    if (s.springOn) {
+      lineScratch_.clear();
+      const Vec3d from{massPoint.x(), massPoint.y(), massPoint.z()};
+      appendSpringCoil(from, s.proxyPosition, 0.05 * s.radius, 8, lineScratch_);
+      lines_.update(lineScratch_.data(), lineScratch_.size());
+      drawMesh(lines_, Eigen::Matrix4f::Identity(), kWhite, false);
+    }
+  }
+}
+
+}  // namespace hemiroll::render

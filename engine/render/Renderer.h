@@ -1,0 +1,69 @@
+#pragma once
+// Draws a RenderScene with OpenGL 3.3 core into the bound framebuffer (the
+// window's, or an offscreen Framebuffer). No game rules: it draws what the
+// scene says. Construct it with a current GL context (platform::Window);
+// keep it for the life of the context.
+//
+// One frame, in order: sky; floor, 1 cm / 10 cm grid, forbidden zones,
+// target bands, contact shadow, trace (no depth test: all lie on the plane);
+// then with depth test the hemisphere, the mass point, the proxy, the force
+// arrow and the spring. Vertex scratch buffers and dynamic GPU buffers are
+// sized at construction: after the first frame, render() allocates nothing.
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "engine/render/Camera.h"
+#include "engine/render/GpuMesh.h"
+#include "engine/render/RenderScene.h"
+#include "engine/render/SceneSanitizer.h"
+#include "engine/render/ShaderProgram.h"
+
+namespace hemiroll::render {
+
+struct RendererDef {
+  std::string assetsDir = "assets";        // holds shaders/ and meshes/; missing files -> built-ins
+  std::string proxyMesh = "meshes/proxy.obj";  // relative to assetsDir; "" = the built-in octahedron
+  std::size_t traceCapacity = 4096;        // the most trace points drawn (ContactTraceDef.capacity)
+  double floorExtent = 0.5;                // the floor is [-extent, extent]^2 [m]
+  double maxArrowRadii = 6.0;              // the force arrow is at most this many R long
+};
+
+class Renderer {
+ public:
+  explicit Renderer(const RendererDef& def = {});  // throws RenderError (no usable shaders)
+  ~Renderer();
+
+  // Draws into the currently bound framebuffer of this size [GL px].
+  void render(const RenderScene& scene, int width, int height);
+
+  // Fallbacks taken while loading (missing or broken shader/mesh files), as
+  // sentences naming the file; empty when every asset loaded.
+  const std::vector<std::string>& notes() const { return notes_; }
+  // The camera of the last frame (tests project world points with it).
+  const CameraView& camera() const { return camera_; }
+  // False when the last scene had non-finite or invalid parts (replaced or skipped).
+  bool lastSceneClean() const { return lastClean_; }
+
+ private:
+  void drawMesh(const GpuMesh& mesh, const Eigen::Matrix4f& model, Rgba tint, bool lit);
+  void drawFloorLayer(const RenderScene& s);
+  void drawSolids(const RenderScene& s);
+
+  RendererDef def_;
+  std::vector<std::string> notes_;
+  ShaderProgram program_;
+  struct Uniforms {
+    int model, viewProjection, normalMatrix, lit, tint, lightDirection, eye;
+  } u_{};
+  GpuMesh hemisphere_, sphere_, arrow_, shadow_, floor_, grid_, proxy_;
+  GpuMesh decals_, lines_;             // dynamic
+  std::vector<Vertex> decalScratch_, lineScratch_;
+  SceneSanitizer sanitizer_;
+  RenderScene clean_;
+  CameraView camera_;
+  bool lastClean_ = true;
+};
+
+}  // namespace hemiroll::render
