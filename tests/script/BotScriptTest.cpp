@@ -89,6 +89,23 @@ TEST(BotScript, TheObservationFollowsEachTick) {
   }
 }
 
+TEST(BotScript, AViewKeptAcrossTicksReadsTheCurrentTick) {
+  const BotFile file(
+      "local s, m\n"
+      "return {name = 'keep', act = function(t, obs)\n"
+      "  if not s then s, m = obs.state, obs.mass end\n"
+      "  return s.x_p, m.y, 0\nend}");
+  BotScript bot(file.path);
+  BotObservation obs;
+  for (int i = 1; i <= 3; ++i) {
+    obs.state[0] = 0.5 * i;
+    obs.mass[1] = 0.25 * i;
+    const BotAction a = bot.act(obs);
+    EXPECT_EQ(a.position[0], 0.5 * i);
+    EXPECT_EQ(a.position[1], 0.25 * i);
+  }
+}
+
 TEST(BotScript, TargetsAreNilUnlessSet) {
   const BotFile file(
       "return {name = 't', act = function(t, obs)\n"
