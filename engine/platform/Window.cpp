@@ -109,4 +109,6 @@ void Window::pollEvents(std::vector<InputEvent>& out) {
 
 void Window::swap() { SDL_GL_SwapWindow(window_); }
 
+void Window::makeCurrent() { SDL_GL_MakeCurrent(window_, context_); }
+
 }  // namespace hemiroll::platform

@@ -55,6 +55,9 @@ class Window {
   // allocation once its capacity suffices.
   void pollEvents(std::vector<InputEvent>& out);
   void swap();
+  // Makes this window's context current again (after another window's
+  // context was used or destroyed on this thread).
+  void makeCurrent();
 
  private:
   Window(SDL_Window* window, SDL_GLContext context, bool vsync);

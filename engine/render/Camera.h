@@ -29,8 +29,8 @@ struct PixelPoint {
 };
 
 // Eye distance from the focus in radii at zoom 1.
-inline constexpr double kFollowDistanceRadii = 9.0;
-inline constexpr double kTopDistanceRadii = 14.0;
+inline constexpr double kFollowDistanceRadii = 7.0;
+inline constexpr double kTopDistanceRadii = 10.0;
 inline constexpr double kFollowPitch = 0.6;  // [rad] above the plane
 
 // `focus` is what the camera looks at (the sphere centre, base frame [m]);

@@ -1,0 +1,87 @@
+#include "engine/render/SceneGeometry.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace hemiroll::render {
+namespace {
+
+TEST(SceneGeometryTest, TargetBandIsTheJudgedBoxClippedToTheFloor) {
+  RenderScene s;
+  s.targets.push_back({{-0.04, -0.04}, {0.004, 0.002}, false});
+  s.targets.push_back({{0.1, 0.0}, {1e3, 0.01}, true});  // x free
+  std::vector<Vertex> v;
+  appendTargetFills(s, 0.5, v);
+  ASSERT_EQ(v.size(), 12u);
+  float lo[2] = {1e9f, 1e9f}, hi[2] = {-1e9f, -1e9f};
+  for (int i = 0; i < 6; ++i)
+    for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], v[i].position[k]), hi[k] = std::max(hi[k], v[i].position[k]);
+  EXPECT_FLOAT_EQ(lo[0], -0.044f);
+  EXPECT_FLOAT_EQ(hi[0], -0.036f);
+  EXPECT_FLOAT_EQ(lo[1], -0.042f);
+  EXPECT_FLOAT_EQ(hi[1], -0.038f);
+  EXPECT_FLOAT_EQ(v[6].position[0], -0.5f);  // the free band stops at the floor's edge
+  EXPECT_EQ(v[6].color[3], kTargetFillInside.a);
+}
+
+TEST(SceneGeometryTest, TraceSegmentsFadeWithAge) {
+  ContactTrace trace({.capacity = 8, .minSpacing = 0.0, .fadeTime = 10.0});
+  for (int i = 0; i < 5; ++i) trace.push(0.01 * i, 0.0, 2.0 * i);
+  std::vector<Vertex> v;
+  appendTraceLines(trace, 8.0, v);
+  ASSERT_EQ(v.size(), 8u);  // 4 segments, 2 vertices each
+  EXPECT_FLOAT_EQ(v.front().color[3], 0.2f);  // the oldest point: 8 s old of 10
+  EXPECT_FLOAT_EQ(v.back().color[3], 1.0f);
+  for (std::size_t i = 1; i < v.size(); ++i) EXPECT_GE(v[i].color[3], v[i - 1].color[3]);
+}
+
+TEST(SceneGeometryTest, SpringCoilJoinsBothEndsAndStaysNearTheAxis) {
+  const Vec3d a{0.0, 0.0, 0.04}, b{0.03, 0.01, 0.06};
+  std::vector<Vertex> v;
+  appendSpringCoil(a, b, 0.002, 8, v);
+  ASSERT_FALSE(v.empty());
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_NEAR(v.front().position[k], a[k], 1e-7);  // float positions
+    EXPECT_NEAR(v.back().position[k], b[k], 1e-7);
+  }
+  v.clear();
+  appendSpringCoil(a, a, 0.002, 8, v);  // zero length: nothing (no NaN direction)
+  EXPECT_TRUE(v.empty());
+}
+
+TEST(SceneGeometryTest, GridHasCentimetreAndDecimetreLines) {
+  const MeshData grid = makeFloorGrid(0.5);
+  EXPECT_EQ(grid.primitive, Primitive::Lines);
+  EXPECT_EQ(grid.vertices.size(), std::size_t(101 * 4));  // -50..50 cm, both directions, 2 vertices each
+  int coarse = 0;
+  for (std::size_t i = 0; i < grid.vertices.size(); i += 4) {
+    const float x = grid.vertices[i].position[0];
+    const bool decimetre = std::abs(std::remainder(x, 0.1f)) < 1e-4f;
+    if (decimetre && std::abs(x) > 1e-6f) {
+      ++coarse;
+      EXPECT_GT(grid.vertices[i].color[3], 0.2f);
+    } else if (!decimetre) {
+      EXPECT_LT(grid.vertices[i].color[3], 0.2f);
+    }
+  }
+  EXPECT_EQ(coarse, 10);
+}
+
+TEST(SceneGeometryTest, ZonesFillAndOutline) {
+  RenderScene s;
+  s.forbidden.push_back({true, {0.05, 0.0}, 0.01, {}, {}});
+  s.forbidden.push_back({false, {}, 0.0, {0.0, 0.0}, {0.02, 0.01}});
+  std::vector<Vertex> fill, lines;
+  appendZoneFills(s, fill);
+  appendZoneOutlines(s, lines);
+  EXPECT_EQ(fill.size(), std::size_t(3 * kCircleSegments + 6));
+  EXPECT_EQ(lines.size(), std::size_t(2 * kCircleSegments + 8));
+  for (std::size_t i = 1; i < 3 * kCircleSegments; i += 3) {
+    const double r = std::hypot(fill[i].position[0] - 0.05, fill[i].position[1]);
+    EXPECT_NEAR(r, 0.01, 1e-7);
+  }
+}
+
+}  // namespace
+}  // namespace hemiroll::render
