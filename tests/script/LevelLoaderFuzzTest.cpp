@@ -190,7 +190,9 @@ TEST(LevelLoaderFuzz, EveryMutationGivesALevelOrAFileLineError) {
           level.script->update(obs, judge);
         }
         const ScoreResult score = level.script->score(acc.summary(judge));
-        if (score.score) EXPECT_TRUE(std::isfinite(*score.score));
+        if (score.score) {
+          EXPECT_TRUE(std::isfinite(*score.score));
+        }
       } catch (const ScriptError& e) {
         ++refused;
         EXPECT_TRUE(std::regex_match(std::string(e.what()), located))
