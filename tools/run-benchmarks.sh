@@ -7,7 +7,10 @@ mkdir -p out/bench
 for b in "$build"/bench/*_bench; do
   name=$(basename "$b")
   echo "== $name (median of 7 repetitions)"
-  "$b" --benchmark_repetitions=7 --benchmark_report_aggregates_only=true \
+  # render_bench opens a window: a virtual display and Mesa's software GL.
+  wrap=()
+  [ "$name" = render_bench ] && wrap=(xvfb-run -a env LIBGL_ALWAYS_SOFTWARE=1)
+  "${wrap[@]}" "$b" --benchmark_repetitions=7 --benchmark_report_aggregates_only=true \
        --benchmark_display_aggregates_only=true \
        --benchmark_out="out/bench/$name.json" --benchmark_out_format=json 2>/dev/null |
     grep -E 'Benchmark|_median'

@@ -25,6 +25,8 @@ constexpr Rgba kWhite{1, 1, 1, 1};
 constexpr double kMassPointRadii = 0.12;  // [R]: visible at the follow distance, small beside the face
 constexpr double kProxyRadii = 0.10;      // [R]
 constexpr double kShadowRadii = 0.9;      // [R]
+constexpr float kXrayAlpha = 0.55f;        // floor lines seen through the solids
+constexpr std::size_t kSpringVertices = 512;  // appendSpringCoil: 8 turns x 12 segments x 2
 // Room for the trace plus the target/zone outlines and a spring coil.
 constexpr std::size_t kExtraLineVertices = 8192;
 constexpr std::size_t kDecalVertices = 8192;
@@ -61,8 +63,7 @@ Renderer::Renderer(const RendererDef& def) : def_(def) {
   sphere_ = GpuMesh::makeStatic(makeSphereMesh());
   arrow_ = GpuMesh::makeStatic(makeArrowMesh());
   shadow_ = GpuMesh::makeStatic(makeDiscMesh(32, {0, 0, 0, 0.45f}, {0, 0, 0, 0}));
-  floor_ = GpuMesh::makeStatic(makeQuadMesh(kFloor));
-  grid_ = GpuMesh::makeStatic(makeFloorGrid(def_.floorExtent));
+  grid_ = GpuMesh::makeStatic(makeFloorGrid(def_.gridExtent, def_.fineGridExtent));
   if (!def_.proxyMesh.empty()) {
     LoadedMesh loaded = loadMeshFile(def_.assetsDir + "/" + def_.proxyMesh, kWhite);
     if (loaded.mesh) proxy_ = GpuMesh::makeStatic(*loaded.mesh);
@@ -73,7 +74,9 @@ Renderer::Renderer(const RendererDef& def) : def_(def) {
   const std::size_t lineCapacity = 2 * def_.traceCapacity + kExtraLineVertices;
   lines_ = GpuMesh::makeDynamic(Primitive::Lines, lineCapacity);
   decals_ = GpuMesh::makeDynamic(Primitive::Triangles, kDecalVertices);
+  spring_ = GpuMesh::makeDynamic(Primitive::Lines, kSpringVertices);
   lineScratch_.reserve(lineCapacity);
+  springScratch_.reserve(kSpringVertices);
   decalScratch_.reserve(kDecalVertices);
   clean_.targets.reserve(16);
   clean_.forbidden.reserve(16);
@@ -96,8 +99,7 @@ void Renderer::render(const RenderScene& scene, int width, int height) {
   camera_ = makeCameraView(s.camera, s.centre, s.radius, height > 0 ? double(width) / height : 1.0);
 
   glViewport(0, 0, width, height);
-  glClearColor(kSky[0], kSky[1], kSky[2], 1.0f);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  clearFloorAndSky(width, height);
   program_.use();
   glUniformMatrix4fv(u_.viewProjection, 1, GL_FALSE, camera_.viewProjection.data());
   const Eigen::Vector3f light = Eigen::Vector3f(0.4f, -0.5f, 0.75f).normalized();
@@ -109,14 +111,47 @@ void Renderer::render(const RenderScene& scene, int width, int height) {
 
   drawFloorLayer(s);
   drawSolids(s);
+  // X-ray: the outlines and the trace once more over everything, faint. The
+  // hemisphere sits on its own contact point, so millimetre targets and the
+  // trace's head would otherwise be hidden exactly where the player looks.
+  glDisable(GL_DEPTH_TEST);
+  drawMesh(lines_, Eigen::Matrix4f::Identity(), {1, 1, 1, kXrayAlpha}, false);
+}
+
+// The floor is the clear colour and the sky a second, scissored clear above
+// the plane's horizon: no full-screen polygon, which under a software
+// rasteriser costs more than everything else in the frame together. The
+// horizon is where the plane's points at infinity land: the image of the
+// horizontal viewing direction with w = 0, one row for a camera without roll.
+void Renderer::clearFloorAndSky(int width, int height) {
+  glDisable(GL_SCISSOR_TEST);
+  glClearColor(kFloor.r, kFloor.g, kFloor.b, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  const Eigen::Vector3f forward = -camera_.view.row(2).head<3>().transpose();
+  const Eigen::Vector2f horizontal(forward.x(), forward.y());
+  if (horizontal.norm() < 1e-4f) return;  // looking straight down: no horizon in view
+  const Eigen::Vector2f h = horizontal.normalized();
+  const Eigen::Vector4f clip = camera_.viewProjection * Eigen::Vector4f(h.x(), h.y(), 0.0f, 0.0f);
+  if (clip.w() <= 0.0f) return;
+  const float ndcY = clip.y() / clip.w();
+  const int skyStart = std::clamp(int(std::ceil((ndcY + 1.0f) * 0.5f * float(height))), 0, height);
+  if (skyStart >= height) return;
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(0, skyStart, width, height - skyStart);
+  glClearColor(kSky[0], kSky[1], kSky[2], 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glDisable(GL_SCISSOR_TEST);
 }
 
 void Renderer::drawFloorLayer(const RenderScene& s) {
   glDisable(GL_DEPTH_TEST);
   glDepthMask(GL_FALSE);
   const Eigen::Matrix4f identity = Eigen::Matrix4f::Identity();
-  drawMesh(floor_, translateScale(Eigen::Vector3f::Zero(), float(def_.floorExtent)), kWhite, false);
-  drawMesh(grid_, identity, kWhite, false);
+  // The grid moves with the focus in whole decimetres, so its lines stay on
+  // world centimetres while only the part near the hemisphere is drawn.
+  const Eigen::Vector3f gridOrigin(float(std::round(s.centre[0] * 10.0) / 10.0),
+                                   float(std::round(s.centre[1] * 10.0) / 10.0), 0.0f);
+  drawMesh(grid_, translateScale(gridOrigin, 1.0f), kWhite, false);
 
   decalScratch_.clear();
   appendZoneFills(s, decalScratch_);
@@ -171,11 +206,11 @@ void Renderer::drawSolids(const RenderScene& s) {
     const Eigen::Vector3f proxy = toVec(s.proxyPosition);
     drawMesh(proxy_, translateScale(proxy, float(kProxyRadii) * radius), kProxy, true);
     if (s.springOn) {
-      lineScratch_.clear();
+      springScratch_.clear();
       const Vec3d from{massPoint.x(), massPoint.y(), massPoint.z()};
-      appendSpringCoil(from, s.proxyPosition, 0.05 * s.radius, 8, lineScratch_);
-      lines_.update(lineScratch_.data(), lineScratch_.size());
-      drawMesh(lines_, Eigen::Matrix4f::Identity(), kWhite, false);
+      appendSpringCoil(from, s.proxyPosition, 0.05 * s.radius, 8, springScratch_);
+      spring_.update(springScratch_.data(), springScratch_.size());
+      drawMesh(spring_, Eigen::Matrix4f::Identity(), kWhite, false);
     }
   }
 }

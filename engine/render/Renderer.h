@@ -4,10 +4,11 @@
 // scene says. Construct it with a current GL context (platform::Window);
 // keep it for the life of the context.
 //
-// One frame, in order: sky; floor, 1 cm / 10 cm grid, forbidden zones,
+// One frame, in order: floor and sky (two clears), 1 cm / 10 cm grid, forbidden zones,
 // target bands, contact shadow, trace (no depth test: all lie on the plane);
 // then with depth test the hemisphere, the mass point, the proxy, the force
-// arrow and the spring. Vertex scratch buffers and dynamic GPU buffers are
+// arrow and the spring; last, the floor's outlines and trace once more
+// through everything, faint (targets under the hemisphere stay visible). Vertex scratch buffers and dynamic GPU buffers are
 // sized at construction: after the first frame, render() allocates nothing.
 
 #include <memory>
@@ -26,7 +27,9 @@ struct RendererDef {
   std::string assetsDir = "assets";        // holds shaders/ and meshes/; missing files -> built-ins
   std::string proxyMesh = "meshes/proxy.obj";  // relative to assetsDir; "" = the built-in octahedron
   std::size_t traceCapacity = 4096;        // the most trace points drawn (ContactTraceDef.capacity)
-  double floorExtent = 0.5;                // the floor is [-extent, extent]^2 [m]
+  double floorExtent = 0.5;                // target bands of free components end here [m]
+  double gridExtent = 0.5;                 // 10 cm lines within this of the focus [m]
+  double fineGridExtent = 0.2;             // 1 cm lines within this of the focus [m]
   double maxArrowRadii = 6.0;              // the force arrow is at most this many R long
 };
 
@@ -48,6 +51,7 @@ class Renderer {
 
  private:
   void drawMesh(const GpuMesh& mesh, const Eigen::Matrix4f& model, Rgba tint, bool lit);
+  void clearFloorAndSky(int width, int height);
   void drawFloorLayer(const RenderScene& s);
   void drawSolids(const RenderScene& s);
 
@@ -57,9 +61,9 @@ class Renderer {
   struct Uniforms {
     int model, viewProjection, normalMatrix, lit, tint, lightDirection, eye;
   } u_{};
-  GpuMesh hemisphere_, sphere_, arrow_, shadow_, floor_, grid_, proxy_;
-  GpuMesh decals_, lines_;             // dynamic
-  std::vector<Vertex> decalScratch_, lineScratch_;
+  GpuMesh hemisphere_, sphere_, arrow_, shadow_, grid_, proxy_;
+  GpuMesh decals_, lines_, spring_;    // dynamic
+  std::vector<Vertex> decalScratch_, lineScratch_, springScratch_;
   SceneSanitizer sanitizer_;
   RenderScene clean_;
   CameraView camera_;

@@ -128,16 +128,18 @@ void appendSpringCoil(const Vec3d& a, const Vec3d& b, double coilRadius, int tur
   }
 }
 
-MeshData makeFloorGrid(double extent) {
+MeshData makeFloorGrid(double extent, double fineExtent) {
   MeshData m;
   m.primitive = Primitive::Lines;
-  const Rgba fine{0.0f, 0.0f, 0.0f, 0.10f}, coarse{0.0f, 0.0f, 0.0f, 0.35f}, axis{0.0f, 0.0f, 0.0f, 0.6f};
-  const int n = int(std::floor(extent / 0.01 + 1e-9));
+  const Rgba fine{0.0f, 0.0f, 0.0f, 0.12f}, coarse{0.0f, 0.0f, 0.0f, 0.35f};
+  const int n = int(std::floor(extent / 0.01 + 1e-9)), nFine = int(std::floor(fineExtent / 0.01 + 1e-9));
   for (int i = -n; i <= n; ++i) {
-    const double c = i * 0.01;
-    const Rgba col = i == 0 ? axis : (i % 10 == 0 ? coarse : fine);
-    m.vertices.insert(m.vertices.end(), {flat(c, -extent, 0, col), flat(c, extent, 0, col),
-                                         flat(-extent, c, 0, col), flat(extent, c, 0, col)});
+    const bool decimetre = i % 10 == 0;
+    if (!decimetre && std::abs(i) > nFine) continue;
+    const double c = i * 0.01, reach = decimetre ? extent : fineExtent;
+    const Rgba col = decimetre ? coarse : fine;
+    m.vertices.insert(m.vertices.end(), {flat(c, -reach, 0, col), flat(c, reach, 0, col),
+                                         flat(-reach, c, 0, col), flat(reach, c, 0, col)});
   }
   return m;
 }

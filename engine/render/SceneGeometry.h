@@ -34,8 +34,11 @@ void appendZoneOutlines(const RenderScene& scene, std::vector<Vertex>& out);
 void appendTraceLines(const ContactTrace& trace, double now, std::vector<Vertex>& out);
 // A helix of `turns` turns and radius `coilRadius` from a to b [m].
 void appendSpringCoil(const Vec3d& a, const Vec3d& b, double coilRadius, int turns, std::vector<Vertex>& out);
-// Floor grid lines: every 1 cm faint, every 10 cm darker, within [-extent, extent]^2.
-MeshData makeFloorGrid(double extent);
+// Floor grid lines around the origin: every 10 cm (darker) within
+// [-extent, extent]^2, every 1 cm (faint) within [-fineExtent, fineExtent]^2.
+// Fine lines far from the hemisphere would only alias, and under a software
+// rasteriser lines cost per pixel.
+MeshData makeFloorGrid(double extent, double fineExtent);
 
 inline constexpr int kCircleSegments = 48;
 

@@ -164,6 +164,20 @@ TEST_F(RendererTest, FaceMarkingsTurnWithPsi) {
   EXPECT_FALSE(near(turned90, stripePoint(0.0), 1, red));
 }
 
+TEST_F(RendererTest, SkyAboveTheHorizonFloorBelow) {
+  RenderScene s = uprightAt(0.0, 0.0);
+  s.camera.mode = CameraMode::Orbit;
+  s.camera.pitch = 0.1;  // eye low: the horizon is 0.1 rad above the view's centre
+  const Image image = draw(s);
+  // The horizon's row: tan(0.1) / tan(fovY / 2) of the half-height above the centre.
+  const double horizon = kH / 2.0 * (1.0 - std::tan(0.1) / std::tan(s.camera.fovY / 2.0));
+  const auto blueish = [](const std::uint8_t* p) { return p[2] > p[0] + 25; };
+  EXPECT_TRUE(blueish(image.pixel(5, int(horizon) - 3)));
+  EXPECT_FALSE(blueish(image.pixel(5, int(horizon) + 3)));
+  s.camera.pitch = 0.6;  // the horizon above the frame: no sky at the top
+  EXPECT_FALSE(blueish(draw(s).pixel(5, 0)));
+}
+
 TEST_F(RendererTest, NonFiniteScenesDrawTheLastGoodPoseAndNoBadMarkers) {
   RenderScene good = uprightAt(0.01, 0.0);
   good.orientation = orientation(0.2, -0.1, 1.0);

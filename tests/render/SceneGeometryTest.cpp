@@ -50,22 +50,26 @@ TEST(SceneGeometryTest, SpringCoilJoinsBothEndsAndStaysNearTheAxis) {
   EXPECT_TRUE(v.empty());
 }
 
-TEST(SceneGeometryTest, GridHasCentimetreAndDecimetreLines) {
-  const MeshData grid = makeFloorGrid(0.5);
+TEST(SceneGeometryTest, GridHasDecimetreLinesFarAndCentimetreLinesNear) {
+  const MeshData grid = makeFloorGrid(0.5, 0.2);
   EXPECT_EQ(grid.primitive, Primitive::Lines);
-  EXPECT_EQ(grid.vertices.size(), std::size_t(101 * 4));  // -50..50 cm, both directions, 2 vertices each
+  // 11 decimetre lines (-50..50 cm) and 36 centimetre lines within 20 cm, both directions, 2 vertices each.
+  ASSERT_EQ(grid.vertices.size(), std::size_t((11 + 36) * 4));
   int coarse = 0;
   for (std::size_t i = 0; i < grid.vertices.size(); i += 4) {
     const float x = grid.vertices[i].position[0];
-    const bool decimetre = std::abs(std::remainder(x, 0.1f)) < 1e-4f;
-    if (decimetre && std::abs(x) > 1e-6f) {
+    const float reach = std::abs(grid.vertices[i].position[1]);
+    if (std::abs(std::remainder(x, 0.1f)) < 1e-4f) {
       ++coarse;
       EXPECT_GT(grid.vertices[i].color[3], 0.2f);
-    } else if (!decimetre) {
+      EXPECT_FLOAT_EQ(reach, 0.5f);
+    } else {
       EXPECT_LT(grid.vertices[i].color[3], 0.2f);
+      EXPECT_LE(std::abs(x), 0.2f + 1e-6f);
+      EXPECT_FLOAT_EQ(reach, 0.2f);
     }
   }
-  EXPECT_EQ(coarse, 10);
+  EXPECT_EQ(coarse, 11);
 }
 
 TEST(SceneGeometryTest, ZonesFillAndOutline) {
