@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "game/commands/ExitCode.h"
+#include "game/commands/PlayCommand.h"
 #include "game/commands/RunCommand.h"
 #include "game/commands/ScreenshotCommand.h"
 #include "game/commands/SimCommand.h"
@@ -21,6 +22,7 @@ struct CommandEntry {
 };
 
 constexpr CommandEntry kCommands[] = {
+    {"play", "open the game window (the default with no command)", hemiroll::game::runPlayCommand},
     {"sim", "run a scenario's physics headless and write the trajectory as CSV", hemiroll::game::runSimCommand},
     {"run", "play a level with a bot (headless) and print the result as one JSON line", hemiroll::game::runRunCommand},
     {"screenshot", "render one frame of a level offscreen and write it as a PNG", hemiroll::game::runScreenshotCommand},
@@ -38,11 +40,8 @@ void printUsage(std::ostream& out) {
 
 int main(int argc, char** argv) {
   const std::vector<std::string> args(argv + 1, argv + argc);
-  if (args.empty()) {
-    std::cerr << "hemiroll: missing a command\n\n";
-    printUsage(std::cerr);
-    return hemiroll::game::kExitUsage;
-  }
+  // No command: the game, as a player who double-clicks the program expects.
+  if (args.empty()) return hemiroll::game::runPlayCommand({});
   const std::string& command = args.front();
   if (command == "--help" || command == "-h" || command == "help") {
     printUsage(std::cout);

@@ -13,6 +13,7 @@ packages=(
   libsdl2-dev
   libepoxy-dev libassimp-dev libstb-dev
   xvfb xauth libgl1-mesa-dri libglx-mesa0 libegl-mesa0
+  libimgui-dev libsqlite3-dev
 )
 
 missing=()

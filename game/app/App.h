@@ -1,0 +1,85 @@
+#pragma once
+// The game application: the window, the renderer, Dear ImGui, audio, the
+// scores database, the settings and the screen stack, and the main loop:
+//   events (window + injected) -> ImGui / top screen -> update -> paint -> swap
+// One frame never waits for the servo loop (the play screen reads snapshots).
+//
+// Tests build an App on a hidden or Xvfb window and drive it frame by frame
+// with inject(), the same InputEvents the window produces.
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "engine/platform/FrameClock.h"
+#include "engine/platform/InputEvent.h"
+#include "engine/platform/Window.h"
+#include "engine/render/Image.h"
+#include "engine/render/Renderer.h"
+#include "game/app/Settings.h"
+#include "game/audio/Audio.h"
+#include "game/hud/ImGuiLayer.h"
+#include "game/scores/ScoreStore.h"
+#include "game/screens/ScreenStack.h"
+
+namespace hemiroll::game {
+
+struct AppDef {
+  int width = 1280, height = 720;   // [window px]
+  bool vsync = true;
+  bool hidden = false;              // tests and benchmarks: no visible window
+  std::string levelsDir = "levels"; // the level select lists *.lua here
+  std::string scoresFile;           // "" = dataDirectory()/scores.sqlite
+  bool requestRealtime = true;      // SCHED_FIFO for the servo thread when permitted
+};
+
+class App {
+ public:
+  // Opens the window (throws platform::PlatformError, e.g. no display) and
+  // shows the title screen.
+  explicit App(const AppDef& def);
+  ~App();
+
+  // Frames until the player quits; returns the exit code (0).
+  int run();
+  // One frame; false once the player asked to quit.
+  bool frame();
+  void inject(const platform::InputEvent& event) { injected_.push_back(event); }
+  void requestQuit() { quit_ = true; }
+
+  ScreenStack& screens() { return screens_; }
+  const char* topScreen() const { return screens_.top() ? screens_.top()->name() : ""; }
+  platform::Window& window() { return *window_; }
+  render::Renderer& renderer() { return *renderer_; }
+  Audio& audio() { return *audio_; }
+  ScoreStore& scores() { return *scores_; }
+  Settings& settings() { return settings_; }
+  const AppDef& def() const { return def_; }
+  double fps() const { return clock_.medianFps(); }
+  std::size_t frames() const { return clock_.frames(); }
+  // Things the player should know (audio off, scores moved aside), shown on the title.
+  const std::vector<std::string>& notes() const { return notes_; }
+  void setVsync(bool on);
+  // The next frame is read back before it is shown (screenshots, tests):
+  // capture() then holds it, rows top-down, at the drawable size.
+  void requestCapture() { captureRequested_ = true; }
+  const render::Image& capture() const { return capture_; }
+
+ private:
+  AppDef def_;
+  std::unique_ptr<platform::Window> window_;
+  std::unique_ptr<render::Renderer> renderer_;
+  std::unique_ptr<ImGuiLayer> imgui_;
+  std::unique_ptr<Audio> audio_;
+  std::unique_ptr<ScoreStore> scores_;
+  Settings settings_;
+  ScreenStack screens_;
+  platform::FrameClock clock_;
+  std::vector<platform::InputEvent> events_, injected_;
+  std::vector<std::string> notes_;
+  bool quit_ = false;
+  bool captureRequested_ = false;
+  render::Image capture_;
+};
+
+}  // namespace hemiroll::game

@@ -1,0 +1,29 @@
+#pragma once
+// Drives the game through its main screens with synthetic input, the way a
+// player would: title -> (Enter) level select -> (Down.., Enter) play, with
+// a ScriptedMouse taking hold for a while -> (Escape) pause -> (Q) results.
+// One frame is captured at each stop. Used by the screen tests and by
+// `hemiroll play --tour DIR` (the README's screenshots).
+
+#include <string>
+#include <vector>
+
+#include "engine/render/Image.h"
+
+namespace hemiroll::game {
+
+class App;
+
+struct ScreenTourDef {
+  std::string level;        // path of the level to pick, as the level select lists it
+  double playSeconds = 2.0; // [s] of wall time played by the scripted mouse
+};
+
+struct ScreenTourStop {
+  std::string screen;       // App::topScreen() when the frame was captured
+  render::Image image;
+};
+
+std::vector<ScreenTourStop> runScreenTour(App& app, const ScreenTourDef& def);
+
+}  // namespace hemiroll::game

@@ -1,0 +1,36 @@
+#pragma once
+// What the player sets on the settings and research screens. Held by the App
+// for the session (not yet saved to disk between runs).
+
+#include <optional>
+#include <string>
+
+#include "engine/physics/ForceCoupling.h"
+#include "engine/render/RenderScene.h"
+
+namespace hemiroll::game {
+
+struct Settings {
+  // Input device. Only the mouse plays in the window so far; the others are
+  // listed by the settings screen with what they need.
+  std::string device = "mouse";
+  // Force method and gains: the level's unless overridden.
+  bool overrideCoupling = false;
+  int method = 2;              // 0 M1, 1 M2, 2 M3 (the paper's), 3 visual only
+  double stiffness = 250.0;    // [N/m]
+  double damping = 10.0;       // [N s/m]
+  double alpha = 2.0;          // M3's alpha [-]
+  double volume = 0.6;         // [0, 1]
+  bool vsync = true;
+  render::CameraMode camera = render::CameraMode::Follow;
+  double zoom = 1.0;
+  // Research session.
+  std::string participant = "player";
+};
+
+// The coupling the play session uses: the level's, or the player's override
+// applied to it (validated by the servo loop when posted).
+physics::CouplingDef couplingFor(const Settings& settings, const physics::CouplingDef& level);
+const char* methodLabel(int method);  // "M1", "M2", "M3", "visual"
+
+}  // namespace hemiroll::game

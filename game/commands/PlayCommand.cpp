@@ -1,0 +1,215 @@
+#include "game/commands/PlayCommand.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <numbers>
+
+#include "engine/platform/PlatformError.h"
+#include "engine/render/RenderError.h"
+#include "game/app/App.h"
+#include "game/app/ScreenTour.h"
+#include "game/app/ScriptedMouse.h"
+#include "engine/render/Image.h"
+#include "game/commands/ExitCode.h"
+#include "game/screens/PlayScreen.h"
+
+namespace hemiroll::game {
+
+namespace {
+
+constexpr const char* kPrefix = "hemiroll play: ";
+
+bool parseSize(const std::string& s, int& w, int& h) {
+  const auto x = s.find('x');
+  if (x == std::string::npos) return false;
+  try {
+    std::size_t used = 0;
+    w = std::stoi(s.substr(0, x), &used);
+    if (used != x) return false;
+    h = std::stoi(s.substr(x + 1), &used);
+    if (used != s.size() - x - 1) return false;
+  } catch (const std::exception&) {
+    return false;
+  }
+  return w >= 64 && h >= 64 && w <= 16384 && h <= 16384;
+}
+
+bool haveDisplay() {
+  for (const char* v : {"DISPLAY", "WAYLAND_DISPLAY", "SDL_VIDEODRIVER"})
+    if (const char* s = std::getenv(v); s && *s) return true;
+  return false;
+}
+
+int autoplay(App& app, const PlayOptions& o) {
+  app.screens().push(std::make_unique<PlayScreen>(app, o.level));
+  std::vector<double> frameSeconds;
+  frameSeconds.reserve(static_cast<std::size_t>(o.autoplay * 2000) + 16);
+  const auto start = std::chrono::steady_clock::now();
+  auto last = start;
+  ScriptedMouse mouse;
+  haptics::LoopTimingSummary timing;
+  std::string engagement = "never engaged";
+  while (true) {
+    const auto now = std::chrono::steady_clock::now();
+    const double t = std::chrono::duration<double>(now - start).count();
+    if (t >= o.autoplay) break;
+    mouse.step(app, t);
+    if (!app.frame()) break;
+    auto* play = dynamic_cast<PlayScreen*>(app.screens().top());
+    if (play && play->session()) {
+      if (play->session()->snapshot().engagement == haptics::Engagement::Engaged) engagement = "engaged";
+      timing = play->session()->timing();
+    }
+    const auto after = std::chrono::steady_clock::now();
+    if (app.frames() > 1) frameSeconds.push_back(std::chrono::duration<double>(after - last).count());
+    last = after;
+  }
+  if (frameSeconds.empty()) {
+    std::cerr << kPrefix << "no frames were drawn\n";
+    return kExitFailure;
+  }
+  std::sort(frameSeconds.begin(), frameSeconds.end());
+  const double median = frameSeconds[frameSeconds.size() / 2];
+  std::printf("%sautoplay %.1f s: %zu frames, median %.1f fps (p90 frame %.1f ms), %s, screen %s\n", kPrefix,
+              o.autoplay, frameSeconds.size(), 1.0 / median, frameSeconds[frameSeconds.size() * 9 / 10] * 1e3,
+              engagement.c_str(), app.topScreen());
+  std::printf("%sservo loop: %llu ticks, lateness p50 %.0f us, p99 %.0f us, p99.9 %.0f us, max %.0f us, "
+              "missed ticks %llu\n",
+              kPrefix, static_cast<unsigned long long>(timing.ticks), timing.latenessP50 * 1e6,
+              timing.latenessP99 * 1e6, timing.latenessP999 * 1e6, timing.latenessMax * 1e6,
+              static_cast<unsigned long long>(timing.missedTicks));
+  return kExitOk;
+}
+
+// The main screens as PNGs in o.tourDir: title.png, levels.png, play.png, ...
+int tour(App& app, const PlayOptions& o) {
+  ScreenTourDef def;
+  def.level = o.level;
+  def.playSeconds = o.autoplay > 0.0 ? o.autoplay : 3.0;
+  for (const ScreenTourStop& s : runScreenTour(app, def)) {
+    const std::string file = o.tourDir + "/" + s.screen + ".png";
+    render::writePng(file, s.image);
+    std::cout << kPrefix << file << "\n";
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+std::string playUsage() {
+  return "usage: hemiroll play [LEVEL.lua] [--levels DIR] [--size WxH] [--no-vsync] [--autoplay SECONDS]\n"
+         "Opens the game window on the title screen (or straight into LEVEL).\n"
+         "  --levels DIR        the level select lists DIR/*.lua (default: levels)\n"
+         "  --size WxH          window size in pixels (default 1280x720)\n"
+         "  --no-vsync          draw frames as fast as they come\n"
+         "  --autoplay SECONDS  a scripted mouse plays LEVEL for SECONDS, then the frame rate\n"
+         "                      and the servo loop's timing are printed\n"
+         "  --tour DIR          title, level select (LEVEL picked), play, pause, results as\n"
+         "                      PNGs in DIR (--autoplay sets the seconds played)\n";
+}
+
+std::string playNoDisplayMessage(const std::string& why) {
+  return std::string(kPrefix) + "no display to open the game window on (" + why +
+         "). Without a display, play a level with a bot: `hemiroll run LEVEL.lua --bot BOT.lua`, "
+         "or run the physics alone: `hemiroll sim SCENARIO.lua`; or give the game a virtual display: "
+         "`xvfb-run -a make play`.";
+}
+
+PlayOptionsResult parsePlayOptions(const std::vector<std::string>& args) {
+  PlayOptionsResult r;
+  PlayOptions& o = r.options;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    auto value = [&](const char* flag) -> const std::string* {
+      if (i + 1 >= args.size()) {
+        r.error = std::string(flag) + " needs a value";
+        return nullptr;
+      }
+      return &args[++i];
+    };
+    if (a == "--help" || a == "-h") {
+      o.help = true;
+    } else if (a == "--no-vsync") {
+      o.vsync = false;
+    } else if (a == "--tour") {
+      const std::string* v = value("--tour");
+      if (!v) return r;
+      o.tourDir = *v;
+    } else if (a == "--levels") {
+      const std::string* v = value("--levels");
+      if (!v) return r;
+      o.levelsDir = *v;
+    } else if (a == "--size") {
+      const std::string* v = value("--size");
+      if (!v) return r;
+      if (!parseSize(*v, o.width, o.height)) {
+        r.error = "--size '" + *v + "': expected WxH, each 64..16384 (e.g. 1280x720)";
+        return r;
+      }
+    } else if (a == "--autoplay") {
+      const std::string* v = value("--autoplay");
+      if (!v) return r;
+      char* end = nullptr;
+      o.autoplay = std::strtod(v->c_str(), &end);
+      if (end == v->c_str() || *end != '\0' || !std::isfinite(o.autoplay) || o.autoplay <= 0.0 || o.autoplay > 3600.0) {
+        r.error = "--autoplay '" + *v + "': expected seconds in (0, 3600]";
+        return r;
+      }
+    } else if (!a.empty() && a[0] == '-') {
+      r.error = "unknown flag '" + a + "'";
+      return r;
+    } else if (o.level.empty()) {
+      o.level = a;
+    } else {
+      r.error = "more than one level given ('" + o.level + "', '" + a + "')";
+      return r;
+    }
+  }
+  if ((o.autoplay > 0.0 || !o.tourDir.empty()) && o.level.empty())
+    r.error = std::string(o.autoplay > 0.0 ? "--autoplay" : "--tour") + " needs a LEVEL.lua";
+  return r;
+}
+
+int runPlayCommand(const std::vector<std::string>& args) {
+  const PlayOptionsResult parsed = parsePlayOptions(args);
+  if (!parsed.error.empty()) {
+    std::cerr << kPrefix << parsed.error << "\n\n" << playUsage();
+    return kExitUsage;
+  }
+  const PlayOptions& o = parsed.options;
+  if (o.help) {
+    std::cout << playUsage();
+    return kExitOk;
+  }
+  if (!haveDisplay()) {
+    std::cerr << playNoDisplayMessage("DISPLAY is not set") << "\n";
+    return kExitUsage;
+  }
+  try {
+    AppDef def;
+    def.width = o.width;
+    def.height = o.height;
+    def.vsync = o.vsync;
+    def.levelsDir = o.levelsDir;
+    App app(def);
+    if (!o.tourDir.empty()) return tour(app, o);
+    if (o.autoplay > 0.0) return autoplay(app, o);
+    if (!o.level.empty()) app.screens().push(std::make_unique<PlayScreen>(app, o.level));
+    return app.run();
+  } catch (const platform::PlatformError& e) {
+    std::cerr << kPrefix << e.what() << "\n";
+    return kExitUsage;
+  } catch (const render::RenderError& e) {
+    std::cerr << kPrefix << e.what() << "\n";
+    return kExitFailure;
+  } catch (const std::exception& e) {
+    std::cerr << kPrefix << e.what() << "\n";
+    return kExitFailure;
+  }
+}
+
+}  // namespace hemiroll::game

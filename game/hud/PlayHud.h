@@ -1,0 +1,66 @@
+#pragma once
+// The play screen's HUD (Dear ImGui): time and limit, distance to target,
+// per-component tolerance indicators (green inside, with the margin),
+// precession rate, score so far, device and force method, a loop-timing
+// warning from the snapshot, the force-arrow note for mouse players, a
+// scrolling plot of one selectable state channel (the paper's Fig. 5: contact
+// x by default) and a small plot of the mass point on the face.
+//
+// update() computes a plain HudReadout (tested without a window); draw()
+// shows it. Ring buffers are fixed: no allocation per frame once warm.
+
+#include <array>
+#include <string>
+
+#include "engine/haptics/ServoSnapshot.h"
+#include "engine/script/TaskJudge.h"
+#include "game/hud/ScrollingPlot.h"
+
+namespace hemiroll::game {
+
+struct HudReadout {
+  double time = 0.0, timeLimit = 0.0;  // [s]
+  double distanceToTarget = -1.0;      // contact point to its target [m]; < 0: no contact target
+  int componentsInside = 0, components = 0;
+  double precessionRate = 0.0;         // d psi / dt [rad/s]
+  double holdTime = 0.0, requiredHold = 0.0;  // [s]
+  bool loopWarning = false;            // late ticks or missed ticks seen
+  double latenessMs = 0.0;             // the snapshot's worst lateness so far [ms]
+  unsigned long long missedTicks = 0;
+  haptics::Engagement engagement = haptics::Engagement::Disengaged;
+  double rampScale = 0.0;
+};
+
+class PlayHud {
+ public:
+  // Channels the big plot can show: 12-state slot indices.
+  static constexpr std::array<int, 6> kChannels = {7, 8, 9, 10, 11, 0};  // u_a, v_a, u_o, v_o, psi, x_p
+  static constexpr double kLateWarning = 0.0005;  // [s]: a tick later than half a period is worth showing
+
+  PlayHud();
+  void reset();
+  // Once per frame, from the latest snapshot and the judge.
+  void update(const haptics::ServoSnapshot& snapshot, const script::TaskJudge& judge);
+  const HudReadout& readout() const { return readout_; }
+
+  // Text the HUD names; set when a session starts.
+  void setLabels(std::string level, std::string device, std::string method, bool mousePlayer, double faceRadius);
+  void draw(double fps);
+
+  int channel() const { return channel_; }
+  void setChannel(int index) { channel_ = index; plot_.clear(); }
+  const ScrollingPlot& plot() const { return plot_; }
+
+ private:
+  HudReadout readout_;
+  std::array<script::ComponentStatus, 16> components_{};
+  int componentCount_ = 0;
+  ScrollingPlot plot_, faceX_, faceY_;
+  int channel_ = 0;
+  double lastPsi_ = 0.0, lastTime_ = -1.0;
+  std::string level_, device_, method_;
+  bool mousePlayer_ = true;
+  double faceRadius_ = 0.04;  // R [m]: the face plot's circle
+};
+
+}  // namespace hemiroll::game

@@ -1,0 +1,112 @@
+#include "game/play/PlaySession.h"
+
+#include <algorithm>
+
+#include "game/view/RenderSceneBuilder.h"
+
+namespace hemiroll::game {
+
+namespace {
+
+// 1 s of ticks at 1 kHz is 1000 rows; the ring holds 4096, so a frame may
+// take up to ~4 s before the judge falls behind (a dragged window, a hitch).
+physics::ForceDrivenState stateOf(const std::array<double, 12>& a) {
+  return Eigen::Map<const physics::ForceDrivenState>(a.data());
+}
+
+}  // namespace
+
+PlaySession::PlaySession(script::LoadedLevel& level, const PlaySessionDef& def)
+    : level_(level),
+      loopDef_(HeadlessTrial::loopDefFor(level.def)),
+      mapping_(def.pointer),
+      ring_(std::make_unique<haptics::RecordRing>()),
+      judging_(level) {
+  loopDef_.requestRealtime = def.requestRealtime;
+  loopDef_.recordRing = ring_.get();
+  loopDef_.recordEvery = 1;  // the judge sees every tick
+  if (def.coupling) loopDef_.coupling = *def.coupling;
+  loop_ = std::make_unique<haptics::ServoLoop>(loopDef_, device_);
+  initial_ = stateOf(loopDef_.initialState);
+  snapshot_.state = loopDef_.initialState;
+  resize(def.windowWidth, def.windowHeight);
+  // The proxy starts at the mass point's height, so that a click on the
+  // mass point is within the engagement distance without touching the wheel.
+  const render::Vec3d p = massPointPosition(level.def, initial_);
+  const double zDevice = (p[2] - loopDef_.mapping.offset.z()) / loopDef_.mapping.scale;
+  mapping_.wheel(zDevice / mapping_.def().wheelStep);
+  pointer(def.windowWidth / 2.0, def.windowHeight / 2.0, true);
+}
+
+PlaySession::~PlaySession() {
+  if (!stopped_) loop_->stop();
+}
+
+void PlaySession::start() {
+  started_ = std::chrono::steady_clock::now();
+  judging_.start(initial_);
+  if (!judging_.finished()) loop_->start();
+}
+
+void PlaySession::pointer(double px, double py, bool jump) {
+  lastPx_ = px;
+  lastPy_ = py;
+  device_.setPointer(mapping_.toMetres(px, py), 0, jump);
+}
+
+void PlaySession::wheel(double notches) {
+  mapping_.wheel(notches);
+  pointer(lastPx_, lastPy_);
+}
+
+void PlaySession::resize(int width, int height) { mapping_.setCentre(width / 2.0, height / 2.0); }
+
+haptics::Vec3 PlaySession::pointerScene() const {
+  return loopDef_.mapping.positionToScene(mapping_.toMetres(lastPx_, lastPy_));
+}
+
+void PlaySession::post(haptics::ServoCommandKind kind) {
+  haptics::ServoCommand c;
+  c.kind = kind;
+  loop_->post(c);  // a full ring (64 commands) drops it; the player clicks again
+}
+
+void PlaySession::click() { post(haptics::ServoCommandKind::Engage); }
+void PlaySession::release() { post(haptics::ServoCommandKind::Disengage); }
+
+void PlaySession::pause() {
+  if (paused_) return;
+  paused_ = true;
+  post(haptics::ServoCommandKind::Pause);
+}
+
+void PlaySession::resume() {
+  if (!paused_) return;
+  paused_ = false;
+  post(haptics::ServoCommandKind::Resume);
+}
+
+void PlaySession::quit() { judging_.fail("quit by the player"); }
+
+bool PlaySession::frame() {
+  if (stopped_) return false;
+  judging_.drain(*ring_);
+  if (!judging_.finished() && loop_->recordDropped() > 0)
+    judging_.fail("the judge fell behind the servo loop (ticks dropped)");
+  loop_->latest(snapshot_);
+  if (judging_.finished()) finish();
+  return !judging_.finished();
+}
+
+TrialResult PlaySession::finish() {
+  if (!stopped_) {
+    loop_->stop();
+    stopped_ = true;
+  }
+  if (!judging_.finished()) judging_.fail("quit by the player");
+  TrialResult result = judging_.result(initial_);
+  result.wallTime = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+  return result;
+}
+
+}  // namespace hemiroll::game

@@ -1,0 +1,66 @@
+#pragma once
+// Highscores and personal bests in a small SQLite database:
+//   $HEMIROLL_DATA_DIR (tests), else $XDG_DATA_HOME/hemiroll, else
+//   ~/.local/share/hemiroll; the file is scores.sqlite there.
+// One row per finished trial (level, player, outcome, time, score, medal,
+// when); bests are queries over them. A corrupt or unreadable database is
+// moved aside (scores.sqlite.corrupt-<unix time>) with a note, and a fresh
+// one is started; if even that fails the store works in memory and says so.
+// Never throws after construction, never crashes the game.
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+struct sqlite3;
+
+namespace hemiroll::game {
+
+struct ScoreEntry {
+  std::string level;      // the level's name
+  std::string player = "player";
+  bool success = false;
+  double time = 0.0;      // [s] simulated trial time
+  std::optional<double> score;
+  std::string medal = "none";
+  std::int64_t when = 0;  // unix time [s]
+};
+
+struct LevelBest {
+  std::optional<double> bestTime;   // fastest success [s]
+  std::optional<double> bestScore;
+  std::string bestMedal = "none";   // the best medal won
+  int attempts = 0;
+};
+
+// The directory scores (and replays) go to, by the rule above.
+std::filesystem::path dataDirectory();
+
+class ScoreStore {
+ public:
+  // Opens (creating) `file`; "" = dataDirectory()/scores.sqlite.
+  explicit ScoreStore(std::filesystem::path file = {});
+  ~ScoreStore();
+  ScoreStore(const ScoreStore&) = delete;
+  ScoreStore& operator=(const ScoreStore&) = delete;
+
+  // Adds a trial; returns false (with note()) when it could not be stored.
+  bool add(const ScoreEntry& entry);
+  LevelBest best(const std::string& level) const;
+  LevelBest personalBest(const std::string& level, const std::string& player) const;
+  // Notes from opening (a database moved aside, in-memory fallback).
+  const std::vector<std::string>& notes() const { return notes_; }
+  const std::filesystem::path& file() const { return file_; }
+
+ private:
+  bool open(const std::filesystem::path& file);
+  LevelBest query(const std::string& level, const std::string* player) const;
+
+  std::filesystem::path file_;
+  sqlite3* db_ = nullptr;
+  std::vector<std::string> notes_;
+};
+
+}  // namespace hemiroll::game

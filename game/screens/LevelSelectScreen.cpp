@@ -1,0 +1,98 @@
+#include "game/screens/LevelSelectScreen.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <filesystem>
+
+#include "engine/script/LevelLoader.h"
+#include "game/app/App.h"
+#include "game/screens/PlayScreen.h"
+#include "game/screens/ScreenLayout.h"
+
+namespace hemiroll::game {
+
+std::vector<LevelEntry> scanLevels(const std::string& dir) {
+  std::vector<LevelEntry> out;
+  std::error_code ec;
+  for (const auto& f : std::filesystem::directory_iterator(dir, ec)) {
+    if (!f.is_regular_file() || f.path().extension() != ".lua") continue;
+    LevelEntry e;
+    e.path = f.path().string();
+    e.name = f.path().filename().string();
+    try {
+      const script::LoadedLevel level = script::LevelLoader().loadFile(e.path);
+      e.name = level.def.name;
+      e.description = level.def.description;
+      e.difficulty = level.def.difficulty;
+    } catch (const std::exception& error) {
+      e.error = error.what();
+    }
+    out.push_back(std::move(e));
+  }
+  std::sort(out.begin(), out.end(), [](const LevelEntry& a, const LevelEntry& b) { return a.path < b.path; });
+  return out;
+}
+
+void LevelSelectScreen::enter() {
+  entries_ = scanLevels(app_.def().levelsDir);
+  for (LevelEntry& e : entries_)
+    if (e.error.empty()) e.best = app_.scores().best(e.name);
+  selected_ = std::clamp(selected_, 0, std::max(0, static_cast<int>(entries_.size()) - 1));
+}
+
+void LevelSelectScreen::play() {
+  if (selected_ < 0 || selected_ >= static_cast<int>(entries_.size())) return;
+  if (!entries_[static_cast<std::size_t>(selected_)].error.empty()) return;  // broken: its error is shown
+  app_.screens().push(std::make_unique<PlayScreen>(app_, entries_[static_cast<std::size_t>(selected_)].path));
+}
+
+void LevelSelectScreen::input(const platform::InputEvent& e) {
+  if (e.type != platform::InputType::KeyDown) return;
+  const int n = static_cast<int>(entries_.size());
+  if (e.key == platform::Key::Down && n > 0) selected_ = (selected_ + 1) % n;
+  else if (e.key == platform::Key::Up && n > 0) selected_ = (selected_ + n - 1) % n;
+  else if (e.key == platform::Key::Enter && !e.repeat) play();
+  else if (e.key == platform::Key::Escape && !e.repeat) app_.screens().pop();
+}
+
+void LevelSelectScreen::paint() {
+  beginCentredPanel("levels", 900);
+  ImGui::SetWindowFontScale(1.6f);
+  ImGui::Text("Choose a level");
+  ImGui::SetWindowFontScale(1.0f);
+  ImGui::TextDisabled("from %s", app_.def().levelsDir.c_str());
+  if (entries_.empty()) ImGui::TextColored(ImVec4(1, 0.5f, 0.4f, 1), "no levels (*.lua) found there");
+  for (std::size_t i = 0; i < entries_.size(); ++i) {
+    const LevelEntry& e = entries_[i];
+    ImGui::PushID(static_cast<int>(i));
+    const bool broken = !e.error.empty();
+    std::string label = e.name;
+    if (broken) label += "  (broken)";
+    if (ImGui::Selectable(label.c_str(), selected_ == static_cast<int>(i), ImGuiSelectableFlags_AllowDoubleClick)) {
+      selected_ = static_cast<int>(i);
+      if (ImGui::IsMouseDoubleClicked(0)) play();
+    }
+    if (broken) {
+      ImGui::TextColored(ImVec4(1, 0.5f, 0.4f, 1), "    %s", e.error.c_str());
+    } else {
+      ImGui::SameLine(520);
+      if (e.best.bestTime)
+        ImGui::Text("best %.1f s  %s", *e.best.bestTime, e.best.bestMedal.c_str());
+      else
+        ImGui::TextDisabled("%s", e.best.attempts ? "not yet completed" : "not played");
+    }
+    ImGui::PopID();
+  }
+  if (selected_ < static_cast<int>(entries_.size()) && entries_[static_cast<std::size_t>(selected_)].error.empty()) {
+    ImGui::Separator();
+    ImGui::TextWrapped("%s", entries_[static_cast<std::size_t>(selected_)].description.c_str());
+  }
+  ImGui::Separator();
+  if (ImGui::Button("Play  (Enter)")) play();
+  ImGui::SameLine();
+  if (ImGui::Button("Back  (Esc)")) app_.screens().pop();
+  ImGui::End();
+}
+
+}  // namespace hemiroll::game

@@ -1,0 +1,45 @@
+#pragma once
+// The level select: every *.lua in the levels directory (sorted by file
+// name), each loaded to show its name, difficulty and description, with the
+// best time and medal from the scores database. A level that does not load is
+// listed as broken with its error (file:line: what), never hidden.
+// Keys: Up/Down choose, Enter plays, Escape goes back.
+
+#include <string>
+#include <vector>
+
+#include "game/scores/ScoreStore.h"
+#include "game/screens/Screen.h"
+
+namespace hemiroll::game {
+
+struct LevelEntry {
+  std::string path;
+  std::string name;         // the file name when broken
+  std::string description;
+  int difficulty = 0;
+  std::string error;        // "" = loads
+  LevelBest best;
+};
+
+// The levels in `dir` (not its subdirectories: levels/scenarios holds `sim` scenarios).
+std::vector<LevelEntry> scanLevels(const std::string& dir);
+
+class LevelSelectScreen final : public Screen {
+ public:
+  using Screen::Screen;
+  const char* name() const override { return "levels"; }
+  void enter() override;
+  void input(const platform::InputEvent& e) override;
+  void paint() override;
+
+  const std::vector<LevelEntry>& entries() const { return entries_; }
+  int selected() const { return selected_; }
+
+ private:
+  void play();
+  std::vector<LevelEntry> entries_;
+  int selected_ = 0;
+};
+
+}  // namespace hemiroll::game

@@ -1,0 +1,49 @@
+#include "game/screens/PauseScreen.h"
+
+#include <imgui.h>
+
+#include "game/app/App.h"
+#include "game/screens/PlayScreen.h"
+#include "game/screens/ScreenLayout.h"
+
+namespace hemiroll::game {
+
+void PauseScreen::resume() {
+  play_.resume();
+  app_.screens().pop();
+}
+
+void PauseScreen::restart() {
+  play_.restart();
+  app_.screens().pop();
+}
+
+void PauseScreen::quit() {
+  play_.quit();  // the play screen sees the finished trial on its next update
+  app_.screens().pop();
+}
+
+void PauseScreen::input(const platform::InputEvent& e) {
+  if (e.type != platform::InputType::KeyDown || e.repeat) return;
+  if (e.key == platform::Key::Escape || e.key == platform::Key::Enter) resume();
+  else if (e.code == 'r') restart();
+  else if (e.code == 'q') quit();
+}
+
+// The paused loop still publishes a row per tick (time standing still): the
+// play screen keeps draining them, or the ring would fill in 4 s.
+void PauseScreen::update(double) { play_.drainWhilePaused(); }
+
+void PauseScreen::paint() {
+  beginCentredPanel("pause", 360);
+  ImGui::SetWindowFontScale(1.6f);
+  ImGui::Text("Paused");
+  ImGui::SetWindowFontScale(1.0f);
+  const ImVec2 button(-1, 0);
+  if (ImGui::Button("Continue  (Esc)", button)) resume();
+  if (ImGui::Button("Restart  (R)", button)) restart();
+  if (ImGui::Button("Quit the trial  (Q)", button)) quit();
+  ImGui::End();
+}
+
+}  // namespace hemiroll::game

@@ -1,0 +1,29 @@
+#pragma once
+// Pause, over the play screen (which keeps being drawn, frozen: the servo
+// loop got a Pause command, force zero at once). Continue (Escape, Enter),
+// restart (R), quit the trial (Q: it ends as a failure, "quit by the
+// player", and the results screen follows).
+
+#include "game/screens/Screen.h"
+
+namespace hemiroll::game {
+
+class PlayScreen;
+
+class PauseScreen final : public Screen {
+ public:
+  PauseScreen(App& app, PlayScreen& play) : Screen(app), play_(play) {}
+  const char* name() const override { return "pause"; }
+  bool overlay() const override { return true; }
+  void input(const platform::InputEvent& e) override;
+  void update(double dt) override;
+  void paint() override;
+
+ private:
+  void resume();
+  void restart();
+  void quit();
+  PlayScreen& play_;
+};
+
+}  // namespace hemiroll::game

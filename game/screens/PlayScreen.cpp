@@ -1,0 +1,148 @@
+#include "game/screens/PlayScreen.h"
+
+#include <imgui.h>
+
+#include <cmath>
+
+#include "engine/physics/StateLayout.h"
+#include "game/app/App.h"
+#include "game/screens/PauseScreen.h"
+#include "game/screens/ResultsScreen.h"
+#include "game/screens/ScreenLayout.h"
+#include "game/view/RenderSceneBuilder.h"
+
+namespace hemiroll::game {
+
+PlayScreen::PlayScreen(App& app, std::string levelPath) : Screen(app), levelPath_(std::move(levelPath)) {}
+
+PlayScreen::~PlayScreen() = default;
+
+void PlayScreen::begin() {
+  error_.clear();
+  session_.reset();
+  try {
+    level_ = script::LevelLoader().loadFile(levelPath_);
+    PlaySessionDef def;
+    const platform::PixelSize size = app_.window().windowSize();
+    def.windowWidth = size.width;
+    def.windowHeight = size.height;
+    def.requestRealtime = app_.def().requestRealtime;
+    def.coupling = couplingFor(app_.settings(), level_.def.coupling);
+    session_ = std::make_unique<PlaySession>(level_, def);
+    session_->start();
+  } catch (const std::exception& e) {
+    error_ = e.what();
+    session_.reset();
+    return;
+  }
+  const bool mouse = app_.settings().device == "mouse";
+  hud_.reset();
+  const physics::CouplingDef coupling = couplingFor(app_.settings(), level_.def.coupling);
+  hud_.setLabels(level_.def.name, app_.settings().device,
+                 coupling.visualOnly ? "visual only" : physics::forceMethodName(coupling.method), mouse,
+                 level_.def.params.radius);
+  trace_.clear();
+  lastEngagement_ = haptics::Engagement::Disengaged;
+}
+
+void PlayScreen::enter() {
+  if (!started_) {
+    started_ = true;
+    begin();
+  }
+}
+
+void PlayScreen::pause() {
+  if (!session_ || session_->finished()) return;
+  session_->pause();
+  app_.screens().push(std::make_unique<PauseScreen>(app_, *this));
+}
+
+void PlayScreen::resume() {
+  if (session_) session_->resume();
+}
+
+void PlayScreen::restart() { begin(); }
+
+void PlayScreen::quit() {
+  if (session_) session_->quit();
+}
+
+void PlayScreen::input(const platform::InputEvent& e) {
+  using platform::InputType;
+  if (!session_) {
+    if (e.type == InputType::KeyDown && (e.key == platform::Key::Escape || e.key == platform::Key::Enter))
+      app_.screens().pop();
+    return;
+  }
+  switch (e.type) {
+    case InputType::PointerMove: session_->pointer(e.x, e.y); break;
+    case InputType::ButtonDown:
+      session_->pointer(e.x, e.y);
+      if (e.button == platform::PointerButton::Left) session_->click();
+      if (e.button == platform::PointerButton::Right) session_->release();
+      break;
+    case InputType::Wheel: session_->wheel(e.wheel); break;
+    case InputType::Resized: session_->resize(static_cast<int>(e.x), static_cast<int>(e.y)); break;
+    case InputType::FocusLost: pause(); break;
+    case InputType::KeyDown:
+      if (e.key == platform::Key::Escape && !e.repeat) pause();
+      if (e.key == platform::Key::Tab && !e.repeat) {
+        auto& camera = app_.settings().camera;
+        camera = camera == render::CameraMode::Follow ? render::CameraMode::Top
+                 : camera == render::CameraMode::Top  ? render::CameraMode::Orbit
+                                                      : render::CameraMode::Follow;
+      }
+      break;
+    default: break;
+  }
+}
+
+void PlayScreen::update(double) {
+  if (!session_) return;
+  session_->frame();
+  const haptics::ServoSnapshot& s = session_->snapshot();
+  hud_.update(s, session_->judging().judge());
+  const std::size_t stage = static_cast<std::size_t>(std::max(0, session_->judging().judge().stage()));
+  fillFromSnapshot(level_.def, s, stage, scene_);
+  if (level_.def.scene.contactTrace) {
+    trace_.push(s.state[physics::force_slot::u_a], s.state[physics::force_slot::v_a], s.time);
+    scene_.trace = &trace_;
+  }
+  scene_.camera.mode = app_.settings().camera;
+  scene_.camera.zoom = app_.settings().zoom;
+
+  // Sounds: clicks on taking hold and letting go; the tone while held.
+  Audio& audio = app_.audio();
+  if (s.engagement != lastEngagement_) {
+    if (s.engagement == haptics::Engagement::Engaged) audio.play(Cue::Engage);
+    if (s.engagement == haptics::Engagement::RampingOut) audio.play(Cue::Disengage);
+    lastEngagement_ = s.engagement;
+  }
+  const double worst = session_->judging().judge().worstNormalizedMargin();
+  const double closeness = !std::isfinite(worst) ? 0.0 : worst >= 0.0 ? 1.0 : 1.0 / (1.0 - worst);
+  audio.setProximity(s.engagement == haptics::Engagement::Engaged ? closeness : 0.0);
+
+  if (session_->finished()) {
+    audio.setProximity(0.0);
+    TrialResult result = session_->finish();
+    audio.play(result.outcome == script::TrialOutcome::Success ? Cue::Success : Cue::Failure);
+    app_.screens().replace(std::make_unique<ResultsScreen>(app_, levelPath_, level_.def.name, std::move(result)));
+  }
+}
+
+void PlayScreen::paint() {
+  if (!session_) {
+    beginCentredPanel("play error", 700);
+    ImGui::TextColored(ImVec4(1, 0.5f, 0.4f, 1), "This level cannot be played:");
+    ImGui::TextWrapped("%s", error_.c_str());
+    if (ImGui::Button("Back  (Esc)")) app_.screens().pop();
+    ImGui::End();
+    return;
+  }
+  const platform::PixelSize d = app_.window().drawableSize();
+  app_.renderer().render(scene_, d.width, d.height);
+  hud_.draw(app_.fps());
+}
+
+}  // namespace hemiroll::game

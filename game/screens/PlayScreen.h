@@ -1,0 +1,59 @@
+#pragma once
+// Playing a level: a PlaySession (servo loop on its own thread with the
+// mouse), drawn every frame from the latest snapshot through
+// RenderSceneBuilder and engine/render, with the PlayHud over it.
+// Mouse: move = the proxy, left click = take hold (engages near the mass
+// point), right click = let go, wheel = proxy height. Keys: Escape pauses
+// (as does the window losing focus), Tab changes the camera. When the judge
+// ends the trial the results screen takes this one's place.
+
+#include <memory>
+#include <string>
+
+#include "engine/render/ContactTrace.h"
+#include "engine/render/RenderScene.h"
+#include "engine/script/LevelLoader.h"
+#include "game/hud/PlayHud.h"
+#include "game/play/PlaySession.h"
+#include "game/screens/Screen.h"
+
+namespace hemiroll::game {
+
+class PlayScreen final : public Screen {
+ public:
+  PlayScreen(App& app, std::string levelPath);
+  ~PlayScreen() override;
+  const char* name() const override { return "play"; }
+  void enter() override;
+  void input(const platform::InputEvent& e) override;
+  void update(double dt) override;
+  void paint() override;
+
+  // From the pause screen.
+  void resume();
+  void restart();
+  void quit();
+  void drainWhilePaused() {
+    if (session_) session_->frame();
+  }
+
+  PlaySession* session() { return session_.get(); }
+  const PlayHud& hud() const { return hud_; }
+  const std::string& error() const { return error_; }
+
+ private:
+  void begin();
+  void pause();
+
+  std::string levelPath_;
+  std::string error_;  // the level failed to load or the loop refused it
+  script::LoadedLevel level_;
+  std::unique_ptr<PlaySession> session_;
+  PlayHud hud_;
+  render::RenderScene scene_;
+  render::ContactTrace trace_;
+  haptics::Engagement lastEngagement_ = haptics::Engagement::Disengaged;
+  bool started_ = false;
+};
+
+}  // namespace hemiroll::game

@@ -1,0 +1,57 @@
+#include "game/screens/ResultsScreen.h"
+
+#include <imgui.h>
+
+#include "game/app/App.h"
+#include "game/screens/PlayScreen.h"
+#include "game/screens/ScreenLayout.h"
+
+namespace hemiroll::game {
+
+ResultsScreen::ResultsScreen(App& app, std::string levelPath, std::string levelName, TrialResult result)
+    : Screen(app), levelPath_(std::move(levelPath)), levelName_(std::move(levelName)), result_(std::move(result)) {
+  const std::string& player = app_.settings().participant;
+  before_ = app_.scores().personalBest(levelName_, player);
+  const bool success = result_.outcome == script::TrialOutcome::Success;
+  newBest_ = success && (!before_.bestTime || result_.time < *before_.bestTime);
+  ScoreEntry entry;
+  entry.level = levelName_;
+  entry.player = player;
+  entry.success = success;
+  entry.time = result_.time;
+  entry.score = result_.score;
+  entry.medal = script::medalName(result_.medal);
+  stored_ = app_.scores().add(entry);
+}
+
+void ResultsScreen::again() { app_.screens().replace(std::make_unique<PlayScreen>(app_, levelPath_)); }
+
+void ResultsScreen::input(const platform::InputEvent& e) {
+  if (e.type != platform::InputType::KeyDown || e.repeat) return;
+  if (e.key == platform::Key::Enter) again();
+  else if (e.key == platform::Key::Escape) app_.screens().pop();
+}
+
+void ResultsScreen::paint() {
+  beginCentredPanel("results", 560);
+  const bool success = result_.outcome == script::TrialOutcome::Success;
+  ImGui::SetWindowFontScale(1.8f);
+  ImGui::TextColored(success ? ImVec4(0.4f, 0.9f, 0.45f, 1) : ImVec4(1, 0.5f, 0.4f, 1), "%s",
+                     success ? "Success" : "Not this time");
+  ImGui::SetWindowFontScale(1.0f);
+  ImGui::Text("%s: %s", levelName_.c_str(), result_.reason.c_str());
+  ImGui::Text("time %.2f s", result_.time);
+  if (result_.score)
+    ImGui::Text("score %.1f   medal %s", *result_.score, script::medalName(result_.medal));
+  else if (!result_.scoreError.empty())
+    ImGui::TextColored(ImVec4(1, 0.5f, 0.4f, 1), "no score: %s", result_.scoreError.c_str());
+  if (newBest_) ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1), "new personal best");
+  if (before_.bestTime) ImGui::Text("personal best before: %.2f s", *before_.bestTime);
+  if (!stored_) ImGui::TextDisabled("(this trial could not be stored in %s)", app_.scores().file().c_str());
+  const ImVec2 button(-1, 0);
+  if (ImGui::Button("Play again  (Enter)", button)) again();
+  if (ImGui::Button("Levels  (Esc)", button)) app_.screens().pop();
+  ImGui::End();
+}
+
+}  // namespace hemiroll::game

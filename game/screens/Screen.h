@@ -1,0 +1,39 @@
+#pragma once
+// game/screens: the game's screens as state objects (Neverball's "state"
+// idea): each has enter/leave/input/update/paint hooks and lives on a
+// ScreenStack. A screen knows the App (its services: window, renderer,
+// audio, scores, settings) and may ask the stack to change; it must not
+// touch SDL directly (input arrives as platform::InputEvent, so tests drive
+// screens with the same events a player makes).
+//
+// Screens: Title -> LevelSelect -> Play (+ Pause overlay) -> Results;
+// Settings and Research from the title.
+
+#include "engine/platform/InputEvent.h"
+
+namespace hemiroll::game {
+
+class App;
+
+class Screen {
+ public:
+  explicit Screen(App& app) : app_(app) {}
+  virtual ~Screen() = default;
+  Screen(const Screen&) = delete;
+  Screen& operator=(const Screen&) = delete;
+
+  virtual const char* name() const = 0;  // "title", "play", ... (tests and logs)
+  virtual void enter() {}                // became the top screen (pushed, or the one above left)
+  virtual void leave() {}                // another screen covers it, or it is removed
+  virtual void input(const platform::InputEvent&) {}
+  virtual void update(double /*dt*/) {}
+  // GL drawing and ImGui calls for this frame (between the layer's begin/end).
+  virtual void paint() = 0;
+  // An overlay (pause) paints over the screen below it instead of hiding it.
+  virtual bool overlay() const { return false; }
+
+ protected:
+  App& app_;
+};
+
+}  // namespace hemiroll::game

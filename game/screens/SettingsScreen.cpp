@@ -1,0 +1,72 @@
+#include "game/screens/SettingsScreen.h"
+
+#include <imgui.h>
+
+#include "engine/physics/ForceCoupling.h"
+#include "game/app/App.h"
+#include "game/screens/ScreenLayout.h"
+
+namespace hemiroll::game {
+
+void SettingsScreen::input(const platform::InputEvent& e) {
+  if (e.type == platform::InputType::KeyDown && e.key == platform::Key::Escape && !e.repeat) app_.screens().pop();
+}
+
+void SettingsScreen::paint() {
+  Settings& s = app_.settings();
+  beginCentredPanel("settings", 620);
+  ImGui::SetWindowFontScale(1.6f);
+  ImGui::Text("Settings");
+  ImGui::SetWindowFontScale(1.0f);
+
+  ImGui::Separator();
+  ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1), "Device");
+  ImGui::TextWrapped("mouse (the window plays with the mouse; joystick and udp devices play through "
+                     "`hemiroll run` and the haptic client for now)");
+
+  ImGui::Separator();
+  ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1), "Force method");
+  ImGui::Checkbox("override the level's method and gains", &s.overrideCoupling);
+  ImGui::BeginDisabled(!s.overrideCoupling);
+  static constexpr const char* kMethods[] = {"M1", "M2", "M3 (the paper's)", "visual only"};
+  ImGui::Combo("method", &s.method, kMethods, IM_ARRAYSIZE(kMethods));
+  float k = static_cast<float>(s.stiffness), c = static_cast<float>(s.damping), a = static_cast<float>(s.alpha);
+  if (ImGui::SliderFloat("stiffness k_r [N/m]", &k, 10.0f, 1000.0f, "%.0f")) s.stiffness = k;
+  if (ImGui::SliderFloat("damping k_v [N s/m]", &c, 0.0f, 40.0f, "%.1f")) s.damping = c;
+  if (ImGui::SliderFloat("M3 alpha [-]", &a, 0.5f, 5.0f, "%.1f")) s.alpha = a;
+  ImGui::EndDisabled();
+  if (s.overrideCoupling) {
+    const std::string problem = physics::validateCoupling(couplingFor(s, physics::CouplingDef{}));
+    if (!problem.empty()) ImGui::TextColored(ImVec4(1, 0.5f, 0.4f, 1), "%s", problem.c_str());
+  }
+
+  ImGui::Separator();
+  ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1), "Keys");
+  ImGui::TextDisabled("left click: take hold   right click: let go   wheel: proxy height");
+  ImGui::TextDisabled("Esc: pause   Tab: camera   Enter: confirm");
+
+  ImGui::Separator();
+  ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1), "Audio");
+  float volume = static_cast<float>(s.volume);
+  if (ImGui::SliderFloat("volume", &volume, 0.0f, 1.0f, "%.2f")) {
+    s.volume = volume;
+    app_.audio().setVolume(volume);
+  }
+  if (!app_.audio().available()) ImGui::TextDisabled("%s", app_.audio().note().c_str());
+
+  ImGui::Separator();
+  ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1), "Graphics");
+  bool vsync = s.vsync;
+  if (ImGui::Checkbox("vsync", &vsync)) app_.setVsync(vsync);
+  int camera = static_cast<int>(s.camera);
+  static constexpr const char* kCameras[] = {"follow", "orbit", "top"};
+  if (ImGui::Combo("camera", &camera, kCameras, IM_ARRAYSIZE(kCameras))) s.camera = static_cast<render::CameraMode>(camera);
+  float zoom = static_cast<float>(s.zoom);
+  if (ImGui::SliderFloat("zoom", &zoom, 0.5f, 3.0f, "%.2f")) s.zoom = zoom;
+
+  ImGui::Spacing();
+  if (ImGui::Button("Back  (Esc)", ImVec2(-1, 0))) app_.screens().pop();
+  ImGui::End();
+}
+
+}  // namespace hemiroll::game

@@ -1,0 +1,41 @@
+#include "game/screens/TitleScreen.h"
+
+#include <imgui.h>
+
+#include "game/app/App.h"
+#include "game/screens/LevelSelectScreen.h"
+#include "game/screens/ResearchScreen.h"
+#include "game/screens/ScreenLayout.h"
+#include "game/screens/SettingsScreen.h"
+
+namespace hemiroll::game {
+
+void TitleScreen::play() { app_.screens().push(std::make_unique<LevelSelectScreen>(app_)); }
+void TitleScreen::settings() { app_.screens().push(std::make_unique<SettingsScreen>(app_)); }
+void TitleScreen::research() { app_.screens().push(std::make_unique<ResearchScreen>(app_)); }
+
+void TitleScreen::input(const platform::InputEvent& e) {
+  if (e.type != platform::InputType::KeyDown || e.repeat) return;
+  if (e.key == platform::Key::Enter || e.key == platform::Key::Space) play();
+  else if (e.key == platform::Key::Escape || e.code == 'q') app_.requestQuit();
+  else if (e.code == 's') settings();
+  else if (e.code == 'r') research();
+}
+
+void TitleScreen::paint() {
+  beginCentredPanel("title", 520);
+  ImGui::SetWindowFontScale(3.0f);
+  ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1.0f), "hemiroll");
+  ImGui::SetWindowFontScale(1.0f);
+  ImGui::TextWrapped("Roll the hemisphere by moving the mass point on its face. Click on the mass point to take hold.");
+  ImGui::Spacing();
+  const ImVec2 button(-1, 0);
+  if (ImGui::Button("Play  (Enter)", button)) play();
+  if (ImGui::Button("Settings  (S)", button)) settings();
+  if (ImGui::Button("Research session  (R)", button)) research();
+  if (ImGui::Button("Quit  (Esc)", button)) app_.requestQuit();
+  for (const std::string& note : app_.notes()) ImGui::TextDisabled("%s", note.c_str());
+  ImGui::End();
+}
+
+}  // namespace hemiroll::game

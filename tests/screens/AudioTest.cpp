@@ -1,0 +1,90 @@
+#include "game/audio/Audio.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <vector>
+
+namespace hemiroll::game {
+namespace {
+
+// Synthesis is called directly: on SDL's dummy driver the device thread may
+// also call it, so each test here uses its own Audio on a driver that cannot
+// open (no thread) unless it tests the device itself.
+class AudioTest : public ::testing::Test {
+ protected:
+  void SetUp() override { setenv("SDL_AUDIODRIVER", "no-such-driver", 1); }
+};
+
+double peak(const std::vector<float>& v) {
+  double p = 0.0;
+  for (float s : v) p = std::max(p, std::abs(static_cast<double>(s)));
+  return p;
+}
+
+int zeroCrossings(const std::vector<float>& v) {
+  int n = 0;
+  for (std::size_t i = 1; i < v.size(); ++i) n += (v[i - 1] < 0.0f) != (v[i] < 0.0f);
+  return n;
+}
+
+TEST_F(AudioTest, AMissingDriverMeansSilenceWithANoteNeverAFailure) {
+  Audio audio;
+  EXPECT_FALSE(audio.available());
+  EXPECT_NE(audio.note().find("no sound"), std::string::npos) << audio.note();
+  audio.play(Cue::Success);  // no-ops that must not crash
+  audio.setProximity(0.5);
+  EXPECT_EQ(audio.cuesPlayed(), 1u);
+}
+
+TEST_F(AudioTest, SilentWithoutCueOrToneAndBoundedWithOne) {
+  Audio audio;
+  std::vector<float> buffer(4800);
+  audio.synthesize(buffer.data(), static_cast<int>(buffer.size()));
+  EXPECT_EQ(peak(buffer), 0.0);
+  audio.play(Cue::Success);
+  audio.synthesize(buffer.data(), static_cast<int>(buffer.size()));
+  EXPECT_GT(peak(buffer), 0.05);  // the chime is audible (0.3 per note before volume 0.6)
+  EXPECT_LE(peak(buffer), 1.0);
+}
+
+TEST_F(AudioTest, VolumeZeroSilencesCues) {
+  Audio audio;
+  audio.setVolume(0.0);
+  audio.play(Cue::Failure);
+  std::vector<float> buffer(4800);
+  audio.synthesize(buffer.data(), static_cast<int>(buffer.size()));
+  EXPECT_EQ(peak(buffer), 0.0);
+  audio.setVolume(std::nan(""));  // bad input: silence, not NaN samples
+  audio.play(Cue::Failure);
+  audio.synthesize(buffer.data(), static_cast<int>(buffer.size()));
+  EXPECT_EQ(peak(buffer), 0.0);
+}
+
+TEST_F(AudioTest, TheToneRisesAsTheStateNearsTolerance) {
+  // 2 s per setting: the tone's level settles within ~0.1 s (time constant
+  // 1000 samples), so the last second is the steady tone.
+  auto crossings = [](double closeness) {
+    Audio audio;
+    audio.setProximity(closeness);
+    std::vector<float> buffer(96000);
+    audio.synthesize(buffer.data(), static_cast<int>(buffer.size()));
+    return zeroCrossings(std::vector<float>(buffer.begin() + 48000, buffer.end()));
+  };
+  const int far = crossings(0.1), near = crossings(1.0);
+  // 220 * 3^0.1 = 245 Hz -> ~490 crossings/s; 660 Hz -> ~1320 (+-2 for phase).
+  EXPECT_NEAR(far, 2 * 220.0 * std::pow(3.0, 0.1), 4);
+  EXPECT_NEAR(near, 2 * 660.0, 4);
+}
+
+TEST(AudioDeviceTest, OpensOnSdlsDummyDriver) {
+  setenv("SDL_AUDIODRIVER", "dummy", 1);
+  Audio audio;
+  EXPECT_TRUE(audio.available()) << audio.note();
+  audio.play(Cue::Engage);
+  EXPECT_EQ(audio.cuesPlayed(), 1u);
+}
+
+}  // namespace
+}  // namespace hemiroll::game

@@ -1,0 +1,78 @@
+#include "game/play/PlaySession.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <thread>
+
+#include "engine/script/LevelLoader.h"
+
+namespace hemiroll::game {
+namespace {
+
+using namespace std::chrono_literals;
+
+// A scripted mouse plays tutorial 01 in real time for ~2.5 s: onto the mass
+// point (the window centre), click, small circles. Timing bounds are loose
+// on purpose (a loaded 2-core machine): the test checks the session's
+// behaviour, the benchmark its speed.
+TEST(PlaySessionTest, AScriptedMouseEngagesAndPlaysPausesAndQuits) {
+  script::LoadedLevel level = script::LevelLoader().loadFile(HEMIROLL_SOURCE_DIR "/levels/tutorial_01_tilt_and_return.lua");
+  PlaySessionDef def;
+  def.requestRealtime = false;  // no SCHED_FIFO in tests
+  PlaySession session(level, def);
+  // The pointer starts at the window centre: the proxy at the mass point.
+  session.start();
+  session.click();
+  bool engaged = false;
+  const auto start = std::chrono::steady_clock::now();
+  while (std::chrono::steady_clock::now() - start < 2500ms && !session.finished()) {
+    const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    session.pointer(640 + 6.0 * std::cos(3.0 * t), 360 + 6.0 * std::sin(3.0 * t));
+    session.frame();
+    engaged = engaged || session.snapshot().engagement == haptics::Engagement::Engaged;
+    std::this_thread::sleep_for(16ms);  // a 60 fps frame
+  }
+  ASSERT_FALSE(session.finished()) << session.judging().judge().reason();
+  EXPECT_TRUE(engaged);
+  const double before = session.snapshot().time;
+  EXPECT_GT(before, 1.0);  // the loop ran on its own thread
+  EXPECT_GE(session.judging().judgedTicks(), static_cast<long long>(before * 1000) - 50);  // every tick judged, ring lag < 50 ms
+
+  session.pause();
+  std::this_thread::sleep_for(100ms);  // the command is applied within a tick or two
+  session.frame();
+  const double pausedAt = session.snapshot().time;
+  std::this_thread::sleep_for(200ms);
+  session.frame();
+  EXPECT_EQ(session.snapshot().time, pausedAt);
+  EXPECT_TRUE(session.snapshot().paused);
+  session.resume();
+  std::this_thread::sleep_for(200ms);
+  session.frame();
+  EXPECT_GT(session.snapshot().time, pausedAt);
+
+  session.quit();
+  const TrialResult result = session.finish();
+  EXPECT_EQ(result.outcome, script::TrialOutcome::Failure);
+  EXPECT_EQ(result.reason, "quit by the player");
+  EXPECT_LE(result.maxRenderedForce, 1e-12);  // a mouse renders no force (max force 0)
+}
+
+TEST(PlaySessionTest, APointerFarFromTheMassPointDoesNotEngage) {
+  script::LoadedLevel level = script::LevelLoader().loadFile(HEMIROLL_SOURCE_DIR "/levels/tutorial_01_tilt_and_return.lua");
+  PlaySessionDef def;
+  def.requestRealtime = false;
+  PlaySession session(level, def);
+  session.start();
+  session.pointer(640 + 200, 360);  // 5 cm off at 0.25 mm/px
+  session.click();
+  std::this_thread::sleep_for(300ms);
+  session.frame();
+  EXPECT_EQ(session.snapshot().engagement, haptics::Engagement::Armed);
+  EXPECT_GT(session.snapshot().proxyDistance, 0.04);
+}
+
+}  // namespace
+}  // namespace hemiroll::game

@@ -1,0 +1,89 @@
+#include "game/app/ScreenTour.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "game/app/App.h"
+#include "game/screens/LevelSelectScreen.h"
+#include "tests/support/TempDirectory.h"
+
+namespace hemiroll::game {
+namespace {
+
+std::string readFile(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Pixels within `tolerance` per channel of an RGB colour. The tolerance
+// covers text anti-aliasing: only the glyphs' solid cores match.
+int countColour(const render::Image& image, int r, int g, int b, int tolerance = 12) {
+  int n = 0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      const std::uint8_t* p = image.pixel(x, y);
+      n += std::abs(p[0] - r) <= tolerance && std::abs(p[1] - g) <= tolerance && std::abs(p[2] - b) <= tolerance;
+    }
+  return n;
+}
+
+// title -> level select -> play (a scripted mouse takes hold) -> pause ->
+// results, driven by the same InputEvents a player makes, in a real window
+// under Xvfb with llvmpipe.
+TEST(ScreenTourTest, TitleLevelsPlayPauseResultsWithSyntheticInput) {
+  test::TempDirectory dir;
+  std::filesystem::create_directory(dir.path() / "levels");
+  const std::string good = dir.write("levels/a_tilt.lua",
+                                     readFile(HEMIROLL_SOURCE_DIR "/levels/tutorial_01_tilt_and_return.lua"));
+  dir.write("levels/b_broken.lua", "return { name = \n");
+  AppDef def;
+  def.hidden = true;
+  def.vsync = false;
+  def.requestRealtime = false;
+  def.levelsDir = (dir.path() / "levels").string();
+  def.scoresFile = (dir.path() / "scores.sqlite").string();
+  App app(def);
+  ScreenTourDef tour;
+  tour.level = good;
+  tour.playSeconds = 1.5;
+  const std::vector<ScreenTourStop> stops = runScreenTour(app, tour);
+
+  ASSERT_EQ(stops.size(), 5u);
+  const char* expected[] = {"title", "levels", "play", "pause", "results"};
+  for (std::size_t i = 0; i < 5; ++i) {
+    EXPECT_EQ(stops[i].screen, expected[i]);
+    EXPECT_EQ(stops[i].image.width, 1280);
+    EXPECT_EQ(stops[i].image.height, 720);
+  }
+  // The title's name in gold (0.95, 0.8, 0.35): its glyph cores are ~160
+  // pixels with ImGui's built-in font at 3x; half of that leaves room for
+  // rasteriser differences, and the other screens have none.
+  EXPECT_GT(countColour(stops[0].image, 242, 204, 89), 80);
+  EXPECT_EQ(countColour(stops[1].image, 242, 204, 89), 0);
+  // The broken level is listed, its error in red (1, 0.5, 0.4); the title has none.
+  EXPECT_GT(countColour(stops[1].image, 255, 128, 102), 100);
+  EXPECT_EQ(countColour(stops[0].image, 255, 128, 102), 0);
+  // The play screen draws the scene: the menus' plain background (0.09, 0.1,
+  // 0.13) is gone from the middle of the window.
+  const std::uint8_t* centre = stops[2].image.pixel(640, 360);
+  EXPECT_FALSE(std::abs(centre[0] - 23) < 4 && std::abs(centre[1] - 26) < 4 && std::abs(centre[2] - 33) < 4);
+  EXPECT_GT(countColour(stops[0].image, 23, 26, 33, 2), 1280 * 720 / 2);
+  EXPECT_LT(countColour(stops[2].image, 23, 26, 33, 2), 1280 * 720 / 50);
+  // The HUD's green "in" indicators or red "out" ones are drawn.
+  EXPECT_GT(countColour(stops[2].image, 89, 217, 102) + countColour(stops[2].image, 242, 102, 89), 50);
+  // The trial quit from the pause screen was stored as one attempt, not completed.
+  const std::vector<LevelEntry> levels = scanLevels(def.levelsDir);
+  ASSERT_FALSE(levels.empty());
+  const LevelBest best = app.scores().best(levels.front().name);
+  EXPECT_EQ(best.attempts, 1);
+  EXPECT_FALSE(best.bestTime);
+}
+
+}  // namespace
+}  // namespace hemiroll::game
