@@ -54,6 +54,14 @@ void GpuMesh::draw() const {
   glDrawArrays(mode_, 0, GLsizei(count_));
 }
 
+void GpuMesh::drawRange(std::size_t first, std::size_t count) const {
+  if (first >= count_) return;
+  count = std::min(count, count_ - first);
+  if (count == 0) return;
+  glBindVertexArray(vao_);
+  glDrawArrays(mode_, GLint(first), GLsizei(count));
+}
+
 void GpuMesh::release() {
   if (vbo_) glDeleteBuffers(1, &vbo_);
   if (vao_) glDeleteVertexArrays(1, &vao_);

@@ -25,6 +25,8 @@ class GpuMesh {
   // Dynamic meshes: replaces the contents; vertices beyond capacity are dropped.
   void update(const Vertex* vertices, std::size_t count);
   void draw() const;
+  // Vertices [first, first + count) of the current contents (clipped to them).
+  void drawRange(std::size_t first, std::size_t count) const;
   std::size_t count() const { return count_; }
   std::size_t capacity() const { return capacity_; }
   bool valid() const { return vao_ != 0; }

@@ -26,6 +26,7 @@ constexpr double kMassPointRadii = 0.12;  // [R]: visible at the follow distance
 constexpr double kProxyRadii = 0.10;      // [R]
 constexpr double kShadowRadii = 0.9;      // [R]
 constexpr float kXrayAlpha = 0.55f;        // floor lines seen through the solids
+constexpr std::size_t kXrayTraceVertices = 512;  // the trace's newest 256 segments go through the solids
 constexpr std::size_t kSpringVertices = 512;  // appendSpringCoil: 8 turns x 12 segments x 2
 // Room for the trace plus the target/zone outlines and a spring coil.
 constexpr std::size_t kExtraLineVertices = 8192;
@@ -85,12 +86,16 @@ Renderer::Renderer(const RendererDef& def) : def_(def) {
 Renderer::~Renderer() = default;
 
 void Renderer::drawMesh(const GpuMesh& mesh, const Eigen::Matrix4f& model, Rgba tint, bool lit) {
+  setUniforms(model, tint, lit);
+  mesh.draw();
+}
+
+void Renderer::setUniforms(const Eigen::Matrix4f& model, Rgba tint, bool lit) {
   glUniformMatrix4fv(u_.model, 1, GL_FALSE, model.data());
   const Eigen::Matrix3f normal = model.topLeftCorner<3, 3>().inverse().transpose();
   glUniformMatrix3fv(u_.normalMatrix, 1, GL_FALSE, normal.data());
   glUniform4f(u_.tint, tint.r, tint.g, tint.b, tint.a);
   glUniform1i(u_.lit, lit ? 1 : 0);
-  mesh.draw();
 }
 
 void Renderer::render(const RenderScene& scene, int width, int height) {
@@ -114,8 +119,14 @@ void Renderer::render(const RenderScene& scene, int width, int height) {
   // X-ray: the outlines and the trace once more over everything, faint. The
   // hemisphere sits on its own contact point, so millimetre targets and the
   // trace's head would otherwise be hidden exactly where the player looks.
+  // Only the trace's recent part: the head is what hides under the body,
+  // and each line costs the software rasteriser per pixel.
   glDisable(GL_DEPTH_TEST);
-  drawMesh(lines_, Eigen::Matrix4f::Identity(), {1, 1, 1, kXrayAlpha}, false);
+  setUniforms(Eigen::Matrix4f::Identity(), {1, 1, 1, kXrayAlpha}, false);
+  lines_.drawRange(0, outlineVertices_);
+  const std::size_t traceVertices = lines_.count() - outlineVertices_;
+  const std::size_t recent = std::min(traceVertices, kXrayTraceVertices);
+  lines_.drawRange(lines_.count() - recent, recent);
 }
 
 // The floor is the clear colour and the sky a second, scissored clear above
@@ -166,6 +177,7 @@ void Renderer::drawFloorLayer(const RenderScene& s) {
   lineScratch_.clear();
   appendZoneOutlines(s, lineScratch_);
   appendTargetOutlines(s, def_.floorExtent, lineScratch_);
+  outlineVertices_ = std::min(lineScratch_.size(), lines_.capacity());
   if (s.trace) appendTraceLines(*s.trace, s.time, lineScratch_);
   lines_.update(lineScratch_.data(), lineScratch_.size());
   drawMesh(lines_, identity, kWhite, false);

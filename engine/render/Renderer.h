@@ -51,6 +51,7 @@ class Renderer {
 
  private:
   void drawMesh(const GpuMesh& mesh, const Eigen::Matrix4f& model, Rgba tint, bool lit);
+  void setUniforms(const Eigen::Matrix4f& model, Rgba tint, bool lit);
   void clearFloorAndSky(int width, int height);
   void drawFloorLayer(const RenderScene& s);
   void drawSolids(const RenderScene& s);
@@ -64,6 +65,7 @@ class Renderer {
   GpuMesh hemisphere_, sphere_, arrow_, shadow_, grid_, proxy_;
   GpuMesh decals_, lines_, spring_;    // dynamic
   std::vector<Vertex> decalScratch_, lineScratch_, springScratch_;
+  std::size_t outlineVertices_ = 0;    // lines_ holds the outlines first, then the trace
   SceneSanitizer sanitizer_;
   RenderScene clean_;
   CameraView camera_;

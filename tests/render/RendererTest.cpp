@@ -14,6 +14,7 @@
 #include "engine/render/ContactTrace.h"
 #include "engine/render/Framebuffer.h"
 #include "engine/render/RenderError.h"
+#include "tests/render/support/AllocationCounter.h"
 #include "tests/render/support/GlTestContext.h"
 #include "tests/render/support/ImageCompare.h"
 
@@ -218,6 +219,25 @@ TEST_F(RendererTest, MissingAssetsFallBackToBuiltInsThatDrawTheSame) {
   target_->bind();
   fallback.render(s, kW, kH);
   EXPECT_TRUE(test::compareImages(fromFiles, target_->read()).matches());  // the built-ins are the files' copies
+}
+
+TEST_F(RendererTest, AWarmFrameAllocatesNothing) {
+  ContactTrace trace;
+  fillTrace(trace);
+  const RenderScene scene = taskScene(trace, CameraMode::Follow);
+  target_->bind();
+  renderer_->render(scene, kW, kH);  // warm: the scratch vectors reach their sizes
+  std::size_t allocations = 0;
+  {
+    test::AllocationCounter counter;
+    for (int i = 0; i < 3; ++i) renderer_->render(scene, kW, kH);
+    allocations = counter.count();
+  }
+  EXPECT_EQ(allocations, 0u);
+  // The counter counts: building a scene's vectors allocates.
+  test::AllocationCounter counter;
+  RenderScene copy = scene;
+  EXPECT_GT(counter.count(), 0u);
 }
 
 TEST_F(RendererTest, ABadImageSizeIsAnError) {
