@@ -4,12 +4,13 @@
 // scene says. Construct it with a current GL context (platform::Window);
 // keep it for the life of the context.
 //
-// One frame, in order: floor and sky (two clears), 1 cm / 10 cm grid, forbidden zones,
-// target bands, contact shadow, trace (no depth test: all lie on the plane);
-// then with depth test the hemisphere, the mass point, the proxy, the force
-// arrow and the spring; last, the floor's outlines and trace once more
-// through everything, faint (targets under the hemisphere stay visible). Vertex scratch buffers and dynamic GPU buffers are
-// sized at construction: after the first frame, render() allocates nothing.
+// One frame, in order: floor and sky (two clears), 1 cm / 10 cm grid,
+// forbidden zones, target bands, contact shadow, trace (no depth test: all
+// lie on the plane); then with depth test the hemisphere, the mass point, the
+// proxy, the force arrow and the spring; last, the outlines and the trace's
+// newest part once more over everything, faint (targets under the hemisphere
+// stay visible). Scratch vertex buffers and dynamic GPU buffers are sized at
+// construction: after the first frame, render() allocates nothing.
 
 #include <memory>
 #include <string>
