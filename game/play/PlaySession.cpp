@@ -26,6 +26,15 @@ PlaySession::PlaySession(script::LoadedLevel& level, const PlaySessionDef& def)
   loopDef_.recordRing = ring_.get();
   loopDef_.recordEvery = 1;  // the judge sees every tick
   if (def.coupling) loopDef_.coupling = *def.coupling;
+  if (!def.replayFile.empty()) {
+    try {
+      capture_ = std::make_unique<ReplayCapture>(def.replayFile, def.levelHash, loopDef_.period);
+      capture_->attach(loopDef_);
+    } catch (const std::exception& e) {
+      capture_.reset();
+      replayError_ = e.what();  // the trial goes on without a replay
+    }
+  }
   loop_ = std::make_unique<haptics::ServoLoop>(loopDef_, device_);
   initial_ = stateOf(loopDef_.initialState);
   snapshot_.state = loopDef_.initialState;
@@ -45,6 +54,7 @@ PlaySession::~PlaySession() {
 void PlaySession::start() {
   started_ = std::chrono::steady_clock::now();
   judging_.start(initial_);
+  if (capture_) capture_->start();
   if (!judging_.finished()) loop_->start();
 }
 
@@ -102,6 +112,8 @@ TrialResult PlaySession::finish() {
   if (!stopped_) {
     loop_->stop();
     stopped_ = true;
+    loop_->latest(snapshot_);  // the last tick run
+    if (capture_) replayError_ = capture_->finish(loop_->inputDropped());
   }
   if (!judging_.finished()) judging_.fail("quit by the player");
   TrialResult result = judging_.result(initial_);

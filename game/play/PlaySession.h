@@ -13,12 +13,14 @@
 // point; the force then ramps in (ServoSnapshot::rampScale).
 
 #include <chrono>
+#include <filesystem>
 #include <memory>
 #include <optional>
 
 #include "engine/haptics/MouseDevice.h"
 #include "engine/haptics/PointerMapping.h"
 #include "engine/haptics/ServoLoop.h"
+#include "game/play/ReplayCapture.h"
 #include "game/play/RingJudge.h"
 
 namespace hemiroll::game {
@@ -28,6 +30,10 @@ struct PlaySessionDef {
   int windowWidth = 1280, windowHeight = 720;  // [window px]
   bool requestRealtime = true;         // SCHED_FIFO for the servo thread when permitted
   std::optional<physics::CouplingDef> coupling;  // the player's settings; none = the level's
+  // Log the trial for a replay here ("" = no replay); levelHash goes into
+  // its header (levelFileHash of the level file).
+  std::filesystem::path replayFile;
+  std::string levelHash;
 };
 
 class PlaySession {
@@ -58,6 +64,10 @@ class PlaySession {
   TrialResult finish();
   haptics::LoopTimingSummary timing() const { return loop_->timingSummary(); }
   const char* realtimeNote() const { return loop_->realtime().note; }
+  // After finish(): the replay log when one was asked for and came out
+  // usable, else "" (replayError() says why).
+  std::filesystem::path replayFile() const { return replayError_.empty() && capture_ ? capture_->file() : ""; }
+  const std::string& replayError() const { return replayError_; }
   // The proxy's scene position under the pointer now [m] (for tests).
   haptics::Vec3 pointerScene() const;
 
@@ -68,6 +78,8 @@ class PlaySession {
   haptics::ServoLoopDef loopDef_;
   haptics::PointerMapping mapping_;
   std::unique_ptr<haptics::RecordRing> ring_;
+  std::unique_ptr<ReplayCapture> capture_;
+  std::string replayError_;
   haptics::MouseDevice device_;
   std::unique_ptr<haptics::ServoLoop> loop_;
   RingJudge judging_;

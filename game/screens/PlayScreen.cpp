@@ -9,6 +9,7 @@
 #include "game/screens/PauseScreen.h"
 #include "game/screens/ResultsScreen.h"
 #include "game/screens/ScreenLayout.h"
+#include "game/scores/ScoreStore.h"
 #include "game/view/RenderSceneBuilder.h"
 
 namespace hemiroll::game {
@@ -28,6 +29,12 @@ void PlayScreen::begin() {
     def.windowHeight = size.height;
     def.requestRealtime = app_.def().requestRealtime;
     def.coupling = couplingFor(app_.settings(), level_.def.coupling);
+    // A replay repeats the trial only on the level's own loop definition:
+    // none while the player overrides the force method.
+    if (!app_.settings().overrideCoupling) {
+      def.replayFile = dataDirectory() / "replays" / "last-trial.hrr";
+      def.levelHash = levelFileHash(levelPath_);
+    }
     session_ = std::make_unique<PlaySession>(level_, def);
     session_->start();
   } catch (const std::exception& e) {
@@ -127,7 +134,10 @@ void PlayScreen::update(double) {
     audio.setProximity(0.0);
     TrialResult result = session_->finish();
     audio.play(result.outcome == script::TrialOutcome::Success ? Cue::Success : Cue::Failure);
-    app_.screens().replace(std::make_unique<ResultsScreen>(app_, levelPath_, level_.def.name, std::move(result)));
+    std::string replayNote = session_->replayError();
+    if (app_.settings().overrideCoupling) replayNote = "no replay: the force method was overridden in the settings";
+    app_.screens().replace(std::make_unique<ResultsScreen>(app_, levelPath_, level_.def.name, std::move(result),
+                                                           session_->replayFile(), replayNote));
   }
 }
 

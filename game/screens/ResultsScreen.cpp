@@ -2,14 +2,24 @@
 
 #include <imgui.h>
 
+#include <cctype>
+#include <ctime>
+
 #include "game/app/App.h"
 #include "game/screens/PlayScreen.h"
+#include "game/screens/ReplayScreen.h"
 #include "game/screens/ScreenLayout.h"
 
 namespace hemiroll::game {
 
-ResultsScreen::ResultsScreen(App& app, std::string levelPath, std::string levelName, TrialResult result)
-    : Screen(app), levelPath_(std::move(levelPath)), levelName_(std::move(levelName)), result_(std::move(result)) {
+ResultsScreen::ResultsScreen(App& app, std::string levelPath, std::string levelName, TrialResult result,
+                             std::filesystem::path replay, std::string replayNote)
+    : Screen(app),
+      levelPath_(std::move(levelPath)),
+      levelName_(std::move(levelName)),
+      result_(std::move(result)),
+      replay_(std::move(replay)),
+      replayNote_(std::move(replayNote)) {
   const std::string& player = app_.settings().participant;
   before_ = app_.scores().personalBest(levelName_, player);
   const bool success = result_.outcome == script::TrialOutcome::Success;
@@ -24,11 +34,41 @@ ResultsScreen::ResultsScreen(App& app, std::string levelPath, std::string levelN
   stored_ = app_.scores().add(entry);
 }
 
+ResultsScreen::~ResultsScreen() {
+  std::error_code ec;
+  if (!replay_.empty() && !replaySaved_) std::filesystem::remove(replay_, ec);
+}
+
+void ResultsScreen::saveReplay() {
+  if (replay_.empty() || replaySaved_) return;
+  std::string stem;
+  for (char c : levelName_) stem += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+  char stamp[32];
+  const std::time_t now = std::time(nullptr);
+  std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", std::localtime(&now));
+  const std::filesystem::path target = replay_.parent_path() / (stem + "-" + stamp + ".hrr");
+  std::error_code ec;
+  std::filesystem::rename(replay_, target, ec);
+  if (ec) {
+    replayNote_ = "the replay could not be saved as " + target.string() + ": " + ec.message();
+    return;
+  }
+  replay_ = target;
+  replaySaved_ = true;
+  replayNote_ = "replay saved: " + target.string();
+}
+
+void ResultsScreen::watchReplay() {
+  if (!replay_.empty()) app_.screens().push(std::make_unique<ReplayScreen>(app_, levelPath_, replay_));
+}
+
 void ResultsScreen::again() { app_.screens().replace(std::make_unique<PlayScreen>(app_, levelPath_)); }
 
 void ResultsScreen::input(const platform::InputEvent& e) {
   if (e.type != platform::InputType::KeyDown || e.repeat) return;
   if (e.key == platform::Key::Enter) again();
+  else if (e.code == 's') saveReplay();
+  else if (e.code == 'w') watchReplay();
   else if (e.key == platform::Key::Escape) app_.screens().pop();
 }
 
@@ -49,6 +89,11 @@ void ResultsScreen::paint() {
   if (before_.bestTime) ImGui::Text("personal best before: %.2f s", *before_.bestTime);
   if (!stored_) ImGui::TextDisabled("(this trial could not be stored in %s)", app_.scores().file().c_str());
   const ImVec2 button(-1, 0);
+  if (!replay_.empty()) {
+    if (!replaySaved_ && ImGui::Button("Save replay  (S)", button)) saveReplay();
+    if (ImGui::Button("Watch replay  (W)", button)) watchReplay();
+  }
+  if (!replayNote_.empty()) ImGui::TextDisabled("%s", replayNote_.c_str());
   if (ImGui::Button("Play again  (Enter)", button)) again();
   if (ImGui::Button("Levels  (Esc)", button)) app_.screens().pop();
   ImGui::End();

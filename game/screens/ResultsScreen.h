@@ -1,9 +1,12 @@
 #pragma once
 // The end of a trial: outcome and reason, time, score, medal, the personal
 // best before this trial, and whether it is a new one. The trial is stored
-// in the scores database when the screen is made. Enter plays again,
-// Escape goes back to the level select.
+// in the scores database when the screen is made. The trial's replay log
+// can be kept (S: moved to <data directory>/replays/<level>-<time>.hrr) or
+// watched (W); an unsaved one is deleted when the screen goes. Enter plays
+// again, Escape goes back to the level select.
 
+#include <filesystem>
 #include <string>
 
 #include "game/play/HeadlessTrial.h"
@@ -14,18 +17,27 @@ namespace hemiroll::game {
 
 class ResultsScreen final : public Screen {
  public:
-  ResultsScreen(App& app, std::string levelPath, std::string levelName, TrialResult result);
+  ResultsScreen(App& app, std::string levelPath, std::string levelName, TrialResult result,
+                std::filesystem::path replay = {}, std::string replayNote = {});
+  ~ResultsScreen() override;
   const char* name() const override { return "results"; }
   void input(const platform::InputEvent& e) override;
   void paint() override;
 
   const TrialResult& result() const { return result_; }
+  const std::filesystem::path& replay() const { return replay_; }
+  bool replaySaved() const { return replaySaved_; }
   bool newBest() const { return newBest_; }
 
  private:
   void again();
+  void saveReplay();
+  void watchReplay();
   std::string levelPath_, levelName_;
   TrialResult result_;
+  std::filesystem::path replay_;  // the trial's replay log; "" = none
+  std::string replayNote_;
+  bool replaySaved_ = false;
   LevelBest before_;
   bool newBest_ = false;
   bool stored_ = false;

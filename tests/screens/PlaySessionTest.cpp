@@ -6,7 +6,13 @@
 #include <cmath>
 #include <thread>
 
+#include "engine/haptics/ReplayDevice.h"
+#include "engine/physics/StateLayout.h"
+#include "engine/record/ReplayReader.h"
+#include "engine/record/ReplayRunner.h"
 #include "engine/script/LevelLoader.h"
+#include "game/play/ReplayCapture.h"
+#include "tests/support/TempDirectory.h"
 
 namespace hemiroll::game {
 namespace {
@@ -72,6 +78,43 @@ TEST(PlaySessionTest, APointerFarFromTheMassPointDoesNotEngage) {
   session.frame();
   EXPECT_EQ(session.snapshot().engagement, haptics::Engagement::Armed);
   EXPECT_GT(session.snapshot().proxyDistance, 0.04);
+}
+
+// The trial's replay log repeats it bit for bit through a ReplayDevice: the
+// real-time run's last state is the headless replay's last state exactly.
+TEST(PlaySessionTest, ATrialsReplayRepeatsItExactly) {
+  test::TempDirectory dir;
+  const std::string levelPath = HEMIROLL_SOURCE_DIR "/levels/tutorial_01_tilt_and_return.lua";
+  script::LoadedLevel level = script::LevelLoader().loadFile(levelPath);
+  PlaySessionDef def;
+  def.requestRealtime = false;
+  def.replayFile = dir.path() / "t.hrr";
+  def.levelHash = levelFileHash(levelPath);
+  PlaySession session(level, def);
+  session.start();
+  session.click();
+  const auto start = std::chrono::steady_clock::now();
+  while (std::chrono::steady_clock::now() - start < 800ms) {
+    const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    session.pointer(640 + 8.0 * std::sin(4.0 * t), 360);
+    session.frame();
+    std::this_thread::sleep_for(10ms);
+  }
+  session.pause();  // a command in the log
+  std::this_thread::sleep_for(50ms);
+  session.finish();
+  ASSERT_EQ(session.replayError(), "");
+  ASSERT_EQ(session.replayFile(), def.replayFile);
+
+  const record::ReplayLog log = record::ReplayReader::load(def.replayFile);
+  EXPECT_EQ(log.header.levelHash, def.levelHash);
+  EXPECT_EQ(log.inputs.size(), session.snapshot().tick);
+  haptics::ReplayDevice device(log.inputs, haptics::MouseDeviceDef{}.spec);
+  haptics::ServoLoop loop(HeadlessTrial::loopDefFor(level.def), device);
+  record::ReplayRunner::run(loop, log);
+  for (std::size_t i = 0; i < 12; ++i)
+    EXPECT_EQ(loop.state()[static_cast<int>(i)], session.snapshot().state[i]) << "slot " << i;  // bit for bit
+  EXPECT_NE(session.snapshot().state[physics::force_slot::u_o], 0.0);  // the mouse did move it
 }
 
 }  // namespace

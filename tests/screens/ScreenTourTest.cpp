@@ -9,6 +9,7 @@
 
 #include "game/app/App.h"
 #include "game/screens/LevelSelectScreen.h"
+#include "game/screens/ReplayScreen.h"
 #include "tests/support/TempDirectory.h"
 
 namespace hemiroll::game {
@@ -48,6 +49,7 @@ TEST(ScreenTourTest, TitleLevelsPlayPauseResultsWithSyntheticInput) {
   def.requestRealtime = false;
   def.levelsDir = (dir.path() / "levels").string();
   def.scoresFile = (dir.path() / "scores.sqlite").string();
+  setenv("HEMIROLL_DATA_DIR", dir.path().c_str(), 1);  // replays go here
   App app(def);
   ScreenTourDef tour;
   tour.level = good;
@@ -83,6 +85,26 @@ TEST(ScreenTourTest, TitleLevelsPlayPauseResultsWithSyntheticInput) {
   const LevelBest best = app.scores().best(levels.front().name);
   EXPECT_EQ(best.attempts, 1);
   EXPECT_FALSE(best.bestTime);
+
+  // Results: keep the replay (S), then watch it (W) through ReplayDevice.
+  platform::InputEvent key;
+  key.type = platform::InputType::KeyDown;
+  key.code = 's';
+  app.inject(key);
+  app.frame();
+  int saved = 0;
+  for (const auto& f : std::filesystem::directory_iterator(dir.path() / "replays"))
+    saved += f.path().extension() == ".hrr" && f.path().filename() != "last-trial.hrr";
+  EXPECT_EQ(saved, 1);
+  key.code = 'w';
+  app.inject(key);
+  for (int i = 0; i < 10; ++i) app.frame();
+  EXPECT_STREQ(app.topScreen(), "replay");
+  auto* replay = dynamic_cast<ReplayScreen*>(app.screens().top());
+  ASSERT_NE(replay, nullptr);
+  EXPECT_EQ(replay->error(), "");
+  EXPECT_GT(replay->ticksPlayed(), 0u);
+  EXPECT_GT(replay->ticksTotal(), 1000u);  // the 1.5 s played
 }
 
 }  // namespace

@@ -1,0 +1,65 @@
+#include "game/play/ReplayCapture.h"
+
+#include <cstdio>
+#include <fstream>
+#include <iterator>
+
+#include "engine/record/RecordError.h"
+#include "engine/record/ReplayFormat.h"
+#include "engine/record/ReplayLogger.h"
+
+namespace hemiroll::game {
+
+std::string levelFileHash(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return "";
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::uint64_t h =
+      record::fnv1a(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), record::kFnvOffset);
+  char text[32];
+  std::snprintf(text, sizeof text, "fnv1a-%016llx", static_cast<unsigned long long>(h));
+  return text;
+}
+
+ReplayCapture::ReplayCapture(const std::filesystem::path& file, const std::string& levelHash, double dt)
+    : file_(file),
+      inputs_(std::make_unique<haptics::InputRing>()),
+      commands_(std::make_unique<haptics::CommandRing>()) {
+  std::error_code ec;
+  std::filesystem::create_directories(file.parent_path(), ec);
+  std::filesystem::remove(file, ec);  // a leftover of a crashed session; the logger never overwrites
+  record::ReplayHeader header;
+  header.dt = dt;
+  header.softwareVersion = "hemiroll play";
+  header.levelHash = levelHash;
+  logger_ = std::make_unique<record::ReplayLogger>(file, header);
+}
+
+ReplayCapture::~ReplayCapture() {
+  if (started_ && !finished_) logger_->stopWriter();
+}
+
+void ReplayCapture::attach(haptics::ServoLoopDef& def) {
+  def.inputRing = inputs_.get();
+  def.commandRing = commands_.get();
+}
+
+void ReplayCapture::start() {
+  logger_->startWriter(*inputs_, commands_.get());
+  started_ = true;
+}
+
+std::string ReplayCapture::finish(std::uint64_t droppedInputs) {
+  if (finished_) return "";
+  finished_ = true;
+  try {
+    if (started_) logger_->stopWriter();
+    logger_->drain(*inputs_, commands_.get());
+    logger_->finish(droppedInputs);
+  } catch (const record::RecordError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace hemiroll::game
