@@ -93,7 +93,8 @@ bool App::frame() {
   glClearColor(0.09f, 0.1f, 0.13f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   imgui_->beginFrame(size.width, size.height, drawable.width, drawable.height, dt);
-  for (Screen* s : screens_.visible()) s->paint();
+  screens_.visible(painted_);
+  for (Screen* s : painted_) s->paint();
   imgui_->endFrame();
   if (captureRequested_) {
     captureRequested_ = false;

@@ -76,6 +76,7 @@ class App {
   ScreenStack screens_;
   platform::FrameClock clock_;
   std::vector<platform::InputEvent> events_, injected_;
+  std::vector<Screen*> painted_;  // this frame's visible screens (reused)
   std::vector<std::string> notes_;
   bool quit_ = false;
   bool captureRequested_ = false;

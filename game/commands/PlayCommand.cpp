@@ -53,6 +53,7 @@ int autoplay(App& app, const PlayOptions& o) {
   ScriptedMouse mouse;
   haptics::LoopTimingSummary timing;
   std::string engagement = "never engaged";
+  std::string scheduling;
   while (true) {
     const auto now = std::chrono::steady_clock::now();
     const double t = std::chrono::duration<double>(now - start).count();
@@ -63,6 +64,7 @@ int autoplay(App& app, const PlayOptions& o) {
     if (play && play->session()) {
       if (play->session()->snapshot().engagement == haptics::Engagement::Engaged) engagement = "engaged";
       timing = play->session()->timing();
+      scheduling = play->session()->realtimeNote();
     }
     const auto after = std::chrono::steady_clock::now();
     if (app.frames() > 1) frameSeconds.push_back(std::chrono::duration<double>(after - last).count());
@@ -82,6 +84,7 @@ int autoplay(App& app, const PlayOptions& o) {
               kPrefix, static_cast<unsigned long long>(timing.ticks), timing.latenessP50 * 1e6,
               timing.latenessP99 * 1e6, timing.latenessP999 * 1e6, timing.latenessMax * 1e6,
               static_cast<unsigned long long>(timing.missedTicks));
+  std::printf("%sservo thread: %s\n", kPrefix, scheduling.c_str());
   return kExitOk;
 }
 

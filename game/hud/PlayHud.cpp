@@ -32,6 +32,8 @@ void PlayHud::reset() {
   faceY_.clear();
   lastTime_ = -1.0;
   componentCount_ = 0;
+  score_.reset();
+  messageUntil_.fill(0.0);
 }
 
 void PlayHud::setLabels(std::string level, std::string device, std::string method, bool mousePlayer,
@@ -41,6 +43,21 @@ void PlayHud::setLabels(std::string level, std::string device, std::string metho
   device_ = std::move(device);
   method_ = std::move(method);
   mousePlayer_ = mousePlayer;
+}
+
+void PlayHud::addMessage(const std::string& text, double until) {
+  messages_[nextMessage_] = text;
+  messageUntil_[nextMessage_] = until;
+  nextMessage_ = (nextMessage_ + 1) % kMessages;
+}
+
+std::vector<std::string> PlayHud::messages(double now) const {
+  std::vector<std::string> out;
+  for (std::size_t k = 0; k < kMessages; ++k) {
+    const std::size_t i = (nextMessage_ + k) % kMessages;
+    if (messageUntil_[i] > now) out.push_back(messages_[i]);
+  }
+  return out;
 }
 
 void PlayHud::update(const haptics::ServoSnapshot& s, const script::TaskJudge& judge) {
@@ -97,6 +114,7 @@ void PlayHud::draw(double fps) {
   if (r.distanceToTarget >= 0.0) ImGui::Text("to target %.1f mm", r.distanceToTarget * 1e3);
   ImGui::Text("precession %+.2f rad/s", r.precessionRate);
   if (r.requiredHold > 0.0) ImGui::Text("hold %.1f / %.1f s", r.holdTime, r.requiredHold);
+  if (score_) ImGui::Text("score so far %.1f", *score_);
   for (int i = 0; i < componentCount_; ++i) {
     const script::ComponentStatus& c = components_[static_cast<std::size_t>(i)];
     ImGui::TextColored(c.inside ? kGreen : kRed, "%-6s %s margin %+.3g (tol %.3g)", script::taskVariableName(c.variable),
@@ -115,6 +133,21 @@ void PlayHud::draw(double fps) {
     ImGui::TextColored(kAmber, "servo loop late: worst %.2f ms, %llu missed ticks", r.latenessMs, r.missedTicks);
   ImGui::Text("%.0f fps", fps);
   ImGui::End();
+
+  // The level's messages, top centre, oldest first.
+  bool anyMessage = false;
+  for (std::size_t i = 0; i < kMessages; ++i) anyMessage = anyMessage || messageUntil_[i] > r.time;
+  if (anyMessage) {
+    ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x / 2, 10), ImGuiCond_Always, ImVec2(0.5f, 0));
+    ImGui::SetNextWindowBgAlpha(0.7f);
+    ImGui::Begin("messages", nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoNav);
+    for (std::size_t k = 0; k < kMessages; ++k) {
+      const std::size_t i = (nextMessage_ + k) % kMessages;
+      if (messageUntil_[i] > r.time) ImGui::TextUnformatted(messages_[i].c_str());
+    }
+    ImGui::End();
+  }
 
   // Plots, bottom right.
   const ImVec2 size = ImGui::GetIO().DisplaySize;

@@ -10,7 +10,9 @@
 // shows it. Ring buffers are fixed: no allocation per frame once warm.
 
 #include <array>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "engine/haptics/ServoSnapshot.h"
 #include "engine/script/TaskJudge.h"
@@ -47,6 +49,15 @@ class PlayHud {
   void setLabels(std::string level, std::string device, std::string method, bool mousePlayer, double faceRadius);
   void draw(double fps);
 
+  // The level's score function on the summary so far (none: no score function).
+  void setScore(std::optional<double> score) { score_ = score; }
+  // A level's message (hemiroll.message), shown until `until` [s, simulated];
+  // the oldest of kMessages gives way.
+  void addMessage(const std::string& text, double until);
+  static constexpr std::size_t kMessages = 4;
+  // The messages shown at simulated time `now`, oldest first (tests).
+  std::vector<std::string> messages(double now) const;
+
   int channel() const { return channel_; }
   void setChannel(int index) { channel_ = index; plot_.clear(); }
   const ScrollingPlot& plot() const { return plot_; }
@@ -60,6 +71,10 @@ class PlayHud {
   double lastPsi_ = 0.0, lastTime_ = -1.0;
   std::string level_, device_, method_;
   bool mousePlayer_ = true;
+  std::optional<double> score_;
+  std::array<std::string, kMessages> messages_{};
+  std::array<double, kMessages> messageUntil_{};
+  std::size_t nextMessage_ = 0;
   double faceRadius_ = 0.04;  // R [m]: the face plot's circle
 };
 

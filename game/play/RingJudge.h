@@ -37,6 +37,8 @@ class RingJudge {
   bool finished() const { return judge_.finished(); }
   const script::TrialObservation& view() const { return view_; }
   long long judgedTicks() const { return judgedTicks_; }
+  // The trial summary so far (time, path, effort, margins), for a running score.
+  script::TrialSummary summary() const { return accumulator_.summary(judge_); }
 
   // Outcome, summary, score and medal; `initial` stands for the final state
   // when no tick was judged. wallTime is left to the caller.

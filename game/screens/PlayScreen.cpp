@@ -105,9 +105,18 @@ void PlayScreen::input(const platform::InputEvent& e) {
   }
 }
 
-void PlayScreen::update(double) {
+void PlayScreen::update(double dt) {
   if (!session_) return;
   session_->frame();
+  for (const script::LevelMessage& m : level_.script->takeMessages()) hud_.addMessage(m.text, m.time + m.duration);
+  // The score so far: the level's Lua score function twice a second (a
+  // call costs microseconds; every frame would be waste, not harm).
+  scoreClock_ += dt;
+  if (level_.def.scoring.hasScoreFunction && scoreClock_ >= 0.5 && !session_->finished()) {
+    scoreClock_ = 0.0;
+    const script::ScoreResult score = level_.script->score(session_->judging().summary());
+    hud_.setScore(score.score);
+  }
   const haptics::ServoSnapshot& s = session_->snapshot();
   hud_.update(s, session_->judging().judge());
   const std::size_t stage = static_cast<std::size_t>(std::max(0, session_->judging().judge().stage()));

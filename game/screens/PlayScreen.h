@@ -54,6 +54,7 @@ class PlayScreen final : public Screen {
   render::ContactTrace trace_;
   haptics::Engagement lastEngagement_ = haptics::Engagement::Disengaged;
   bool started_ = false;
+  double scoreClock_ = 0.0;  // [s] since the running score was last asked for
 };
 
 }  // namespace hemiroll::game

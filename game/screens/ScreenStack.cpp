@@ -31,15 +31,14 @@ void ScreenStack::apply() {
   }
 }
 
-std::vector<Screen*> ScreenStack::visible() const {
-  std::vector<Screen*> out;
+void ScreenStack::visible(std::vector<Screen*>& out) const {
+  out.clear();
   std::size_t first = screens_.size();
   while (first > 0) {
     --first;
     if (!screens_[first]->overlay()) break;
   }
   for (std::size_t i = first; i < screens_.size(); ++i) out.push_back(screens_[i].get());
-  return out;
 }
 
 }  // namespace hemiroll::game

@@ -24,8 +24,9 @@ class ScreenStack {
   Screen* top() const { return screens_.empty() ? nullptr : screens_.back().get(); }
   bool empty() const { return screens_.empty(); }
   std::size_t size() const { return screens_.size(); }
-  // The screens to paint this frame: from the topmost non-overlay upwards.
-  std::vector<Screen*> visible() const;
+  // The screens to paint this frame: from the topmost non-overlay upwards,
+  // into `out` (cleared; reused across frames, so no allocation once warm).
+  void visible(std::vector<Screen*>& out) const;
 
  private:
   enum class Op { Push, Pop, Replace, Reset };

@@ -92,5 +92,19 @@ TEST(PlayHudTest, AFrameWithoutANewTickAddsNoPlotSample) {
   EXPECT_EQ(hud.plot().size(), 0u);  // a new channel starts a new trace
 }
 
+TEST(PlayHudTest, MessagesKeepTheNewestFewAndResetClearsThem) {
+  PlayHud hud;
+  for (std::size_t i = 0; i < PlayHud::kMessages + 2; ++i) {
+    std::string text = "m";  // (not "m" + to_string: GCC 12's -Wrestrict false positive)
+    text += std::to_string(i);
+    hud.addMessage(text, 10.0);
+  }
+  EXPECT_EQ(hud.messages(1.0).size(), PlayHud::kMessages);
+  EXPECT_EQ(hud.messages(1.0).front(), "m2");  // the two oldest gave way
+  EXPECT_TRUE(hud.messages(11.0).empty());     // expired
+  hud.reset();
+  EXPECT_TRUE(hud.messages(1.0).empty());
+}
+
 }  // namespace
 }  // namespace hemiroll::game

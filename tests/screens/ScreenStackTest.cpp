@@ -45,11 +45,14 @@ TEST(ScreenStackTest, ChangesWaitForApplyAndCallTheHooksInOrder) {
   ASSERT_EQ(stack.size(), 2u);
   EXPECT_STREQ(stack.top()->name(), "b");
   // An overlay shows the screen below it too.
-  ASSERT_EQ(stack.visible().size(), 2u);
-  EXPECT_STREQ(stack.visible()[0]->name(), "a");
+  std::vector<Screen*> visible;
+  stack.visible(visible);
+  ASSERT_EQ(visible.size(), 2u);
+  EXPECT_STREQ(visible[0]->name(), "a");
   stack.replace(std::make_unique<LoggingScreen>(app, "c", log));
   stack.apply();
-  EXPECT_EQ(stack.visible().size(), 1u);  // c is opaque
+  stack.visible(visible);
+  EXPECT_EQ(visible.size(), 1u);  // c is opaque
   stack.pop();
   stack.apply();
   EXPECT_STREQ(stack.top()->name(), "a");
