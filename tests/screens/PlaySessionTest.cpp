@@ -23,23 +23,39 @@ using namespace std::chrono_literals;
 // point (the window centre), click, small circles. Timing bounds are loose
 // on purpose (a loaded 2-core machine): the test checks the session's
 // behaviour, the benchmark its speed.
+//
+// The loop's overrun watchdog ends a trial whose servo thread was starved
+// (a loaded 2-core machine, no SCHED_FIFO): such an attempt is retried, at
+// most three times, as RunCommandTest does; any other end fails the test.
+bool stalled(const PlaySession& s) {
+  return s.finished() && s.judging().judge().reason().find("stalled") != std::string_view::npos;
+}
+
 TEST(PlaySessionTest, AScriptedMouseEngagesAndPlaysPausesAndQuits) {
   script::LoadedLevel level = script::LevelLoader().loadFile(HEMIROLL_SOURCE_DIR "/levels/tutorial_01_tilt_and_return.lua");
-  PlaySessionDef def;
-  def.requestRealtime = false;  // no SCHED_FIFO in tests
-  PlaySession session(level, def);
-  // The pointer starts at the window centre: the proxy at the mass point.
-  session.start();
-  session.click();
+  PlaySessionDef def;  // SCHED_FIFO when permitted, as in the game
+  std::unique_ptr<PlaySession> played;
   bool engaged = false;
-  const auto start = std::chrono::steady_clock::now();
-  while (std::chrono::steady_clock::now() - start < 2500ms && !session.finished()) {
-    const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    session.pointer(640 + 6.0 * std::cos(3.0 * t), 360 + 6.0 * std::sin(3.0 * t));
-    session.frame();
-    engaged = engaged || session.snapshot().engagement == haptics::Engagement::Engaged;
-    std::this_thread::sleep_for(16ms);  // a 60 fps frame
+  for (int attempt = 0; attempt < 3; ++attempt) {
+    played.reset();
+    level = script::LevelLoader().loadFile(HEMIROLL_SOURCE_DIR "/levels/tutorial_01_tilt_and_return.lua");
+    played = std::make_unique<PlaySession>(level, def);
+    PlaySession& session = *played;
+    // The pointer starts at the window centre: the proxy at the mass point.
+    session.start();
+    session.click();
+    engaged = false;
+    const auto start = std::chrono::steady_clock::now();
+    while (std::chrono::steady_clock::now() - start < 2500ms && !session.finished()) {
+      const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      session.pointer(640 + 6.0 * std::cos(3.0 * t), 360 + 6.0 * std::sin(3.0 * t));
+      session.frame();
+      engaged = engaged || session.snapshot().engagement == haptics::Engagement::Engaged;
+      std::this_thread::sleep_for(16ms);  // a 60 fps frame
+    }
+    if (!stalled(session)) break;
   }
+  PlaySession& session = *played;
   ASSERT_FALSE(session.finished()) << session.judging().judge().reason();
   EXPECT_TRUE(engaged);
   const double before = session.snapshot().time;
@@ -69,7 +85,6 @@ TEST(PlaySessionTest, AScriptedMouseEngagesAndPlaysPausesAndQuits) {
 TEST(PlaySessionTest, APointerFarFromTheMassPointDoesNotEngage) {
   script::LoadedLevel level = script::LevelLoader().loadFile(HEMIROLL_SOURCE_DIR "/levels/tutorial_01_tilt_and_return.lua");
   PlaySessionDef def;
-  def.requestRealtime = false;
   PlaySession session(level, def);
   session.start();
   session.pointer(640 + 200, 360);  // 5 cm off at 0.25 mm/px
@@ -87,7 +102,6 @@ TEST(PlaySessionTest, ATrialsReplayRepeatsItExactly) {
   const std::string levelPath = HEMIROLL_SOURCE_DIR "/levels/tutorial_01_tilt_and_return.lua";
   script::LoadedLevel level = script::LevelLoader().loadFile(levelPath);
   PlaySessionDef def;
-  def.requestRealtime = false;
   def.replayFile = dir.path() / "t.hrr";
   def.levelHash = levelFileHash(levelPath);
   PlaySession session(level, def);

@@ -46,7 +46,6 @@ TEST(ScreenTourTest, TitleLevelsPlayPauseResultsWithSyntheticInput) {
   AppDef def;
   def.hidden = true;
   def.vsync = false;
-  def.requestRealtime = false;
   def.levelsDir = (dir.path() / "levels").string();
   def.scoresFile = (dir.path() / "scores.sqlite").string();
   setenv("HEMIROLL_DATA_DIR", dir.path().c_str(), 1);  // replays go here
