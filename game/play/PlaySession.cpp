@@ -21,7 +21,7 @@ PlaySession::PlaySession(script::LoadedLevel& level, const PlaySessionDef& def)
       loopDef_(HeadlessTrial::loopDefFor(level.def)),
       mapping_(def.pointer),
       ring_(std::make_unique<haptics::RecordRing>()),
-      judging_(level) {
+      judging_(level, nullptr, 10, /*faultsEndTrial=*/false) {
   loopDef_.requestRealtime = def.requestRealtime;
   loopDef_.recordRing = ring_.get();
   loopDef_.recordEvery = 1;  // the judge sees every tick
@@ -91,8 +91,15 @@ void PlaySession::pause() {
 }
 
 void PlaySession::resume() {
-  if (!paused_) return;
+  const bool faulted = fault() != haptics::SafetyFault::None;
+  if (!paused_ && !faulted) return;
   paused_ = false;
+  if (faulted) {
+    post(haptics::ServoCommandKind::ClearFault);
+    // Commands are applied at the start of a tick: by the next-but-one tick
+    // from the one running now at the latest.
+    faultClearedBy_ = loop_->ticks() + 2;
+  }
   post(haptics::ServoCommandKind::Resume);
 }
 

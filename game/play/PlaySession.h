@@ -8,7 +8,10 @@
 //                  once per frame: RingJudge drains the ring (every tick
 //                  judged, level callbacks at their rate), latest snapshot
 //                  for the renderer and the HUD.
-// frame() never waits for the servo loop. Engagement follows the loop's
+// frame() never waits for the servo loop. A safety fault (a watchdog: the
+// loop starved, stale input) does not end the trial: the loop has already
+// taken the force off and stopped; fault() says which, and resume() clears
+// it and goes on (the player takes hold again). Engagement follows the loop's
 // rule: a click arms it, and it engages when the proxy reaches the mass
 // point; the force then ramps in (ServoSnapshot::rampScale).
 
@@ -51,7 +54,12 @@ class PlaySession {
   void click();        // arm the engagement (the loop engages near the mass point)
   void release();      // disengage: the force ramps out
   void pause();        // physics stops, force zero at once
-  void resume();
+  void resume();       // also clears a latched safety fault
+  // The latched fault of the latest snapshot; None once resume() asked to
+  // clear it (snapshots older than the clearing tick still show it).
+  haptics::SafetyFault fault() const {
+    return snapshot_.tick <= faultClearedBy_ ? haptics::SafetyFault::None : snapshot_.fault;
+  }
   void quit();         // ends the trial as a failure ("quit by the player")
 
   // Once per frame: judge what the loop produced; returns true while running.
@@ -87,6 +95,7 @@ class PlaySession {
   physics::ForceDrivenState initial_;
   double lastPx_ = 0.0, lastPy_ = 0.0;
   bool paused_ = false, stopped_ = false;
+  std::uint64_t faultClearedBy_ = 0;  // the tick by which a ClearFault has been applied
   std::chrono::steady_clock::time_point started_;
 };
 

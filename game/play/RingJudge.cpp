@@ -12,8 +12,12 @@ physics::Vec3 vec(const std::array<double, 3>& t) { return {t[0], t[1], t[2]}; }
 
 }  // namespace
 
-RingJudge::RingJudge(script::LoadedLevel& level, haptics::RecordRing* forward, int forwardEvery)
-    : level_(level), forward_(forward), forwardEvery_(std::max(1, forwardEvery)), judge_(level.def.task) {}
+RingJudge::RingJudge(script::LoadedLevel& level, haptics::RecordRing* forward, int forwardEvery, bool faultsEndTrial)
+    : level_(level),
+      forward_(forward),
+      forwardEvery_(std::max(1, forwardEvery)),
+      faultsEndTrial_(faultsEndTrial),
+      judge_(level.def.task) {}
 
 void RingJudge::start(const physics::ForceDrivenState& initial) {
   view_.state = initial;
@@ -37,7 +41,7 @@ std::size_t RingJudge::drain(haptics::RecordRing& ring) {
     accumulator_.add(input, effort, judge_);
     maxRenderedForce_ = std::max(maxRenderedForce_, vec(row.renderedForce).norm());
     maxProxyDistance_ = std::max(maxProxyDistance_, row.proxyDistance);
-    if (!judge_.finished() && row.fault != haptics::SafetyFault::None)
+    if (faultsEndTrial_ && !judge_.finished() && row.fault != haptics::SafetyFault::None)
       judge_.finish(TrialOutcome::Failure, std::string("safety: ") + haptics::safetyFaultName(row.fault), row.time);
     if (forward_ != nullptr && row.tick % static_cast<std::uint64_t>(forwardEvery_) == 0) forward_->push(row);
     view_.time = row.time;

@@ -4,7 +4,8 @@
 // with the mouse): every tick the servo loop pushed into its record ring is
 // judged here, in order, none skipped -
 //   TaskJudge::judge -> TrialSummaryAccumulator::add -> LevelScript::update
-// - and a safety fault ends the trial. The servo thread never waits for this:
+// - and a safety fault ends the trial (a bot's), or is left to the caller
+// (a human's: the game pauses with the reason and goes on when asked). The servo thread never waits for this:
 // a ring that fills up is the loop's recordDropped(), which the caller turns
 // into a failure.
 //
@@ -23,7 +24,8 @@ class RingJudge {
  public:
   // `level` must outlive this; `forward` (may be null) receives every
   // `forwardEvery`-th row (a recording's ring).
-  RingJudge(script::LoadedLevel& level, haptics::RecordRing* forward = nullptr, int forwardEvery = 10);
+  RingJudge(script::LoadedLevel& level, haptics::RecordRing* forward = nullptr, int forwardEvery = 10,
+            bool faultsEndTrial = true);
 
   // on_start at the initial state.
   void start(const physics::ForceDrivenState& initial);
@@ -48,6 +50,7 @@ class RingJudge {
   script::LoadedLevel& level_;
   haptics::RecordRing* forward_;
   int forwardEvery_;
+  bool faultsEndTrial_;
   script::TaskJudge judge_;
   script::TrialSummaryAccumulator accumulator_;
   script::TrialObservation view_;

@@ -35,10 +35,11 @@ void PauseScreen::input(const platform::InputEvent& e) {
 void PauseScreen::update(double) { play_.drainWhilePaused(); }
 
 void PauseScreen::paint() {
-  beginCentredPanel("pause", 360);
+  beginCentredPanel("pause", 420);
   ImGui::SetWindowFontScale(1.6f);
   ImGui::Text("Paused");
   ImGui::SetWindowFontScale(1.0f);
+  if (!reason_.empty()) ImGui::TextColored(ImVec4(0.95f, 0.75f, 0.3f, 1), "%s", reason_.c_str());
   const ImVec2 button(-1, 0);
   if (ImGui::Button("Continue  (Esc)", button)) resume();
   if (ImGui::Button("Restart  (R)", button)) restart();

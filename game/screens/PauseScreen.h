@@ -4,6 +4,8 @@
 // restart (R), quit the trial (Q: it ends as a failure, "quit by the
 // player", and the results screen follows).
 
+#include <string>
+
 #include "game/screens/Screen.h"
 
 namespace hemiroll::game {
@@ -12,7 +14,9 @@ class PlayScreen;
 
 class PauseScreen final : public Screen {
  public:
-  PauseScreen(App& app, PlayScreen& play) : Screen(app), play_(play) {}
+  // `reason`: why play stopped when it was not the player (a safety fault).
+  PauseScreen(App& app, PlayScreen& play, std::string reason = {})
+      : Screen(app), play_(play), reason_(std::move(reason)) {}
   const char* name() const override { return "pause"; }
   bool overlay() const override { return true; }
   void input(const platform::InputEvent& e) override;
@@ -24,6 +28,7 @@ class PauseScreen final : public Screen {
   void restart();
   void quit();
   PlayScreen& play_;
+  std::string reason_;
 };
 
 }  // namespace hemiroll::game

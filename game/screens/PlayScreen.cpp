@@ -139,6 +139,16 @@ void PlayScreen::update(double dt) {
   const double closeness = !std::isfinite(worst) ? 0.0 : worst >= 0.0 ? 1.0 : 1.0 / (1.0 - worst);
   audio.setProximity(s.engagement == haptics::Engagement::Engaged ? closeness : 0.0);
 
+  // A watchdog stopped the loop (force already off): pause and say why.
+  if (session_->fault() != haptics::SafetyFault::None && !session_->finished()) {
+    audio.setProximity(0.0);
+    session_->pause();
+    app_.screens().push(std::make_unique<PauseScreen>(
+        app_, *this, std::string("safety stop: ") + haptics::safetyFaultName(session_->fault()) +
+                                     ". The force is off; continue to take hold again."));
+    return;
+  }
+
   if (session_->finished()) {
     audio.setProximity(0.0);
     TrialResult result = session_->finish();
