@@ -6,6 +6,7 @@
 // which of them exist.
 
 #include <array>
+#include <map>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -23,6 +24,12 @@ struct DeviceMappingDef {
   double scale = 1.0;                 // scene metres per device metre [-], > 0
   std::array<double, 3> offset{};     // scene position of the device origin [m]
 };
+
+// The kinds of device a level may map separately (`device.per_device`): the
+// desk mouse, a force-feedback joystick, a real device through the UDP
+// bridge, and the bots' scripted device. Names only: what they are is
+// engine/haptics' business.
+inline constexpr const char* kMappedDevices[] = {"mouse", "joystick", "udp", "bot"};
 
 enum class Medal : std::uint8_t { None, Bronze, Silver, Gold };
 const char* medalName(Medal medal);  // "none", "bronze", "silver", "gold"
@@ -62,7 +69,14 @@ struct LevelDef {
   // force.method "M1" | "M2" | "M3" | "visual" (M3 gains, no rendered force:
   // CouplingDef::visualOnly). Defaults are the paper's M3, kr 250, kv 10, alpha 2.
   physics::CouplingDef coupling;
-  DeviceMappingDef mapping;
+  DeviceMappingDef mapping;            // every device, unless overridden below
+  // Per device kind (kMappedDevices), the fields a level overrides; the rest
+  // come from `mapping`.
+  std::map<std::string, DeviceMappingDef> deviceMappings;
+  const DeviceMappingDef& mappingFor(const std::string& device) const {
+    const auto it = deviceMappings.find(device);
+    return it == deviceMappings.end() ? mapping : it->second;
+  }
 
   TaskDef task;
   ScoringDef scoring;

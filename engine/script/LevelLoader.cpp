@@ -114,12 +114,30 @@ void readForce(const LuaTableReader& top, physics::CouplingDef& coupling) {
     force->fail(problem.substr(0, problem.find(' ')), problem.substr(problem.find(' ') + 1));
 }
 
-void readDevice(const LuaTableReader& top, DeviceMappingDef& mapping) {
+void readMapping(const LuaTableReader& table, DeviceMappingDef& mapping) {
+  mapping.scale = readPositive(table, "scale", "scene metres per device metre").value_or(mapping.scale);
+  mapping.offset = readVector<3>(table, "offset", "{x, y, z} in metres").value_or(mapping.offset);
+}
+
+// device = {scale, offset, per_device = {mouse = {scale, offset}, ...}}: one
+// mapping for every device, and overrides per device kind (a desk mouse
+// moves centimetres where a PHANToM moves millimetres).
+void readDevice(const LuaTableReader& top, LevelDef& def) {
   const auto device = top.table("device");
   if (!device) return;
-  rejectUnknownLevelKeys(*device, {"scale", "offset"});
-  mapping.scale = readPositive(*device, "scale", "scene metres per device metre").value_or(mapping.scale);
-  mapping.offset = readVector<3>(*device, "offset", "{x, y, z} in metres").value_or(mapping.offset);
+  rejectUnknownLevelKeys(*device, {"scale", "offset", "per_device"});
+  readMapping(*device, def.mapping);
+  const auto perDevice = device->table("per_device");
+  if (!perDevice) return;
+  rejectUnknownLevelKeys(*perDevice, {"mouse", "joystick", "udp", "bot"});  // kMappedDevices
+  for (const char* name : kMappedDevices) {
+    const auto one = perDevice->table(name);
+    if (!one) continue;
+    rejectUnknownLevelKeys(*one, {"scale", "offset"});
+    DeviceMappingDef mapping = def.mapping;
+    readMapping(*one, mapping);
+    def.deviceMappings[name] = mapping;
+  }
 }
 
 void readScene(const LuaTableReader& top, SceneDef& scene) {
@@ -200,7 +218,7 @@ LevelDef readLevel(lua_State* L, const std::string& name) {
   readParams(top, def.params);
   readInitial(top, def.params.radius, def.initial);
   readForce(top, def.coupling);
-  readDevice(top, def.mapping);
+  readDevice(top, def);
   readLevelTask(top, def.task);
   readScoring(top, def.scoring);
   readScene(top, def.scene);

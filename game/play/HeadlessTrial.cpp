@@ -30,13 +30,14 @@ haptics::DeviceSpec HeadlessTrial::deviceSpec() {
   return spec;
 }
 
-haptics::ServoLoopDef HeadlessTrial::loopDefFor(const script::LevelDef& level) {
+haptics::ServoLoopDef HeadlessTrial::loopDefFor(const script::LevelDef& level, const std::string& device) {
   haptics::ServoLoopDef def;
   def.requestRealtime = false;  // the loop's own thread is not used here
   def.params = level.params;
   def.coupling = level.coupling;
-  def.mapping.scale = level.mapping.scale;
-  def.mapping.offset = physics::Vec3(level.mapping.offset[0], level.mapping.offset[1], level.mapping.offset[2]);
+  const script::DeviceMappingDef& mapping = level.mappingFor(device);
+  def.mapping.scale = mapping.scale;
+  def.mapping.offset = physics::Vec3(mapping.offset[0], mapping.offset[1], mapping.offset[2]);
   for (int i = 0; i < 12; ++i) def.initialState[static_cast<std::size_t>(i)] = level.initial[i];
   return def;
 }

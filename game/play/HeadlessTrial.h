@@ -71,7 +71,8 @@ class HeadlessTrial {
 
   // The servo loop's definition for a level (params, initial state,
   // coupling, mapping; default safety and device), for tests and tools.
-  static haptics::ServoLoopDef loopDefFor(const script::LevelDef& level);
+  // `device` picks the level's workspace mapping (script::kMappedDevices).
+  static haptics::ServoLoopDef loopDefFor(const script::LevelDef& level, const std::string& device = "bot");
   static haptics::DeviceSpec deviceSpec();
   static script::BotLevelInfo levelInfoFor(const script::LevelDef& level, const std::string& file);
 

@@ -18,7 +18,7 @@ physics::ForceDrivenState stateOf(const std::array<double, 12>& a) {
 
 PlaySession::PlaySession(script::LoadedLevel& level, const PlaySessionDef& def)
     : level_(level),
-      loopDef_(HeadlessTrial::loopDefFor(level.def)),
+      loopDef_(HeadlessTrial::loopDefFor(level.def, "mouse")),
       mapping_(def.pointer),
       ring_(std::make_unique<haptics::RecordRing>()),
       judging_(level, nullptr, 10, /*faultsEndTrial=*/false) {

@@ -28,7 +28,7 @@ void ReplayScreen::enter() {
       return;
     }
     level_ = script::LevelLoader().loadFile(levelPath_);
-    haptics::ServoLoopDef def = HeadlessTrial::loopDefFor(level_.def);
+    haptics::ServoLoopDef def = HeadlessTrial::loopDefFor(level_.def, "mouse");
     def.period = log_.header.dt;
     // The mouse's spec, as recorded: the safety layer clamps to it.
     device_ = std::make_unique<haptics::ReplayDevice>(log_.inputs, haptics::MouseDeviceDef{}.spec);

@@ -110,6 +110,23 @@ TEST(LevelLoader, ReadsEveryField) {
   EXPECT_NE(level.script, nullptr);
 }
 
+TEST(LevelLoader, DeviceMappingPerDeviceKindInheritsTheRest) {
+  const LevelDef def = load(R"(return { name = 'x',
+      device = { scale = 0.5, offset = {0.01, 0.02, 0.03},
+                 per_device = { mouse = { scale = 0.2 }, udp = { offset = {0, 0, 0.05} } } } })")
+                           .def;
+  EXPECT_EQ(def.mappingFor("mouse").scale, 0.2);
+  EXPECT_EQ(def.mappingFor("mouse").offset[1], 0.02);  // inherited
+  EXPECT_EQ(def.mappingFor("udp").scale, 0.5);         // inherited
+  EXPECT_EQ(def.mappingFor("udp").offset[2], 0.05);
+  EXPECT_EQ(def.mappingFor("bot").scale, 0.5);         // no override: the level's
+  EXPECT_EQ(def.mappingFor("joystick").offset[0], 0.01);
+  EXPECT_THAT(errorOf("return { name = 'x', device = { per_device = { trackball = {} } } }"),
+              HasSubstr("lv.lua:1: device.per_device.trackball: unknown key"));
+  EXPECT_THAT(errorOf("return { name = 'x', device = { per_device = { mouse = { scale = -1 } } } }"),
+              HasSubstr("device.per_device.mouse.scale"));
+}
+
 TEST(LevelLoader, VisualMethodKeepsM3GainsAndRendersNothing) {
   const LevelDef d = load("return {name = 'v', force = {method = 'visual'}}").def;
   EXPECT_TRUE(d.coupling.visualOnly);
