@@ -14,6 +14,7 @@
 #include "game/app/ScreenTour.h"
 #include "game/app/ScriptedMouse.h"
 #include "engine/render/Image.h"
+#include "game/cli/ArgumentReader.h"
 #include "game/commands/ExitCode.h"
 #include "game/screens/PlayScreen.h"
 
@@ -22,21 +23,6 @@ namespace hemiroll::game {
 namespace {
 
 constexpr const char* kPrefix = "hemiroll play: ";
-
-bool parseSize(const std::string& s, int& w, int& h) {
-  const auto x = s.find('x');
-  if (x == std::string::npos) return false;
-  try {
-    std::size_t used = 0;
-    w = std::stoi(s.substr(0, x), &used);
-    if (used != x) return false;
-    h = std::stoi(s.substr(x + 1), &used);
-    if (used != s.size() - x - 1) return false;
-  } catch (const std::exception&) {
-    return false;
-  }
-  return w >= 64 && h >= 64 && w <= 16384 && h <= 16384;
-}
 
 bool haveDisplay() {
   for (const char* v : {"DISPLAY", "WAYLAND_DISPLAY", "SDL_VIDEODRIVER"})
@@ -125,54 +111,17 @@ std::string playNoDisplayMessage(const std::string& why) {
 PlayOptionsResult parsePlayOptions(const std::vector<std::string>& args) {
   PlayOptionsResult r;
   PlayOptions& o = r.options;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    auto value = [&](const char* flag) -> const std::string* {
-      if (i + 1 >= args.size()) {
-        r.error = std::string(flag) + " needs a value";
-        return nullptr;
-      }
-      return &args[++i];
-    };
-    if (a == "--help" || a == "-h") {
-      o.help = true;
-    } else if (a == "--no-vsync") {
-      o.vsync = false;
-    } else if (a == "--tour") {
-      const std::string* v = value("--tour");
-      if (!v) return r;
-      o.tourDir = *v;
-    } else if (a == "--levels") {
-      const std::string* v = value("--levels");
-      if (!v) return r;
-      o.levelsDir = *v;
-    } else if (a == "--size") {
-      const std::string* v = value("--size");
-      if (!v) return r;
-      if (!parseSize(*v, o.width, o.height)) {
-        r.error = "--size '" + *v + "': expected WxH, each 64..16384 (e.g. 1280x720)";
-        return r;
-      }
-    } else if (a == "--autoplay") {
-      const std::string* v = value("--autoplay");
-      if (!v) return r;
-      char* end = nullptr;
-      o.autoplay = std::strtod(v->c_str(), &end);
-      if (end == v->c_str() || *end != '\0' || !std::isfinite(o.autoplay) || o.autoplay <= 0.0 || o.autoplay > 3600.0) {
-        r.error = "--autoplay '" + *v + "': expected seconds in (0, 3600]";
-        return r;
-      }
-    } else if (!a.empty() && a[0] == '-') {
-      r.error = "unknown flag '" + a + "'";
-      return r;
-    } else if (o.level.empty()) {
-      o.level = a;
-    } else {
-      r.error = "more than one level given ('" + o.level + "', '" + a + "')";
-      return r;
-    }
-  }
-  if ((o.autoplay > 0.0 || !o.tourDir.empty()) && o.level.empty())
+  cli::ArgumentReader reader;
+  reader.flag("--help", [&] { o.help = true; })
+      .flag("-h", [&] { o.help = true; })
+      .flag("--no-vsync", [&] { o.vsync = false; })
+      .positional("level", 1, [&](const std::string& path) { o.level = path; })
+      .option("--tour", cli::text(o.tourDir, "a directory"))
+      .option("--levels", cli::text(o.levelsDir, "a directory"))
+      .option("--size", cli::size(o.width, o.height, 64, 16384))
+      .option("--autoplay", cli::numberIn(o.autoplay, 1e-3, 3600.0, "seconds in [0.001, 3600]"));
+  r.error = reader.read(args);
+  if (r.error.empty() && (o.autoplay > 0.0 || !o.tourDir.empty()) && o.level.empty())
     r.error = std::string(o.autoplay > 0.0 ? "--autoplay" : "--tour") + " needs a LEVEL.lua";
   return r;
 }

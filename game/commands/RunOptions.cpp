@@ -1,25 +1,8 @@
 #include "game/commands/RunOptions.h"
 
-#include <cerrno>
-#include <cstdlib>
+#include "game/cli/ArgumentReader.h"
 
 namespace hemiroll::game {
-
-namespace {
-
-// Decimal digits only, at most 2^63 - 1 (Lua integers are signed 64-bit, and
-// the bot receives the seed as one).
-bool parseSeed(const std::string& text, std::uint64_t& value) {
-  if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos) return false;
-  char* end = nullptr;
-  errno = 0;
-  const unsigned long long v = std::strtoull(text.c_str(), &end, 10);
-  if (errno != 0 || end != text.c_str() + text.size() || v > 0x7fffffffffffffffULL) return false;
-  value = v;
-  return true;
-}
-
-}  // namespace
 
 const char* runUsage() {
   return "usage: hemiroll run LEVEL.lua --bot BOT.lua [--seed N] [--record DIR] [--realtime]\n"
@@ -44,53 +27,25 @@ const char* runUsage() {
 RunOptionsResult parseRunOptions(const std::vector<std::string>& args) {
   RunOptionsResult result;
   RunOptions& o = result.options;
-  auto fail = [&](const std::string& message) {
-    result.error = message;
-    return result;
-  };
-
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    std::string arg = args[i];
-    if (arg == "--help" || arg == "-h") {
-      o.help = true;
-      continue;
-    }
-    if (arg == "--realtime") {
-      o.realtime = true;
-      continue;
-    }
-    if (arg.rfind("-", 0) != 0 || arg == "-") {
-      if (!o.levelPath.empty()) return fail("unexpected argument '" + arg + "' (only one level file)");
-      o.levelPath = arg;
-      continue;
-    }
-    std::optional<std::string> inlineValue;
-    if (const auto eq = arg.find('='); eq != std::string::npos) {
-      inlineValue = arg.substr(eq + 1);
-      arg = arg.substr(0, eq);
-    }
-    if (arg != "--bot" && arg != "--seed" && arg != "--record") return fail("unknown flag '" + arg + "'");
-    std::string value;
-    if (inlineValue) {
-      value = *inlineValue;
-    } else {
-      if (i + 1 >= args.size()) return fail("flag " + arg + " needs a value");
-      value = args[++i];
-    }
-    if (arg == "--seed") {
-      if (!parseSeed(value, o.seed))
-        return fail("flag --seed needs a whole number from 0 to 9223372036854775807, got '" + value + "'");
-    } else if (value.empty()) {
-      return fail("flag " + arg + " needs a " + (arg == "--bot" ? "bot file" : "directory"));
-    } else if (arg == "--bot") {
-      o.botPath = value;
-    } else {
-      o.recordDir = value;
-    }
-  }
-  if (o.help) return result;
-  if (o.levelPath.empty()) return fail("missing the level file");
-  if (o.botPath.empty()) return fail("missing --bot BOT.lua");
+  cli::ArgumentReader reader;
+  reader.flag("--help", [&] { o.help = true; })
+      .flag("-h", [&] { o.help = true; })
+      .flag("--realtime", [&] { o.realtime = true; })
+      .positional("level file", 1, [&](const std::string& path) { o.levelPath = path; })
+      .option("--bot", cli::text(o.botPath, "a bot file"))
+      .option("--record", cli::text(o.recordDir, "a directory"))
+      // Lua integers are signed 64-bit, and the bot receives the seed as one.
+      .option("--seed", [&](const std::string& flag, const std::string& value) {
+        unsigned long long seed = 0;
+        if (!cli::readUnsigned(value, seed) || seed > 0x7fffffffffffffffULL)
+          return cli::needs(flag, "a whole number from 0 to 9223372036854775807", value);
+        o.seed = seed;
+        return std::string();
+      });
+  result.error = reader.read(args);
+  if (!result.error.empty() || o.help) return result;
+  if (o.levelPath.empty()) result.error = "missing the level file";
+  else if (o.botPath.empty()) result.error = "missing --bot BOT.lua";
   return result;
 }
 

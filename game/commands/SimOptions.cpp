@@ -1,32 +1,14 @@
 #include "game/commands/SimOptions.h"
 
-#include <cerrno>
-#include <cmath>
-#include <cstdlib>
+#include <limits>
 
 #include "engine/physics/IntegratorRegistry.h"
 #include "engine/physics/RotationDrivenSystem.h"
+#include "game/cli/ArgumentReader.h"
 
 namespace hemiroll::game {
 
 namespace {
-
-// The whole text must be a finite number greater than zero.
-bool parsePositive(const std::string& text, double& value) {
-  if (text.empty()) return false;
-  char* end = nullptr;
-  errno = 0;
-  value = std::strtod(text.c_str(), &end);
-  return errno == 0 && end == text.c_str() + text.size() && std::isfinite(value) && value > 0.0;
-}
-
-bool parseCount(const std::string& text, long long& value) {
-  if (text.empty() || text.front() == '-' || text.front() == '+') return false;
-  char* end = nullptr;
-  errno = 0;
-  value = std::strtoll(text.c_str(), &end, 10);
-  return errno == 0 && end == text.c_str() + text.size() && value >= 1;
-}
 
 std::string integratorNames() {
   std::string out;
@@ -69,68 +51,35 @@ const char* simUsage() {
 SimOptionsResult parseSimOptions(const std::vector<std::string>& args) {
   SimOptionsResult result;
   SimOptions& o = result.options;
-  auto fail = [&](const std::string& message) {
-    result.error = message;
-    return result;
-  };
-
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    std::string arg = args[i];
-    if (arg == "--help" || arg == "-h") {
-      o.help = true;
-      continue;
-    }
-    if (arg.rfind("-", 0) != 0 || arg == "-") {
-      if (!o.scenarioPath.empty()) return fail("unexpected argument '" + arg + "' (only one scenario file)");
-      o.scenarioPath = arg;
-      continue;
-    }
-    std::optional<std::string> inlineValue;
-    if (const auto eq = arg.find('='); eq != std::string::npos) {
-      inlineValue = arg.substr(eq + 1);
-      arg = arg.substr(0, eq);
-    }
-    if (arg != "--duration" && arg != "--dt" && arg != "--integrator" && arg != "--every" && arg != "--out" &&
-        arg != "--tol" && arg != "--orientation")
-      return fail("unknown flag '" + arg + "'");
-    std::string value;
-    if (inlineValue) {
-      value = *inlineValue;
-    } else {
-      if (i + 1 >= args.size()) return fail("flag " + arg + " needs a value");
-      value = args[++i];
-    }
-
-    if (arg == "--duration" || arg == "--dt") {
-      double number = 0.0;
-      if (!parsePositive(value, number))
-        return fail("flag " + arg + " needs a positive number of seconds, got '" + value + "'");
-      (arg == "--duration" ? o.duration : o.timeStep) = number;
-    } else if (arg == "--tol") {
-      double number = 0.0;
-      if (!parsePositive(value, number)) return fail("flag --tol needs a positive number, got '" + value + "'");
-      o.tolerance = number;
-    } else if (arg == "--orientation") {
-      physics::OrientationForm form;
-      if (!physics::parseOrientationForm(value, form))
-        return fail("flag --orientation needs 'angles' or 'quaternion', got '" + value + "'");
-      o.orientation = value;
-    } else if (arg == "--every") {
-      if (!parseCount(value, o.every)) return fail("flag --every needs a whole number >= 1, got '" + value + "'");
-    } else if (arg == "--integrator") {
-      if (value == "list") {
-        o.listIntegrators = true;
-      } else if (!physics::IntegratorRegistry::builtin().contains(value)) {
-        return fail("unknown integrator '" + value + "' (available: " + integratorNames() + ")");
-      } else {
-        o.integrator = value;
-      }
-    } else {  // --out
-      if (value.empty()) return fail("flag --out needs a file name");
-      o.outPath = value;
-    }
-  }
-  if (!o.help && !o.listIntegrators && o.scenarioPath.empty()) return fail("missing the scenario file");
+  cli::ArgumentReader reader;
+  reader.flag("--help", [&] { o.help = true; })
+      .flag("-h", [&] { o.help = true; })
+      .positional("scenario file", 1, [&](const std::string& path) { o.scenarioPath = path; })
+      .option("--duration", cli::positiveNumber(o.duration, "a positive number of seconds"))
+      .option("--dt", cli::positiveNumber(o.timeStep, "a positive number of seconds"))
+      .option("--tol", cli::positiveNumber(o.tolerance, "a positive number"))
+      .option("--every", cli::integerIn(o.every, 1, std::numeric_limits<long long>::max(), "a whole number >= 1"))
+      .option("--out", cli::text(o.outPath, "a file name"))
+      .option("--orientation",
+              [&](const std::string& flag, const std::string& value) {
+                physics::OrientationForm form;
+                if (!physics::parseOrientationForm(value, form)) return cli::needs(flag, "'angles' or 'quaternion'", value);
+                o.orientation = value;
+                return std::string();
+              })
+      .option("--integrator", [&](const std::string&, const std::string& value) {
+        if (value == "list") {
+          o.listIntegrators = true;
+        } else if (!physics::IntegratorRegistry::builtin().contains(value)) {
+          return "unknown integrator '" + value + "' (available: " + integratorNames() + ")";
+        } else {
+          o.integrator = value;
+        }
+        return std::string();
+      });
+  result.error = reader.read(args);
+  if (result.error.empty() && !o.help && !o.listIntegrators && o.scenarioPath.empty())
+    result.error = "missing the scenario file";
   return result;
 }
 

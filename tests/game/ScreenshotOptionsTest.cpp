@@ -48,7 +48,7 @@ TEST(ScreenshotOptionsTest, BadInputNamesTheFlag) {
       {{"l.lua", "--out", "a.png", "--proxy", "1,2"}, "--proxy"},
       {{"l.lua", "--out", "a.png", "--frames", "0"}, "--frames"},
       {{"l.lua", "--out", "a.png", "--bogus", "1"}, "unknown flag '--bogus'"},
-      {{"l.lua", "m.lua", "--out", "a.png"}, "more than one level"},
+      {{"l.lua", "m.lua", "--out", "a.png"}, "unexpected argument 'm.lua' (only one level)"},
       {{"l.lua", "--out"}, "--out needs a value"},
   };
   for (const auto& [args, expected] : cases) {

@@ -1,30 +1,10 @@
 #include "tools/hapticclient/ClientOptions.h"
 
-#include <charconv>
-#include <cmath>
-#include <sstream>
+#include <limits>
+
+#include "game/cli/ArgumentReader.h"
 
 namespace hemiroll::hapticclient {
-
-namespace {
-
-bool toDouble(const std::string& text, double& out) {
-  const char* end = text.data() + text.size();
-  const auto r = std::from_chars(text.data(), end, out);
-  return r.ec == std::errc() && r.ptr == end && std::isfinite(out);
-}
-
-// "x,y,z" in metres.
-bool toTriple(const std::string& text, std::array<double, 3>& out) {
-  std::stringstream s(text);
-  std::string part;
-  for (int i = 0; i < 3; ++i) {
-    if (!std::getline(s, part, ',') || !toDouble(part, out[static_cast<std::size_t>(i)])) return false;
-  }
-  return !std::getline(s, part, ',');
-}
-
-}  // namespace
 
 const char* clientUsage() {
   return "usage: hemiroll-haptic-client [options]\n"
@@ -49,59 +29,33 @@ const char* clientUsage() {
 ParsedOptions parseClientOptions(const std::vector<std::string>& args) {
   ParsedOptions p;
   ClientOptions& o = p.options;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& flag = args[i];
-    if (flag == "--help" || flag == "-h") {
-      o.help = true;
-      continue;
-    }
-    if (i + 1 >= args.size()) {
-      p.error = flag.rfind("--", 0) == 0 ? flag + " needs a value" : "unexpected argument '" + flag + "'";
-      return p;
-    }
-    const std::string& value = args[++i];
-    double x = 0.0;
-    const bool number = toDouble(value, x);
-    auto bad = [&](const char* what) {
-      p.error = flag + " needs " + what + ", got '" + value + "'";
-      return p;
-    };
-    if (flag == "--host") {
-      o.host = value;
-    } else if (flag == "--port") {
-      if (!number || x < 1 || x > 65535 || x != std::floor(x)) return bad("an integer port in 1..65535");
-      o.port = static_cast<std::uint16_t>(x);
-    } else if (flag == "--duration") {
-      if (!number || !(x > 0.0 && x <= 1e6)) return bad("a positive number of seconds, at most 1e6");
-      o.duration = x;
-    } else if (flag == "--rate") {
-      if (!number || !(x >= 1.0 && x <= 10000.0)) return bad("a rate in 1..10000 Hz");
-      o.rate = x;
-    } else if (flag == "--hand-mass") {
-      if (!number || !(x > 0.0)) return bad("a positive mass in kg");
-      o.hand.mass = x;
-    } else if (flag == "--hand-stiffness") {
-      if (!number || !(x >= 0.0)) return bad("a stiffness >= 0 in N/m");
-      o.hand.stiffness = x;
-    } else if (flag == "--hand-damping") {
-      if (!number || !(x >= 0.0)) return bad("a damping >= 0 in N s/m");
-      o.hand.damping = x;
-    } else if (flag == "--centre") {
-      if (!toTriple(value, o.centre)) return bad("three numbers x,y,z in metres");
-    } else if (flag == "--circle-radius") {
-      if (!number || !(x >= 0.0)) return bad("a radius >= 0 in metres");
-      o.circleRadius = x;
-    } else if (flag == "--circle-frequency") {
-      if (!number || !(x >= 0.0)) return bad("a frequency >= 0 in Hz");
-      o.circleFrequency = x;
-    } else if (flag == "--realtime-priority") {
-      if (!number || x < 0 || x > 99 || x != std::floor(x)) return bad("an integer priority in 0..99");
-      o.realtimePriority = static_cast<int>(x);
-    } else {
-      p.error = "unknown option '" + flag + "' (see --help)";
-      return p;
-    }
-  }
+  constexpr double kHuge = std::numeric_limits<double>::max();
+  cli::ArgumentReader reader;
+  reader.flag("--help", [&] { o.help = true; })
+      .flag("-h", [&] { o.help = true; })
+      .option("--host", cli::text(o.host, "an address"))
+      .option("--port",
+              [&](const std::string& flag, const std::string& value) {
+                long long port = 0;
+                if (!cli::readInteger(value, port) || port < 1 || port > 65535)
+                  return cli::needs(flag, "an integer port in 1..65535", value);
+                o.port = static_cast<std::uint16_t>(port);
+                return std::string();
+              })
+      .option("--duration", cli::numberIn(o.duration, std::numeric_limits<double>::denorm_min(), 1e6, "a positive number of seconds, at most 1e6"))
+      .option("--rate", cli::numberIn(o.rate, 1.0, 10000.0, "a rate in 1..10000 Hz"))
+      .option("--hand-mass", cli::positiveNumber(o.hand.mass, "a positive mass in kg"))
+      .option("--hand-stiffness", cli::numberIn(o.hand.stiffness, 0.0, kHuge, "a stiffness >= 0 in N/m"))
+      .option("--hand-damping", cli::numberIn(o.hand.damping, 0.0, kHuge, "a damping >= 0 in N s/m"))
+      .option("--centre",
+              [&](const std::string& flag, const std::string& value) {
+                if (!cli::readNumbers(value, o.centre)) return cli::needs(flag, "three numbers x,y,z in metres", value);
+                return std::string();
+              })
+      .option("--circle-radius", cli::numberIn(o.circleRadius, 0.0, kHuge, "a radius >= 0 in metres"))
+      .option("--circle-frequency", cli::numberIn(o.circleFrequency, 0.0, kHuge, "a frequency >= 0 in Hz"))
+      .option("--realtime-priority", cli::integerIn(o.realtimePriority, 0, 99, "an integer priority in 0..99"));
+  p.error = reader.read(args);
   return p;
 }
 

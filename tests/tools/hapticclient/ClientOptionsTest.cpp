@@ -34,18 +34,18 @@ TEST(ClientOptionsTest, BadValuesNameTheFlagAndTheValue) {
     std::string expected;
   };
   const Case cases[] = {
-      {{"--port", "70000"}, "--port needs an integer port in 1..65535, got '70000'"},
-      {{"--port", "12.5"}, "--port needs an integer port in 1..65535, got '12.5'"},
-      {{"--duration", "-1"}, "--duration needs a positive number of seconds, at most 1e6, got '-1'"},
-      {{"--duration", "1e300"}, "--duration needs a positive number of seconds, at most 1e6, got '1e300'"},
-      {{"--rate", "abc"}, "--rate needs a rate in 1..10000 Hz, got 'abc'"},
-      {{"--hand-mass", "0"}, "--hand-mass needs a positive mass in kg, got '0'"},
-      {{"--hand-stiffness", "nan"}, "--hand-stiffness needs a stiffness >= 0 in N/m, got 'nan'"},
-      {{"--centre", "1,2"}, "--centre needs three numbers x,y,z in metres, got '1,2'"},
-      {{"--centre", "1,2,3,4"}, "--centre needs three numbers x,y,z in metres, got '1,2,3,4'"},
-      {{"--realtime-priority", "100"}, "--realtime-priority needs an integer priority in 0..99, got '100'"},
-      {{"--port"}, "--port needs a value"},
-      {{"--speed", "3"}, "unknown option '--speed' (see --help)"},
+      {{"--port", "70000"}, "flag --port needs an integer port in 1..65535, got '70000'"},
+      {{"--port", "12.5"}, "flag --port needs an integer port in 1..65535, got '12.5'"},
+      {{"--duration", "-1"}, "flag --duration needs a positive number of seconds, at most 1e6, got '-1'"},
+      {{"--duration", "1e300"}, "flag --duration needs a positive number of seconds, at most 1e6, got '1e300'"},
+      {{"--rate", "abc"}, "flag --rate needs a rate in 1..10000 Hz, got 'abc'"},
+      {{"--hand-mass", "0"}, "flag --hand-mass needs a positive mass in kg, got '0'"},
+      {{"--hand-stiffness", "nan"}, "flag --hand-stiffness needs a stiffness >= 0 in N/m, got 'nan'"},
+      {{"--centre", "1,2"}, "flag --centre needs three numbers x,y,z in metres, got '1,2'"},
+      {{"--centre", "1,2,3,4"}, "flag --centre needs three numbers x,y,z in metres, got '1,2,3,4'"},
+      {{"--realtime-priority", "100"}, "flag --realtime-priority needs an integer priority in 0..99, got '100'"},
+      {{"--port"}, "flag --port needs a value"},
+      {{"--speed", "3"}, "unknown flag '--speed'"},
       {{"stray"}, "unexpected argument 'stray'"},
   };
   for (const Case& c : cases) EXPECT_EQ(parseClientOptions(c.args).error, c.expected);
