@@ -13,21 +13,21 @@ PointerMapping::PointerMapping(const PointerMappingDef& def) : def_(def) {
   if (!positive(def.reach)) throw std::invalid_argument("PointerMapping: reach must be positive");
   if (!(def.minHeight <= def.maxHeight) || !std::isfinite(def.minHeight) || !std::isfinite(def.maxHeight))
     throw std::invalid_argument("PointerMapping: minHeight must not exceed maxHeight");
-  if (!std::isfinite(def.centreX) || !std::isfinite(def.centreY))
-    throw std::invalid_argument("PointerMapping: the centre must be finite");
   height_ = std::clamp(0.0, def.minHeight, def.maxHeight);
 }
 
-Vec3 PointerMapping::toMetres(double px, double py) const {
-  double x = (px - def_.centreX) * def_.metresPerPixel;
-  double y = (def_.centreY - py) * def_.metresPerPixel;
-  if (!std::isfinite(x) || !std::isfinite(y)) x = y = 0.0;
-  const double r = std::hypot(x, y);
-  if (r > def_.reach) {
-    x *= def_.reach / r;
-    y *= def_.reach / r;
-  }
-  return Vec3(x, y, height_);
+void PointerMapping::moveBy(double dxPx, double dyPx) {
+  const double right = dxPx * def_.metresPerPixel, up = -dyPx * def_.metresPerPixel;
+  if (!std::isfinite(right) || !std::isfinite(up)) return;
+  x_ += cosYaw_ * right - sinYaw_ * up;
+  y_ += sinYaw_ * right + cosYaw_ * up;
+  clampToReach();
+}
+
+void PointerMapping::setScreenYaw(double radians) {
+  if (!std::isfinite(radians)) return;
+  cosYaw_ = std::cos(radians);
+  sinYaw_ = std::sin(radians);
 }
 
 void PointerMapping::wheel(double notches) {
@@ -35,10 +35,19 @@ void PointerMapping::wheel(double notches) {
   height_ = std::clamp(height_ + notches * def_.wheelStep, def_.minHeight, def_.maxHeight);
 }
 
-void PointerMapping::setCentre(double px, double py) {
-  if (!std::isfinite(px) || !std::isfinite(py)) return;
-  def_.centreX = px;
-  def_.centreY = py;
+void PointerMapping::moveTo(double x, double y) {
+  if (!std::isfinite(x) || !std::isfinite(y)) return;
+  x_ = x;
+  y_ = y;
+  clampToReach();
+}
+
+void PointerMapping::clampToReach() {
+  const double r = std::hypot(x_, y_);
+  if (r > def_.reach) {
+    x_ *= def_.reach / r;
+    y_ *= def_.reach / r;
+  }
 }
 
 }  // namespace hemiroll::haptics

@@ -1,11 +1,20 @@
 #pragma once
-// Mouse pointer [px] -> device coordinates [m] for MouseDevice: the pointer
-// moves the proxy on a horizontal plane, the wheel sets its height.
-//   x = (px - centreX) * metresPerPixel          (screen right = +x)
-//   y = (centreY - py) * metresPerPixel          (screen up = +y; pixel rows grow downwards)
-//   z = height, changed by wheelStep per notch   (up = +z)
-// The horizontal position is kept within reach of the origin and the height
-// within [minHeight, maxHeight], so the proxy never leaves the workspace.
+// Mouse motion [px] -> device coordinates [m] for MouseDevice: the pointer
+// steers the proxy on a horizontal plane by its motion, the wheel sets its
+// height.
+//   (x, y) += Rz(screenYaw) (dx, -dy) * metresPerPixel   (screen right and up)
+//   z = height, changed by wheelStep per notch              (up = +z)
+//
+// Why motion and not the pointer's place in the window: every camera follows
+// the rolling hemisphere, so a fixed window-to-plane map would leave the
+// proxy ever further from where the player's pointer is (off the window after
+// a 15 cm roll), and a map through the moving camera would move the proxy
+// whenever the camera moves, a loop that pushes the hemisphere on by itself.
+// Moved by motion, the proxy stays where the player left it, the game draws
+// it in place of the system cursor, and "right on the screen" is right for
+// any camera yaw. The position is kept within reach of the origin and the
+// height within [minHeight, maxHeight], so the proxy never leaves the
+// workspace.
 
 #include "engine/haptics/HapticDevice.h"
 
@@ -13,7 +22,6 @@ namespace hemiroll::haptics {
 
 struct PointerMappingDef {
   double metresPerPixel = 0.00025;        // 0.25 mm/px: 800 px span 0.2 m, a desk device's workspace
-  double centreX = 400.0, centreY = 300.0;  // the pixel that maps to the origin [px] (window centre)
   double wheelStep = 0.002;               // [m] per wheel notch
   double minHeight = -0.05, maxHeight = 0.05;  // [m]
   double reach = 0.1;                     // largest horizontal distance from the origin [m]
@@ -22,20 +30,30 @@ struct PointerMappingDef {
 class PointerMapping {
  public:
   // Throws std::invalid_argument naming the field for a non-positive scale,
-  // step or reach, or an empty height range.
+  // step or reach, or an empty height range. Starts at the origin.
   explicit PointerMapping(const PointerMappingDef& def = {});
 
-  Vec3 toMetres(double px, double py) const;
+  // The pointer moved by (dx, dy) window pixels (y grows down the screen).
+  // Non-finite motion is ignored.
+  void moveBy(double dxPx, double dyPx);
+  // The heading of screen right in device coordinates [rad] (0: +x; the
+  // camera's, see render::screenRightHeading).
+  void setScreenYaw(double radians);
   // Wheel notches (positive: away from the user = up); height is clamped.
   void wheel(double notches);
-  // The window was resized: its new centre [px].
-  void setCentre(double px, double py);
+  // Back to a horizontal position [m] (clamped to reach), e.g. the start.
+  void moveTo(double x, double y);
+
+  Vec3 position() const { return Vec3(x_, y_, height_); }
   double height() const { return height_; }
   const PointerMappingDef& def() const { return def_; }
 
  private:
+  void clampToReach();
+
   PointerMappingDef def_;
-  double height_ = 0.0;
+  double x_ = 0.0, y_ = 0.0, height_ = 0.0;
+  double cosYaw_ = 1.0, sinYaw_ = 0.0;
 };
 
 }  // namespace hemiroll::haptics

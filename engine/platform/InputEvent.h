@@ -33,6 +33,8 @@ struct InputEvent {
   bool repeat = false;                       // a key held down repeats
   PointerButton button = PointerButton::None;
   double x = 0.0, y = 0.0;                   // pointer [window px], or new size for Resized
+  double dx = 0.0, dy = 0.0;                 // PointerMove: motion since the last one [window px]
+                                             // (also while the pointer is captured, when x, y stand still)
   double wheel = 0.0;                        // notches, positive away from the user
   double timestamp = 0.0;                    // [s] since SDL started
 };

@@ -50,6 +50,8 @@ InputEvent translateEvent(const SDL_Event& event) {
       out.type = InputType::PointerMove;
       out.x = event.motion.x;
       out.y = event.motion.y;
+      out.dx = event.motion.xrel;
+      out.dy = event.motion.yrel;
       break;
     case SDL_MOUSEBUTTONDOWN:
     case SDL_MOUSEBUTTONUP:

@@ -107,6 +107,10 @@ void Window::pollEvents(std::vector<InputEvent>& out) {
   }
 }
 
+bool Window::capturePointer(bool captured) {
+  return SDL_SetRelativeMouseMode(captured ? SDL_TRUE : SDL_FALSE) == 0;
+}
+
 void Window::swap() { SDL_GL_SwapWindow(window_); }
 
 void Window::makeCurrent() { SDL_GL_MakeCurrent(window_, context_); }

@@ -55,6 +55,11 @@ class Window {
   // allocation once its capacity suffices.
   void pollEvents(std::vector<InputEvent>& out);
   void swap();
+  // Captured: the system cursor is hidden and the pointer reports motion
+  // without end (no window edge), as the play screen steers by motion; the
+  // game draws the proxy instead. False when the platform cannot (motion
+  // then still arrives, bounded by the window).
+  bool capturePointer(bool captured);
   // Makes this window's context current again (after another window's
   // context was used or destroyed on this thread).
   void makeCurrent();

@@ -63,6 +63,10 @@ CameraView makeCameraView(const CameraDef& def, const Vec3d& focusIn, double rad
   return v;
 }
 
+double screenRightHeading(const CameraDef& def) {
+  return def.mode == CameraMode::Orbit ? def.yaw + M_PI / 2.0 : 0.0;
+}
+
 PixelPoint projectToPixel(const CameraView& view, const Vec3d& p, int width, int height) {
   const Eigen::Vector4f clip = view.viewProjection * Eigen::Vector4f(float(p[0]), float(p[1]), float(p[2]), 1.0f);
   PixelPoint out;

@@ -37,6 +37,12 @@ inline constexpr double kFollowPitch = 0.6;  // [rad] above the plane
 // `aspect` = drawable width / height (> 0).
 CameraView makeCameraView(const CameraDef& def, const Vec3d& focus, double radius, double aspect);
 
+// The heading of screen right on the plane [rad, from +x about +z]: 0 for the
+// follow and top cameras, the eye's yaw + pi/2 for orbit. The mouse turns its
+// strokes by it (haptics::PointerMapping::setScreenYaw), so that a stroke to
+// the right moves the proxy to the right on screen.
+double screenRightHeading(const CameraDef& def);
+
 // Where a base-frame point [m] lands in a width x height image.
 PixelPoint projectToPixel(const CameraView& view, const Vec3d& point, int width, int height);
 

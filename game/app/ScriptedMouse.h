@@ -1,10 +1,9 @@
 #pragma once
-// A scripted player for measurements, tests and screenshots: it moves the
-// pointer onto the mass point (the window's centre, where the pointer
-// mapping puts the device origin and a level's mass point starts), clicks to
-// take hold, then draws small circles (radius [px], one turn per period)
-// that roll the hemisphere gently. Events go in through App::inject, the
-// same path as a player's.
+// A scripted player for measurements, tests and screenshots: it clicks to
+// take hold (the proxy starts on the mass point), then strokes small circles
+// (radius [px] of mouse motion, one turn per period) that roll the
+// hemisphere gently. Events go in through App::inject, the same path as a
+// player's.
 
 namespace hemiroll::game {
 
@@ -26,6 +25,7 @@ class ScriptedMouse {
  private:
   ScriptedMouseDef def_;
   bool clicked_ = false;
+  double lastX_ = 0.0, lastY_ = 0.0;  // where the circle's last stroke ended [px]
 };
 
 }  // namespace hemiroll::game

@@ -38,13 +38,13 @@ PlaySession::PlaySession(script::LoadedLevel& level, const PlaySessionDef& def)
   loop_ = std::make_unique<haptics::ServoLoop>(loopDef_, device_);
   initial_ = stateOf(loopDef_.initialState);
   snapshot_.state = loopDef_.initialState;
-  resize(def.windowWidth, def.windowHeight);
-  // The proxy starts at the mass point's height, so that a click on the
-  // mass point is within the engagement distance without touching the wheel.
+  // The proxy starts on the mass point (the device origin is mapped to where
+  // a level's mass point starts, at its height), so that a click takes hold
+  // at once, without aiming or touching the wheel.
   const render::Vec3d p = massPointPosition(level.def, initial_);
   const double zDevice = (p[2] - loopDef_.mapping.offset.z()) / loopDef_.mapping.scale;
   mapping_.wheel(zDevice / mapping_.def().wheelStep);
-  pointer(def.windowWidth / 2.0, def.windowHeight / 2.0, true);
+  sendPointer(/*jump=*/true);
 }
 
 PlaySession::~PlaySession() {
@@ -58,22 +58,19 @@ void PlaySession::start() {
   if (!judging_.finished()) loop_->start();
 }
 
-void PlaySession::pointer(double px, double py, bool jump) {
-  lastPx_ = px;
-  lastPy_ = py;
-  device_.setPointer(mapping_.toMetres(px, py), 0, jump);
+void PlaySession::sendPointer(bool jump) { device_.setPointer(mapping_.position(), 0, jump); }
+
+void PlaySession::pointerMotion(double dx, double dy) {
+  mapping_.moveBy(dx, dy);
+  sendPointer(false);
 }
 
 void PlaySession::wheel(double notches) {
   mapping_.wheel(notches);
-  pointer(lastPx_, lastPy_);
+  sendPointer(false);
 }
 
-void PlaySession::resize(int width, int height) { mapping_.setCentre(width / 2.0, height / 2.0); }
-
-haptics::Vec3 PlaySession::pointerScene() const {
-  return loopDef_.mapping.positionToScene(mapping_.toMetres(lastPx_, lastPy_));
-}
+haptics::Vec3 PlaySession::pointerScene() const { return loopDef_.mapping.positionToScene(mapping_.position()); }
 
 void PlaySession::post(haptics::ServoCommandKind kind) {
   haptics::ServoCommand c;

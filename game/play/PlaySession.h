@@ -4,7 +4,9 @@
 //   servo thread:  MouseDevice (the UI's latest pointer, lock-free) ->
 //                  coupling -> physics -> safety -> snapshot + a RecordRow
 //                  of every tick into a lock-free ring;
-//   UI thread:     pointer events -> PointerMapping -> MouseDevice;
+//   UI thread:     pointer motion -> PointerMapping -> MouseDevice (the
+//                  proxy moves by the mouse's strokes, turned with the
+//                  camera: PointerMapping.h says why not by its place);
 //                  once per frame: RingJudge drains the ring (every tick
 //                  judged, level callbacks at their rate), latest snapshot
 //                  for the renderer and the HUD.
@@ -29,8 +31,7 @@
 namespace hemiroll::game {
 
 struct PlaySessionDef {
-  haptics::PointerMappingDef pointer;  // centre is set from the window size
-  int windowWidth = 1280, windowHeight = 720;  // [window px]
+  haptics::PointerMappingDef pointer;
   bool requestRealtime = true;         // SCHED_FIFO for the servo thread when permitted
   std::optional<physics::CouplingDef> coupling;  // the player's settings; none = the level's
   // Log the trial for a replay here ("" = no replay); levelHash goes into
@@ -47,10 +48,11 @@ class PlaySession {
   ~PlaySession();
 
   void start();  // on_start, then the servo thread
-  // UI thread: the pointer [window px]; buttons bit 0 = left.
-  void pointer(double px, double py, bool jump = false);
+  // UI thread: the pointer moved by (dx, dy) [window px].
+  void pointerMotion(double dx, double dy);
+  // The heading of screen right [rad] (render::screenRightHeading of the camera).
+  void setScreenYaw(double radians) { mapping_.setScreenYaw(radians); }
   void wheel(double notches);
-  void resize(int width, int height);
   void click();        // arm the engagement (the loop engages near the mass point)
   void release();      // disengage: the force ramps out
   void pause();        // physics stops, force zero at once
@@ -76,11 +78,13 @@ class PlaySession {
   // usable, else "" (replayError() says why).
   std::filesystem::path replayFile() const { return replayError_.empty() && capture_ ? capture_->file() : ""; }
   const std::string& replayError() const { return replayError_; }
-  // The proxy's scene position under the pointer now [m] (for tests).
+  // Where the pointer has put the proxy now, scene frame [m] (what the game
+  // draws in place of the system cursor).
   haptics::Vec3 pointerScene() const;
 
  private:
   void post(haptics::ServoCommandKind kind);
+  void sendPointer(bool jump);
 
   script::LoadedLevel& level_;
   haptics::ServoLoopDef loopDef_;
@@ -93,7 +97,6 @@ class PlaySession {
   RingJudge judging_;
   haptics::ServoSnapshot snapshot_;
   physics::ForceDrivenState initial_;
-  double lastPx_ = 0.0, lastPy_ = 0.0;
   bool paused_ = false, stopped_ = false;
   std::uint64_t faultClearedBy_ = 0;  // the tick by which a ClearFault has been applied
   std::chrono::steady_clock::time_point started_;

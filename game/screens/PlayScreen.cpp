@@ -10,6 +10,7 @@
 #include "game/screens/ResultsScreen.h"
 #include "game/screens/ScreenLayout.h"
 #include "game/scores/ScoreStore.h"
+#include "engine/render/Camera.h"
 #include "game/view/RenderSceneBuilder.h"
 
 namespace hemiroll::game {
@@ -24,9 +25,6 @@ void PlayScreen::begin() {
   try {
     level_ = script::LevelLoader().loadFile(levelPath_);
     PlaySessionDef def;
-    const platform::PixelSize size = app_.window().windowSize();
-    def.windowWidth = size.width;
-    def.windowHeight = size.height;
     def.requestRealtime = app_.def().requestRealtime;
     def.coupling = couplingFor(app_.settings(), level_.def.coupling);
     // A replay repeats the trial only on the level's own loop definition:
@@ -57,7 +55,11 @@ void PlayScreen::enter() {
     started_ = true;
     begin();
   }
+  // The menus above this screen (pause, results) need the system cursor back.
+  if (session_) app_.window().capturePointer(true);
 }
+
+void PlayScreen::leave() { app_.window().capturePointer(false); }
 
 void PlayScreen::pause() {
   if (!session_ || session_->finished()) return;
@@ -83,14 +85,12 @@ void PlayScreen::input(const platform::InputEvent& e) {
     return;
   }
   switch (e.type) {
-    case InputType::PointerMove: session_->pointer(e.x, e.y); break;
+    case InputType::PointerMove: session_->pointerMotion(e.dx, e.dy); break;
     case InputType::ButtonDown:
-      session_->pointer(e.x, e.y);
       if (e.button == platform::PointerButton::Left) session_->click();
       if (e.button == platform::PointerButton::Right) session_->release();
       break;
     case InputType::Wheel: session_->wheel(e.wheel); break;
-    case InputType::Resized: session_->resize(static_cast<int>(e.x), static_cast<int>(e.y)); break;
     case InputType::FocusLost: pause(); break;
     case InputType::KeyDown:
       if (e.key == platform::Key::Escape && !e.repeat) pause();
@@ -121,12 +121,17 @@ void PlayScreen::update(double dt) {
   hud_.update(s, session_->judging().judge());
   const std::size_t stage = static_cast<std::size_t>(std::max(0, session_->judging().judge().stage()));
   fillFromSnapshot(level_.def, s, stage, scene_);
+  // The proxy is the cursor: drawn where this frame's strokes put it, not
+  // where the servo thread last read it (up to a tick behind).
+  const haptics::Vec3 proxy = session_->pointerScene();
+  scene_.proxyPosition = {proxy.x(), proxy.y(), proxy.z()};
   if (level_.def.scene.contactTrace) {
     trace_.push(s.state[physics::force_slot::u_a], s.state[physics::force_slot::v_a], s.time);
     scene_.trace = &trace_;
   }
   scene_.camera.mode = app_.settings().camera;
   scene_.camera.zoom = app_.settings().zoom;
+  session_->setScreenYaw(render::screenRightHeading(scene_.camera));
 
   // Sounds: clicks on taking hold and letting go; the tone while held.
   Audio& audio = app_.audio();

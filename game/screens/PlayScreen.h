@@ -2,8 +2,10 @@
 // Playing a level: a PlaySession (servo loop on its own thread with the
 // mouse), drawn every frame from the latest snapshot through
 // RenderSceneBuilder and engine/render, with the PlayHud over it.
-// Mouse: move = the proxy, left click = take hold (engages near the mass
-// point), right click = let go, wheel = proxy height. Keys: Escape pauses
+// Mouse: the proxy starts on the mass point and moves by the mouse's strokes
+// (captured pointer, the proxy drawn as the cursor: PointerMapping.h says
+// why), left click = take hold (engages near the mass point), right click =
+// let go, wheel = proxy height. Keys: Escape pauses
 // (as does the window losing focus), Tab changes the camera. When the judge
 // ends the trial the results screen takes this one's place.
 
@@ -25,6 +27,7 @@ class PlayScreen final : public Screen {
   ~PlayScreen() override;
   const char* name() const override { return "play"; }
   void enter() override;
+  void leave() override;
   void input(const platform::InputEvent& e) override;
   void update(double dt) override;
   void paint() override;

@@ -34,10 +34,14 @@ TEST(InputTranslatorTest, PointerMotionAndButtonsInWindowPixels) {
   m.type = SDL_MOUSEMOTION;
   m.motion.x = 321;
   m.motion.y = 45;
+  m.motion.xrel = -3;
+  m.motion.yrel = 12;
   InputEvent e = translateEvent(m);
   EXPECT_EQ(e.type, InputType::PointerMove);
   EXPECT_EQ(e.x, 321.0);
   EXPECT_EQ(e.y, 45.0);
+  EXPECT_EQ(e.dx, -3.0);  // the motion: what steers the proxy
+  EXPECT_EQ(e.dy, 12.0);
 
   SDL_Event b{};
   b.type = SDL_MOUSEBUTTONDOWN;

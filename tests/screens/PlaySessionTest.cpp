@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <numbers>
 #include <thread>
 
 #include "engine/haptics/ReplayDevice.h"
@@ -12,6 +13,7 @@
 #include "engine/record/ReplayRunner.h"
 #include "engine/script/LevelLoader.h"
 #include "game/play/ReplayCapture.h"
+#include "game/view/RenderSceneBuilder.h"
 #include "tests/support/TempDirectory.h"
 
 namespace hemiroll::game {
@@ -39,14 +41,18 @@ TEST(PlaySessionTest, AScriptedMouseEngagesAndPlaysPausesAndQuits) {
     level = script::LevelLoader().loadFile(HEMIROLL_SOURCE_DIR "/levels/tutorial_01_tilt_and_return.lua");
     played = std::make_unique<PlaySession>(level, def);
     PlaySession& session = *played;
-    // The pointer starts at the window centre: the proxy at the mass point.
+    // The proxy starts at the mass point.
     session.start();
     session.click();
     engaged = false;
     const auto start = std::chrono::steady_clock::now();
+    double lastX = 6.0, lastY = 0.0;  // the stroke's place on its circle [px]
     while (std::chrono::steady_clock::now() - start < 2500ms && !session.finished() && !stalled(session)) {
       const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      session.pointer(640 + 6.0 * std::cos(3.0 * t), 360 + 6.0 * std::sin(3.0 * t));
+      const double x = 6.0 * std::cos(3.0 * t), y = 6.0 * std::sin(3.0 * t);
+      session.pointerMotion(x - lastX, y - lastY);
+      lastX = x;
+      lastY = y;
       session.frame();
       engaged = engaged || session.snapshot().engagement == haptics::Engagement::Engaged;
       std::this_thread::sleep_for(16ms);  // a 60 fps frame
@@ -85,12 +91,47 @@ TEST(PlaySessionTest, APointerFarFromTheMassPointDoesNotEngage) {
   PlaySessionDef def;
   PlaySession session(level, def);
   session.start();
-  session.pointer(640 + 200, 360);  // 5 cm off at 0.25 mm/px
+  session.pointerMotion(200, 0);  // 5 cm off at 0.25 mm/px
   session.click();
   std::this_thread::sleep_for(300ms);
   session.frame();
   EXPECT_EQ(session.snapshot().engagement, haptics::Engagement::Armed);
   EXPECT_GT(session.snapshot().proxyDistance, 0.04);
+}
+
+// The proxy is where the strokes put it: it starts on the mass point, moves
+// by the motion turned with the camera, and does not move on its own while
+// the hemisphere (and a camera following it) rolls away.
+TEST(PlaySessionTest, TheProxyMovesByTheStrokesAndStaysPutBetweenThem) {
+  script::LoadedLevel level = script::LevelLoader().loadFile(HEMIROLL_SOURCE_DIR "/levels/tutorial_01_tilt_and_return.lua");
+  PlaySessionDef def;
+  def.requestRealtime = false;
+  PlaySession session(level, def);
+  const render::Vec3d massPoint =
+      massPointPosition(level.def, Eigen::Map<const physics::ForceDrivenState>(session.snapshot().state.data()));
+  const haptics::Vec3 start = session.pointerScene();
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(start[i], massPoint[static_cast<std::size_t>(i)], 1e-12) << i;
+
+  const double metresPerStroke = 40.0 * def.pointer.metresPerPixel;  // device [m]; the level maps device to scene
+  session.pointerMotion(40.0, 0.0);  // right on the screen
+  haptics::Vec3 moved = session.pointerScene() - start;
+  EXPECT_GT(moved.x(), 0.0);
+  EXPECT_NEAR(moved.y(), 0.0, 1e-15);
+  const double scale = moved.x() / metresPerStroke;  // the level's workspace scale
+  EXPECT_GT(scale, 0.0);
+
+  session.setScreenYaw(std::numbers::pi / 2.0);  // an orbit camera looking along -x: screen right is +y
+  session.pointerMotion(40.0, 0.0);
+  moved = session.pointerScene() - start;
+  EXPECT_NEAR(moved.x(), scale * metresPerStroke, 1e-12);
+  EXPECT_NEAR(moved.y(), scale * metresPerStroke, 1e-12);
+
+  const haptics::Vec3 before = session.pointerScene();
+  session.start();
+  std::this_thread::sleep_for(100ms);  // the loop runs; no strokes
+  session.frame();
+  EXPECT_EQ(session.pointerScene(), before);
+  session.finish();
 }
 
 // The trial's replay log repeats it bit for bit through a ReplayDevice: the
@@ -106,9 +147,11 @@ TEST(PlaySessionTest, ATrialsReplayRepeatsItExactly) {
   session.start();
   session.click();
   const auto start = std::chrono::steady_clock::now();
+  double lastX = 0.0;
   while (std::chrono::steady_clock::now() - start < 800ms) {
     const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    session.pointer(640 + 8.0 * std::sin(4.0 * t), 360);
+    session.pointerMotion(8.0 * std::sin(4.0 * t) - lastX, 0.0);
+    lastX = 8.0 * std::sin(4.0 * t);
     session.frame();
     std::this_thread::sleep_for(10ms);
   }
