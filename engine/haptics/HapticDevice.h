@@ -40,6 +40,11 @@ class HapticDevice {
   virtual void sendForce(const Vec3& force) = 0;
   // nullptr while healthy, else a static sentence (no allocation on report).
   virtual const char* error() const = 0;
+  // Outside the servo loop: true once the device delivers samples, so that
+  // a loop may start on it (a bridge waits for its client's first state;
+  // its error() is brought up to date by read(), which a loop not yet
+  // started does not call).
+  virtual bool ready() const { return error() == nullptr; }
 };
 
 }  // namespace hemiroll::haptics

@@ -92,6 +92,7 @@ class UdpBridgeDevice final : public HapticDevice {
   udp::DecodeError lastDecodeError() const { return lastDecodeError_.load(std::memory_order_relaxed); }
   // Outside the loop: waits until a client has sent a good state.
   bool waitForClient(double timeout) const;
+  bool ready() const override { return waitForClient(0.0); }
 
  private:
   // What the receiver hands to the servo thread.

@@ -54,6 +54,7 @@ ReplayHeaderBytes encodeReplayHeader(const ReplayHeader& h) {
   putText(&b[96], kReplayLevelHashSize, h.levelHash);
   putU64(&b[224], h.commandCount);
   putU32(&b[232], static_cast<std::uint32_t>(kReplayCommandSize));
+  putText(&b[236], kReplayDeviceKindSize, h.deviceKind);
   return b;
 }
 
@@ -76,6 +77,8 @@ std::string decodeReplayHeader(const ReplayHeaderBytes& b, ReplayHeader& h) {
   h.softwareVersion = getText(&b[64], kReplaySoftwareVersionSize);
   h.levelHash = getText(&b[96], kReplayLevelHashSize);
   h.commandCount = getU64(&b[224]);
+  h.deviceKind = getText(&b[236], kReplayDeviceKindSize);
+  if (h.deviceKind.empty()) h.deviceKind = "mouse";
   return {};
 }
 

@@ -18,7 +18,9 @@
 //   levelHash       96 128  ASCII, NUL padded
 //   commandCount   224   8  u64, command records after the inputs
 //   commandSize    232   4  u32, 160
-//   reserved       236  20  zero
+//   deviceKind     236  16  ASCII, NUL padded ("" = mouse: the zeros of
+//                           logs written before the field existed)
+//   reserved       252   4  zero
 // input record (checksummed, then the command records)
 //   tick             0   8  u64 (consecutive)
 //   position         8  24  3 x f64, device frame [m]
@@ -56,6 +58,7 @@ inline constexpr std::size_t kReplayCommandSize = 160;
 inline constexpr std::uint32_t kReplayComplete = 1u;
 inline constexpr std::size_t kReplaySoftwareVersionSize = 32;
 inline constexpr std::size_t kReplayLevelHashSize = 128;
+inline constexpr std::size_t kReplayDeviceKindSize = 16;
 
 struct ReplayHeader {
   std::uint32_t formatVersion = kReplayFormatVersion;
@@ -68,6 +71,7 @@ struct ReplayHeader {
   std::uint64_t commandCount = 0;
   std::string softwareVersion;  // at most 31 characters
   std::string levelHash;        // at most 127 characters
+  std::string deviceKind;       // at most 15 characters; "" reads as "mouse"
 };
 
 using ReplayHeaderBytes = std::array<unsigned char, kReplayHeaderSize>;

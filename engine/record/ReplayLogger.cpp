@@ -58,8 +58,9 @@ ReplayLogger::ReplayLogger(const std::filesystem::path& path, const ReplayHeader
   h.checksum = kFnvOffset;
   h.commandCount = 0;
   if (h.softwareVersion.empty()) h.softwareVersion = softwareVersion();
-  if (h.softwareVersion.size() >= kReplaySoftwareVersionSize || h.levelHash.size() >= kReplayLevelHashSize)
-    throw RecordError(path.string() + ": software version or level hash too long for the replay header");
+  if (h.softwareVersion.size() >= kReplaySoftwareVersionSize || h.levelHash.size() >= kReplayLevelHashSize ||
+      h.deviceKind.size() >= kReplayDeviceKindSize)
+    throw RecordError(path.string() + ": software version, level hash or device kind too long for the replay header");
   impl_ = std::make_unique<Impl>(path, h, pollInterval);
   const ReplayHeaderBytes bytes = encodeReplayHeader(impl_->header);
   impl_->file.write(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));

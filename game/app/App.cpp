@@ -5,6 +5,7 @@
 
 #include <algorithm>
 
+#include "game/app/SettingsFile.h"
 #include "game/screens/TitleScreen.h"
 #include "game/view/AssetsDirectory.h"
 
@@ -37,7 +38,13 @@ App::App(const AppDef& def) : def_(def) {
   w.vsync = def.vsync;
   w.hidden = def.hidden;
   window_ = platform::Window::create(w);
-  settings_.vsync = def.vsync;
+  settingsFile_ = def.settingsFile.empty() ? (configDirectory() / "settings.json").string() : def.settingsFile;
+  LoadedSettings loaded = loadSettings(settingsFile_);
+  settings_ = loaded.settings;
+  for (const std::string& n : loaded.notes) notes_.push_back(n);
+  // --no-vsync (measuring) wins over the saved choice for this run.
+  settings_.vsync = settings_.vsync && def.vsync;
+  SDL_GL_SetSwapInterval(settings_.vsync ? 1 : 0);
   render::RendererDef r;
   r.assetsDir = findAssetsDirectory();
   if (r.assetsDir.empty()) r.assetsDir = "assets";
@@ -59,6 +66,11 @@ App::~App() {
   // while the context and the audio device still exist.
   screens_.reset(nullptr);
   screens_.apply();
+}
+
+void App::saveSettings() {
+  const std::string error = game::saveSettings(settingsFile_, settings_);
+  if (!error.empty() && std::find(notes_.begin(), notes_.end(), error) == notes_.end()) notes_.push_back(error);
 }
 
 void App::setVsync(bool on) {

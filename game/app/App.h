@@ -30,6 +30,7 @@ struct AppDef {
   bool hidden = false;              // tests and benchmarks: no visible window
   std::string levelsDir = "levels"; // the level select lists *.lua here
   std::string scoresFile;           // "" = dataDirectory()/scores.sqlite
+  std::string settingsFile;         // "" = configDirectory()/settings.json
   bool requestRealtime = true;      // SCHED_FIFO for the servo thread when permitted
 };
 
@@ -54,6 +55,9 @@ class App {
   Audio& audio() { return *audio_; }
   ScoreStore& scores() { return *scores_; }
   Settings& settings() { return settings_; }
+  // Writes the settings to their file now (the settings and research
+  // screens do on leaving); a failure becomes a note.
+  void saveSettings();
   const AppDef& def() const { return def_; }
   double fps() const { return clock_.medianFps(); }
   std::size_t frames() const { return clock_.frames(); }
@@ -72,6 +76,7 @@ class App {
   std::unique_ptr<ImGuiLayer> imgui_;
   std::unique_ptr<Audio> audio_;
   std::unique_ptr<ScoreStore> scores_;
+  std::string settingsFile_;
   Settings settings_;
   ScreenStack screens_;
   platform::FrameClock clock_;

@@ -1,6 +1,6 @@
 #pragma once
 // What the player sets on the settings and research screens. Held by the App
-// for the session (not yet saved to disk between runs).
+// and kept between runs in settings.json (SettingsFile.h).
 
 #include <optional>
 #include <string>
@@ -11,9 +11,11 @@
 namespace hemiroll::game {
 
 struct Settings {
-  // Input device. Only the mouse plays in the window so far; the others are
-  // listed by the settings screen with what they need.
+  // Input device: "mouse", "joystick" (SDL force feedback) or "udp" (a
+  // haptic device behind the UDP bridge, docs/UDP_BRIDGE.md).
   std::string device = "mouse";
+  int joystickIndex = 0;       // SDL joystick index
+  int udpPort = 47110;         // the bridge's port on 127.0.0.1
   // Force method and gains: the level's unless overridden.
   bool overrideCoupling = false;
   int method = 2;              // 0 M1, 1 M2, 2 M3 (the paper's), 3 visual only

@@ -18,54 +18,87 @@ physics::ForceDrivenState stateOf(const std::array<double, 12>& a) {
 
 PlaySession::PlaySession(script::LoadedLevel& level, const PlaySessionDef& def)
     : level_(level),
-      loopDef_(HeadlessTrial::loopDefFor(level.def, "mouse")),
+      loopDef_(HeadlessTrial::loopDefFor(level.def, def.device)),
       mapping_(def.pointer),
       ring_(std::make_unique<haptics::RecordRing>()),
+      deviceName_(def.device),
       judging_(level, nullptr, 10, /*faultsEndTrial=*/false) {
+  if (def.device == "mouse") {
+    auto mouse = std::make_unique<haptics::MouseDevice>(def.deviceOptions.mouse);
+    mouse_ = mouse.get();
+    device_ = std::move(mouse);
+  } else {
+    haptics::DeviceChoice choice = haptics::DeviceFactory().makeAndOpen(def.device, def.deviceOptions);
+    if (!choice.device) throw std::runtime_error(def.device + ": " + choice.error);
+    device_ = std::move(choice.device);
+  }
   loopDef_.requestRealtime = def.requestRealtime;
   loopDef_.recordRing = ring_.get();
   loopDef_.recordEvery = 1;  // the judge sees every tick
   if (def.coupling) loopDef_.coupling = *def.coupling;
   if (!def.replayFile.empty()) {
     try {
-      capture_ = std::make_unique<ReplayCapture>(def.replayFile, def.levelHash, loopDef_.period);
+      capture_ = std::make_unique<ReplayCapture>(def.replayFile, def.levelHash, loopDef_.period, def.device);
       capture_->attach(loopDef_);
     } catch (const std::exception& e) {
       capture_.reset();
       replayError_ = e.what();  // the trial goes on without a replay
     }
   }
-  loop_ = std::make_unique<haptics::ServoLoop>(loopDef_, device_);
+  loop_ = std::make_unique<haptics::ServoLoop>(loopDef_, *device_);
   initial_ = stateOf(loopDef_.initialState);
   snapshot_.state = loopDef_.initialState;
-  // The proxy starts on the mass point (the device origin is mapped to where
-  // a level's mass point starts, at its height), so that a click takes hold
-  // at once, without aiming or touching the wheel.
-  const render::Vec3d p = massPointPosition(level.def, initial_);
-  const double zDevice = (p[2] - loopDef_.mapping.offset.z()) / loopDef_.mapping.scale;
-  mapping_.wheel(zDevice / mapping_.def().wheelStep);
-  sendPointer(/*jump=*/true);
+  if (mouse_) {
+    // The proxy starts on the mass point (the device origin is mapped to
+    // where a level's mass point starts, at its height), so that a click
+    // takes hold at once, without aiming or touching the wheel.
+    const render::Vec3d p = massPointPosition(level.def, initial_);
+    const double zDevice = (p[2] - loopDef_.mapping.offset.z()) / loopDef_.mapping.scale;
+    mapping_.wheel(zDevice / mapping_.def().wheelStep);
+    sendPointer(/*jump=*/true);
+  }
 }
 
 PlaySession::~PlaySession() {
   if (!stopped_) loop_->stop();
+  device_->close();  // on this (the SDL) thread, after the loop let go of it
 }
 
 void PlaySession::start() {
-  started_ = std::chrono::steady_clock::now();
+  started_ = true;
+  startedAt_ = std::chrono::steady_clock::now();
+  startLoopWhenReady();
+}
+
+// The bridge says "no client yet" until its first good state; starting the
+// loop before that would trip its watchdog at once.
+bool PlaySession::startLoopWhenReady() {
+  if (loop_->running() || stopped_) return true;
+  if (!device_->ready()) {
+    const char* why = device_->error();
+    waitingFor_ = deviceName_ + ": " + (why ? why : "not ready");
+    return false;
+  }
+  waitingFor_.clear();
+  startedAt_ = std::chrono::steady_clock::now();
   judging_.start(initial_);
   if (capture_) capture_->start();
   if (!judging_.finished()) loop_->start();
+  return true;
 }
 
-void PlaySession::sendPointer(bool jump) { device_.setPointer(mapping_.position(), 0, jump); }
+void PlaySession::sendPointer(bool jump) {
+  if (mouse_) mouse_->setPointer(mapping_.position(), 0, jump);
+}
 
 void PlaySession::pointerMotion(double dx, double dy) {
+  if (!mouse_) return;
   mapping_.moveBy(dx, dy);
   sendPointer(false);
 }
 
 void PlaySession::wheel(double notches) {
+  if (!mouse_) return;
   mapping_.wheel(notches);
   sendPointer(false);
 }
@@ -104,6 +137,7 @@ void PlaySession::quit() { judging_.fail("quit by the player"); }
 
 bool PlaySession::frame() {
   if (stopped_) return false;
+  if (started_ && !startLoopWhenReady()) return true;
   judging_.drain(*ring_);
   if (!judging_.finished() && loop_->recordDropped() > 0)
     judging_.fail("the judge fell behind the servo loop (ticks dropped)");
@@ -121,7 +155,7 @@ TrialResult PlaySession::finish() {
   }
   if (!judging_.finished()) judging_.fail("quit by the player");
   TrialResult result = judging_.result(initial_);
-  result.wallTime = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+  result.wallTime = std::chrono::duration<double>(std::chrono::steady_clock::now() - startedAt_).count();
   return result;
 }
 

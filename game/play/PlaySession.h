@@ -1,12 +1,15 @@
 #pragma once
-// A human playing a level in real time with the mouse: the shape of
-// RealtimeTrial with MouseDevice instead of a bot.
-//   servo thread:  MouseDevice (the UI's latest pointer, lock-free) ->
+// A human playing a level in real time: the shape of RealtimeTrial with a
+// person's device instead of a bot: the mouse (MouseDevice), a
+// force-feedback joystick (SdlJoystickDevice) or a haptic device behind the
+// UDP bridge (UdpBridgeDevice), made by haptics::DeviceFactory.
+//   servo thread:  device (its latest sample, lock-free) ->
 //                  coupling -> physics -> safety -> snapshot + a RecordRow
 //                  of every tick into a lock-free ring;
-//   UI thread:     pointer motion -> PointerMapping -> MouseDevice (the
-//                  proxy moves by the mouse's strokes, turned with the
-//                  camera: PointerMapping.h says why not by its place);
+//   UI thread:     mouse only: pointer motion -> PointerMapping ->
+//                  MouseDevice (the proxy moves by the mouse's strokes,
+//                  turned with the camera: PointerMapping.h says why not by
+//                  its place);
 //                  once per frame: RingJudge drains the ring (every tick
 //                  judged, level callbacks at their rate), latest snapshot
 //                  for the renderer and the HUD.
@@ -14,8 +17,13 @@
 // loop starved, stale input) does not end the trial: the loop has already
 // taken the force off and stopped; fault() says which, and resume() clears
 // it and goes on (the player takes hold again). Engagement follows the loop's
-// rule: a click arms it, and it engages when the proxy reaches the mass
-// point; the force then ramps in (ServoSnapshot::rampScale).
+// rule: a click (or a key) arms it, and it engages when the proxy reaches
+// the mass point; the force then ramps in (ServoSnapshot::rampScale).
+//
+// A device that is open but not yet delivering (the bridge before its
+// client's first state) holds the start: the loop starts, and the trial's
+// clock with it, at the first frame() that finds the device ready, and
+// waitingFor() says what it waits for meanwhile.
 
 #include <chrono>
 #include <filesystem>
@@ -23,6 +31,7 @@
 #include <optional>
 
 #include "engine/haptics/MouseDevice.h"
+#include "engine/haptics/devices/DeviceFactory.h"
 #include "engine/haptics/PointerMapping.h"
 #include "engine/haptics/ServoLoop.h"
 #include "game/play/ReplayCapture.h"
@@ -31,6 +40,8 @@
 namespace hemiroll::game {
 
 struct PlaySessionDef {
+  std::string device = "mouse";        // "mouse", "joystick" or "udp" (DeviceFactory names)
+  haptics::DeviceOptions deviceOptions;  // the joystick's index, the bridge's port, ...
   haptics::PointerMappingDef pointer;
   bool requestRealtime = true;         // SCHED_FIFO for the servo thread when permitted
   std::optional<physics::CouplingDef> coupling;  // the player's settings; none = the level's
@@ -43,12 +54,19 @@ struct PlaySessionDef {
 class PlaySession {
  public:
   // `level` must outlive the session. Throws std::invalid_argument for a
-  // level the loop refuses (its message names the field).
+  // level the loop refuses (its message names the field), and
+  // std::runtime_error "<device>: <why>" for a device that cannot be opened.
+  // Constructed on the thread that owns SDL (the joystick opens there).
   PlaySession(script::LoadedLevel& level, const PlaySessionDef& def);
   ~PlaySession();
 
-  void start();  // on_start, then the servo thread
-  // UI thread: the pointer moved by (dx, dy) [window px].
+  void start();  // on_start, then the servo thread (once the device is ready)
+  // "" once the loop runs, else what the start waits for (a sentence).
+  const std::string& waitingFor() const { return waitingFor_; }
+  const std::string& deviceName() const { return deviceName_; }
+  const haptics::HapticDevice& device() const { return *device_; }
+  // UI thread, mouse only (ignored for other devices): the pointer moved by
+  // (dx, dy) [window px].
   void pointerMotion(double dx, double dy);
   // The heading of screen right [rad] (render::screenRightHeading of the camera).
   void setScreenYaw(double radians) { mapping_.setScreenYaw(radians); }
@@ -85,6 +103,7 @@ class PlaySession {
  private:
   void post(haptics::ServoCommandKind kind);
   void sendPointer(bool jump);
+  bool startLoopWhenReady();
 
   script::LoadedLevel& level_;
   haptics::ServoLoopDef loopDef_;
@@ -92,14 +111,17 @@ class PlaySession {
   std::unique_ptr<haptics::RecordRing> ring_;
   std::unique_ptr<ReplayCapture> capture_;
   std::string replayError_;
-  haptics::MouseDevice device_;
+  std::string deviceName_;
+  std::unique_ptr<haptics::HapticDevice> device_;
+  haptics::MouseDevice* mouse_ = nullptr;  // device_ when it is the mouse
   std::unique_ptr<haptics::ServoLoop> loop_;
   RingJudge judging_;
   haptics::ServoSnapshot snapshot_;
   physics::ForceDrivenState initial_;
-  bool paused_ = false, stopped_ = false;
+  std::string waitingFor_;
+  bool paused_ = false, stopped_ = false, started_ = false;
   std::uint64_t faultClearedBy_ = 0;  // the tick by which a ClearFault has been applied
-  std::chrono::steady_clock::time_point started_;
+  std::chrono::steady_clock::time_point startedAt_;
 };
 
 }  // namespace hemiroll::game

@@ -21,7 +21,8 @@ std::string levelFileHash(const std::string& path) {
   return text;
 }
 
-ReplayCapture::ReplayCapture(const std::filesystem::path& file, const std::string& levelHash, double dt)
+ReplayCapture::ReplayCapture(const std::filesystem::path& file, const std::string& levelHash, double dt,
+                             const std::string& deviceKind)
     : file_(file),
       inputs_(std::make_unique<haptics::InputRing>()),
       commands_(std::make_unique<haptics::CommandRing>()) {
@@ -32,6 +33,7 @@ ReplayCapture::ReplayCapture(const std::filesystem::path& file, const std::strin
   header.dt = dt;
   header.softwareVersion = "hemiroll play";
   header.levelHash = levelHash;
+  header.deviceKind = deviceKind;
   logger_ = std::make_unique<record::ReplayLogger>(file, header);
 }
 

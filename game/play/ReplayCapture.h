@@ -25,7 +25,8 @@ class ReplayCapture {
  public:
   // Creates the log file (an existing one is replaced). Throws
   // record::RecordError naming the file.
-  ReplayCapture(const std::filesystem::path& file, const std::string& levelHash, double dt);
+  ReplayCapture(const std::filesystem::path& file, const std::string& levelHash, double dt,
+                const std::string& deviceKind = "mouse");
   ~ReplayCapture();
 
   // Points the loop's input and command rings here (before constructing it).

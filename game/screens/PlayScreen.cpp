@@ -25,6 +25,9 @@ void PlayScreen::begin() {
   try {
     level_ = script::LevelLoader().loadFile(levelPath_);
     PlaySessionDef def;
+    def.device = app_.settings().device;
+    def.deviceOptions.joystick.index = app_.settings().joystickIndex;
+    def.deviceOptions.udp.port = static_cast<std::uint16_t>(app_.settings().udpPort);
     def.requestRealtime = app_.def().requestRealtime;
     def.coupling = couplingFor(app_.settings(), level_.def.coupling);
     // A replay repeats the trial only on the level's own loop definition:
@@ -56,7 +59,7 @@ void PlayScreen::enter() {
     begin();
   }
   // The menus above this screen (pause, results) need the system cursor back.
-  if (session_) app_.window().capturePointer(true);
+  if (session_ && session_->deviceName() == "mouse") app_.window().capturePointer(true);
 }
 
 void PlayScreen::leave() { app_.window().capturePointer(false); }
@@ -94,11 +97,15 @@ void PlayScreen::input(const platform::InputEvent& e) {
     case InputType::FocusLost: pause(); break;
     case InputType::KeyDown:
       if (e.key == platform::Key::Escape && !e.repeat) pause();
+      // Take hold from the keyboard, as the paper's subjects did (Sec. 4):
+      // the hand stays on the device.
+      if (e.key == platform::Key::Space && !e.repeat) session_->click();
       if (e.key == platform::Key::Tab && !e.repeat) {
         auto& camera = app_.settings().camera;
         camera = camera == render::CameraMode::Follow ? render::CameraMode::Top
                  : camera == render::CameraMode::Top  ? render::CameraMode::Orbit
                                                       : render::CameraMode::Follow;
+        app_.saveSettings();
       }
       break;
     default: break;
@@ -177,6 +184,17 @@ void PlayScreen::paint() {
   const platform::PixelSize d = app_.window().drawableSize();
   app_.renderer().render(scene_, d.width, d.height);
   hud_.draw(app_.fps());
+  if (!session_->waitingFor().empty()) {
+    beginCentredPanel("waiting for the device", 640);
+    ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1), "Waiting for the %s", session_->deviceName().c_str());
+    ImGui::TextWrapped("%s", session_->waitingFor().c_str());
+    if (session_->deviceName() == "udp")
+      ImGui::TextWrapped("Start the device's bridge program, or the reference client: "
+                         "hemiroll-haptic-client --port %d (docs/UDP_BRIDGE.md). The trial starts with its first state.",
+                         app_.settings().udpPort);
+    ImGui::TextDisabled("Esc: pause, and quit from there");
+    ImGui::End();
+  }
 }
 
 }  // namespace hemiroll::game

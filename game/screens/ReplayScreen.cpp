@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "engine/haptics/MouseDevice.h"
+#include "engine/haptics/devices/DeviceFactory.h"
 #include "engine/physics/StateLayout.h"
 #include "game/app/App.h"
 #include "game/play/HeadlessTrial.h"
@@ -28,10 +28,16 @@ void ReplayScreen::enter() {
       return;
     }
     level_ = script::LevelLoader().loadFile(levelPath_);
-    haptics::ServoLoopDef def = HeadlessTrial::loopDefFor(level_.def, "mouse");
+    const std::string& kind = log_.header.deviceKind;
+    const std::optional<haptics::DeviceSpec> spec = haptics::DeviceFactory().specOf(kind);
+    if (!spec) {
+      error_ = replayFile_ + " was played with a device this program does not know: '" + kind + "'";
+      return;
+    }
+    haptics::ServoLoopDef def = HeadlessTrial::loopDefFor(level_.def, kind);
     def.period = log_.header.dt;
-    // The mouse's spec, as recorded: the safety layer clamps to it.
-    device_ = std::make_unique<haptics::ReplayDevice>(log_.inputs, haptics::MouseDeviceDef{}.spec);
+    // The played device's spec: the safety layer clamps to it, as it did.
+    device_ = std::make_unique<haptics::ReplayDevice>(log_.inputs, *spec);
     loop_ = std::make_unique<haptics::ServoLoop>(def, *device_);
     snapshot_.state = def.initialState;
   } catch (const std::exception& e) {

@@ -16,6 +16,8 @@ void ResearchScreen::enter() {
   std::copy_n(p.begin(), std::min(p.size(), participant_.size() - 1), participant_.begin());
 }
 
+void ResearchScreen::leave() { app_.saveSettings(); }
+
 void ResearchScreen::input(const platform::InputEvent& e) {
   if (e.type == platform::InputType::KeyDown && e.key == platform::Key::Escape && !e.repeat) app_.screens().pop();
 }

@@ -15,6 +15,7 @@ class ResearchScreen final : public Screen {
   using Screen::Screen;
   const char* name() const override { return "research"; }
   void enter() override;
+  void leave() override;
   void input(const platform::InputEvent& e) override;
   void paint() override;
 

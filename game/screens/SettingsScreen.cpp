@@ -2,11 +2,15 @@
 
 #include <imgui.h>
 
+#include <algorithm>
+
 #include "engine/physics/ForceCoupling.h"
 #include "game/app/App.h"
 #include "game/screens/ScreenLayout.h"
 
 namespace hemiroll::game {
+
+void SettingsScreen::leave() { app_.saveSettings(); }
 
 void SettingsScreen::input(const platform::InputEvent& e) {
   if (e.type == platform::InputType::KeyDown && e.key == platform::Key::Escape && !e.repeat) app_.screens().pop();
@@ -21,8 +25,24 @@ void SettingsScreen::paint() {
 
   ImGui::Separator();
   ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1), "Device");
-  ImGui::TextWrapped("mouse (the window plays with the mouse; joystick and udp devices play through "
-                     "`hemiroll run` and the haptic client for now)");
+  static constexpr const char* kDevices[] = {"mouse", "joystick", "udp"};
+  for (int i = 0; i < 3; ++i) {
+    if (i > 0) ImGui::SameLine();
+    if (ImGui::RadioButton(kDevices[i], s.device == kDevices[i])) s.device = kDevices[i];
+  }
+  if (s.device == "mouse") {
+    ImGui::TextDisabled("no force feedback: the coupling force is drawn as an arrow");
+  } else if (s.device == "joystick") {
+    ImGui::InputInt("joystick index", &s.joystickIndex);
+    s.joystickIndex = std::clamp(s.joystickIndex, 0, 63);
+    ImGui::TextDisabled("an SDL force-feedback joystick or wheel (constant-force effect)");
+  } else {
+    ImGui::InputInt("udp port", &s.udpPort);
+    s.udpPort = std::clamp(s.udpPort, 1, 65535);
+    ImGui::TextWrapped("a haptic device behind the UDP bridge on 127.0.0.1:%d: start its bridge program "
+                       "(or hemiroll-haptic-client); the trial starts with its first state (docs/UDP_BRIDGE.md)",
+                       s.udpPort);
+  }
 
   ImGui::Separator();
   ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1), "Force method");

@@ -2,7 +2,8 @@
 // Settings: device, force method and gains (the level's, or the player's
 // override), keys (shown), audio volume, graphics (vsync, camera, zoom).
 // Changes apply at once (volume, vsync) or from the next trial (device,
-// coupling, camera). Escape goes back.
+// coupling, camera), and are saved (settings.json) when the screen is left.
+// Escape goes back.
 
 #include "game/screens/Screen.h"
 
@@ -12,6 +13,7 @@ class SettingsScreen final : public Screen {
  public:
   using Screen::Screen;
   const char* name() const override { return "settings"; }
+  void leave() override;
   void input(const platform::InputEvent& e) override;
   void paint() override;
 };

@@ -39,6 +39,22 @@ TEST(ReplayFormatTest, HeaderBytesAreLittleEndianAtTheDocumentedOffsets) {
   EXPECT_EQ(back.checksum, h.checksum);
   EXPECT_EQ(back.dt, h.dt);
   EXPECT_EQ(back.levelHash, "abc");
+  EXPECT_EQ(back.deviceKind, "mouse");  // none given: the zeros read as the mouse
+}
+
+TEST(ReplayFormatTest, DeviceKindSitsInTheOnceReservedBytes) {
+  ReplayHeader h;
+  h.deviceKind = "udp";
+  ReplayHeaderBytes b = encodeReplayHeader(h);
+  EXPECT_EQ(std::string(reinterpret_cast<const char*>(&b[236])), "udp");
+  for (std::size_t i = 252; i < kReplayHeaderSize; ++i) EXPECT_EQ(b[i], 0) << i;
+  ReplayHeader back;
+  ASSERT_EQ(decodeReplayHeader(b, back), "");
+  EXPECT_EQ(back.deviceKind, "udp");
+  // A log written before the field existed has zeros there: the mouse.
+  for (std::size_t i = 236; i < 252; ++i) b[i] = 0;
+  ASSERT_EQ(decodeReplayHeader(b, back), "");
+  EXPECT_EQ(back.deviceKind, "mouse");
 }
 
 TEST(ReplayFormatTest, RecordsRoundTripBitForBit) {

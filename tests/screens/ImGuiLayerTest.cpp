@@ -32,6 +32,7 @@ TEST(ImGuiLayerTest, APressAndReleaseInOneFrameClickAButton) {
   def.hidden = true;
   def.vsync = false;
   def.scoresFile = (dir.path() / "s.sqlite").string();
+  def.settingsFile = (dir.path() / "settings.json").string();  // not the user's
   def.levelsDir = HEMIROLL_SOURCE_DIR "/levels";
   App app(def);
   app.inject(pointer(platform::InputType::PointerMove, 5, 5));  // away from every button

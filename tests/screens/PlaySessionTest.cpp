@@ -2,18 +2,21 @@
 
 #include <gtest/gtest.h>
 
+#include <csignal>
 #include <chrono>
 #include <cmath>
 #include <numbers>
 #include <thread>
 
 #include "engine/haptics/ReplayDevice.h"
+#include "engine/haptics/UdpBridgeDevice.h"
 #include "engine/physics/StateLayout.h"
 #include "engine/record/ReplayReader.h"
 #include "engine/record/ReplayRunner.h"
 #include "engine/script/LevelLoader.h"
 #include "game/play/ReplayCapture.h"
 #include "game/view/RenderSceneBuilder.h"
+#include "tests/support/ChildProcess.h"
 #include "tests/support/TempDirectory.h"
 
 namespace hemiroll::game {
@@ -132,6 +135,80 @@ TEST(PlaySessionTest, TheProxyMovesByTheStrokesAndStaysPutBetweenThem) {
   session.frame();
   EXPECT_EQ(session.pointerScene(), before);
   session.finish();
+}
+
+// A haptic device behind the UDP bridge plays in the window as the mouse
+// does: the session waits for the device's first state (the loop does not
+// run, so its watchdog cannot trip), starts with it, engages on a click with
+// the reference client's hand held still on the mass point, renders force
+// back, and a client that goes away is a safety stop, not a crash.
+TEST(PlaySessionTest, AUdpDeviceWaitsForItsClientThenPlays) {
+  script::LoadedLevel level = script::LevelLoader().loadFile(HEMIROLL_SOURCE_DIR "/levels/tutorial_01_tilt_and_return.lua");
+  PlaySessionDef def;
+  def.device = "udp";
+  def.deviceOptions.udp.port = 0;  // any free port
+  PlaySession session(level, def);
+  const auto* bridge = dynamic_cast<const haptics::UdpBridgeDevice*>(&session.device());
+  ASSERT_NE(bridge, nullptr);
+  session.start();
+  session.frame();
+  EXPECT_NE(session.waitingFor(), "");  // no client yet
+  std::this_thread::sleep_for(50ms);
+  session.frame();
+  EXPECT_EQ(session.snapshot().tick, 0u);
+
+  // The client's hand rests on the mass point (device coordinates of the
+  // level's udp mapping), as a person's would before taking hold.
+  const haptics::ServoLoopDef loopDef = HeadlessTrial::loopDefFor(level.def, "udp");
+  const render::Vec3d p = massPointPosition(level.def, level.def.initial);
+  std::string centre;
+  for (int i = 0; i < 3; ++i)
+    centre += (i ? "," : "") + std::to_string((p[static_cast<std::size_t>(i)] - loopDef.mapping.offset[i]) / loopDef.mapping.scale);
+  test::ChildProcess client(HEMIROLL_HAPTIC_CLIENT,
+                            {"--port", std::to_string(bridge->port()), "--duration", "5", "--centre", centre});
+  const auto start = std::chrono::steady_clock::now();
+  while (!session.waitingFor().empty() && std::chrono::steady_clock::now() - start < 3s) {
+    session.frame();
+    std::this_thread::sleep_for(5ms);
+  }
+  ASSERT_EQ(session.waitingFor(), "") << "the client's first state never arrived";
+  session.click();
+  bool engaged = false;
+  const auto played = std::chrono::steady_clock::now();
+  while (std::chrono::steady_clock::now() - played < 1s && session.fault() == haptics::SafetyFault::None) {
+    session.frame();
+    engaged = engaged || session.snapshot().engagement == haptics::Engagement::Engaged;
+    std::this_thread::sleep_for(10ms);
+  }
+  EXPECT_GT(session.snapshot().time, 0.3);
+  if (session.fault() == haptics::SafetyFault::LoopOverrun) GTEST_SKIP() << "the servo thread was starved";
+  EXPECT_EQ(session.fault(), haptics::SafetyFault::None);
+  EXPECT_TRUE(engaged);
+
+  client.signal(SIGKILL);
+  client.wait();
+  const auto lost = std::chrono::steady_clock::now();
+  while (session.fault() == haptics::SafetyFault::None && std::chrono::steady_clock::now() - lost < 2s) {
+    session.frame();
+    std::this_thread::sleep_for(10ms);
+  }
+  EXPECT_NE(session.fault(), haptics::SafetyFault::None);  // the bridge's watchdog: force off at once
+  EXPECT_FALSE(session.finished());                       // a person's trial pauses, it does not end
+  session.finish();
+}
+
+// A device that cannot be opened is one sentence naming it.
+TEST(PlaySessionTest, AMissingJoystickIsASentence) {
+  script::LoadedLevel level = script::LevelLoader().loadFile(HEMIROLL_SOURCE_DIR "/levels/tutorial_01_tilt_and_return.lua");
+  PlaySessionDef def;
+  def.device = "joystick";
+  def.deviceOptions.joystick.index = 63;  // none here
+  try {
+    PlaySession session(level, def);
+    FAIL() << "opened a joystick that is not there";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("joystick: ", 0), 0u) << e.what();
+  }
 }
 
 // The trial's replay log repeats it bit for bit through a ReplayDevice: the

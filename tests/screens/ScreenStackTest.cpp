@@ -34,6 +34,7 @@ TEST(ScreenStackTest, ChangesWaitForApplyAndCallTheHooksInOrder) {
   AppDef def;
   def.hidden = true;
   def.scoresFile = (dir.path() / "s.sqlite").string();
+  def.settingsFile = (dir.path() / "settings.json").string();  // not the user's
   App app(def);  // its own stack holds the title; this test uses a fresh one
   std::vector<std::string> log;
   ScreenStack stack;
@@ -69,6 +70,7 @@ TEST(ScreenStackTest, TheAppStartsOnTheTitleAndQuitsOnEscape) {
   AppDef def;
   def.hidden = true;
   def.scoresFile = (dir.path() / "s.sqlite").string();
+  def.settingsFile = (dir.path() / "settings.json").string();  // not the user's
   App app(def);
   EXPECT_STREQ(app.topScreen(), "title");
   EXPECT_TRUE(app.frame());

@@ -48,6 +48,7 @@ TEST(ScreenTourTest, TitleLevelsPlayPauseResultsWithSyntheticInput) {
   def.vsync = false;
   def.levelsDir = (dir.path() / "levels").string();
   def.scoresFile = (dir.path() / "scores.sqlite").string();
+  def.settingsFile = (dir.path() / "settings.json").string();  // not the user's
   setenv("HEMIROLL_DATA_DIR", dir.path().c_str(), 1);  // replays go here
   App app(def);
   ScreenTourDef tour;

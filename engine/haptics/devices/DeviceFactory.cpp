@@ -33,6 +33,12 @@ void DeviceFactory::add(const std::string& name, const std::string& description,
   entries_.push_back({name, description, std::move(make)});
 }
 
+std::optional<DeviceSpec> DeviceFactory::specOf(const std::string& name, const DeviceOptions& options) const {
+  const DeviceChoice c = make(name, options);
+  if (!c.device) return std::nullopt;
+  return c.device->spec();
+}
+
 DeviceChoice DeviceFactory::make(const std::string& name, const DeviceOptions& options) const {
   DeviceChoice c;
   for (const Entry& e : entries_) {

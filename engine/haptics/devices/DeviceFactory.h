@@ -12,6 +12,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,11 @@ class DeviceFactory {
   DeviceChoice make(const std::string& name, const DeviceOptions& options = {}) const;
   // make() then open(); the device's own error() sentence when open fails.
   DeviceChoice makeAndOpen(const std::string& name, const DeviceOptions& options = {}) const;
+
+  // The spec a device of that name would have with these options, without
+  // opening it (a replay of its trial clamps to the same limits); nullopt
+  // for an unknown name.
+  std::optional<DeviceSpec> specOf(const std::string& name, const DeviceOptions& options = {}) const;
 
   std::vector<std::string> names() const;
   // One line per device: name, description, and its spec with units.

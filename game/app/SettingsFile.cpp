@@ -1,0 +1,177 @@
+#include "game/app/SettingsFile.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdlib>
+#include <ctime>
+
+#include "engine/record/DurableFile.h"
+
+namespace hemiroll::game {
+
+namespace {
+
+using Json = nlohmann::json;
+
+constexpr const char* kMethods[] = {"M1", "M2", "M3", "visual"};
+constexpr const char* kCameras[] = {"follow", "orbit", "top"};
+constexpr const char* kDevices[] = {"mouse", "joystick", "udp"};
+
+template <std::size_t N>
+int indexOf(const char* const (&names)[N], const std::string& name) {
+  for (std::size_t i = 0; i < N; ++i)
+    if (name == names[i]) return static_cast<int>(i);
+  return -1;
+}
+
+template <std::size_t N>
+std::string choices(const char* const (&names)[N]) {
+  std::string out;
+  for (std::size_t i = 0; i < N; ++i) out += (i == 0 ? "'" : i + 1 == N ? " or '" : ", '") + std::string(names[i]) + "'";
+  return out;
+}
+
+// Reads each key into the settings when it is present and good; a bad one
+// keeps the default and adds a note naming it.
+class Reader {
+ public:
+  Reader(const Json& json, const std::filesystem::path& file, std::vector<std::string>& notes)
+      : json_(json), file_(file.string()), notes_(notes) {}
+
+  void number(const char* key, double& target, double min, double max, const char* what) {
+    const Json* v = find(key);
+    if (!v) return;
+    if (!v->is_number() || !std::isfinite(v->get<double>()) || v->get<double>() < min || v->get<double>() > max)
+      return bad(key, what);
+    target = v->get<double>();
+  }
+  void integer(const char* key, int& target, int min, int max, const char* what) {
+    const Json* v = find(key);
+    if (!v) return;
+    if (!v->is_number_integer() || v->get<long long>() < min || v->get<long long>() > max) return bad(key, what);
+    target = v->get<int>();
+  }
+  void boolean(const char* key, bool& target) {
+    const Json* v = find(key);
+    if (!v) return;
+    if (!v->is_boolean()) return bad(key, "true or false");
+    target = v->get<bool>();
+  }
+  template <std::size_t N>
+  void choice(const char* key, const char* const (&names)[N], int& target) {
+    const Json* v = find(key);
+    if (!v) return;
+    const int i = v->is_string() ? indexOf(names, v->get<std::string>()) : -1;
+    if (i < 0) return bad(key, choices(names));
+    target = i;
+  }
+  void identifier(const char* key, std::string& target) {
+    const Json* v = find(key);
+    if (!v) return;
+    if (!v->is_string() || !isIdentifier(v->get<std::string>()))
+      return bad(key, "an id of letters, digits, '-' and '_'");
+    target = v->get<std::string>();
+  }
+
+ private:
+  static bool isIdentifier(const std::string& s) {
+    if (s.empty() || s.size() > 64) return false;
+    for (char c : s)
+      if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_') return false;
+    return true;
+  }
+  const Json* find(const char* key) const {
+    const auto it = json_.find(key);
+    return it == json_.end() ? nullptr : &*it;
+  }
+  void bad(const char* key, const std::string& what) {
+    notes_.push_back(file_ + ": '" + key + "' must be " + what + "; kept the default");
+  }
+
+  const Json& json_;
+  std::string file_;
+  std::vector<std::string>& notes_;
+};
+
+}  // namespace
+
+std::filesystem::path configDirectory() {
+  if (const char* d = std::getenv("HEMIROLL_CONFIG_DIR"); d && *d) return d;
+  if (const char* x = std::getenv("XDG_CONFIG_HOME"); x && *x) return std::filesystem::path(x) / "hemiroll";
+  if (const char* h = std::getenv("HOME"); h && *h) return std::filesystem::path(h) / ".config/hemiroll";
+  return std::filesystem::path(".hemiroll");
+}
+
+LoadedSettings loadSettings(const std::filesystem::path& file) {
+  LoadedSettings out;
+  std::error_code ec;
+  if (!std::filesystem::exists(file, ec)) return out;
+  Json json;
+  try {
+    json = Json::parse(record::readWholeFile(file));
+  } catch (const std::exception& e) {
+    json = nullptr;
+  }
+  if (!json.is_object()) {
+    // Keep it for the player to look at; start from the defaults.
+    const std::filesystem::path aside = file.string() + ".unreadable-" + std::to_string(std::time(nullptr));
+    std::filesystem::rename(file, aside, ec);
+    out.notes.push_back("the settings file " + file.string() + " is not a JSON object; " +
+                        (ec ? std::string("it was left in place") : "moved aside to " + aside.string()) +
+                        " and the defaults are used");
+    return out;
+  }
+  Settings& s = out.settings;
+  Reader r(json, file, out.notes);
+  int device = indexOf(kDevices, s.device);
+  r.choice("device", kDevices, device);
+  s.device = kDevices[device];
+  r.integer("udp_port", s.udpPort, 1, 65535, "a port in 1..65535");
+  r.integer("joystick_index", s.joystickIndex, 0, 63, "a joystick index in 0..63");
+  r.boolean("override_coupling", s.overrideCoupling);
+  r.choice("method", kMethods, s.method);
+  r.number("stiffness_N_per_m", s.stiffness, 1.0, 5000.0, "a stiffness in 1..5000 N/m");
+  r.number("damping_N_s_per_m", s.damping, 0.0, 100.0, "a damping in 0..100 N s/m");
+  r.number("alpha", s.alpha, 0.1, 10.0, "an alpha in 0.1..10");
+  r.number("volume", s.volume, 0.0, 1.0, "a volume in 0..1");
+  r.boolean("vsync", s.vsync);
+  int camera = static_cast<int>(s.camera);
+  r.choice("camera", kCameras, camera);
+  s.camera = static_cast<render::CameraMode>(camera);
+  r.number("zoom", s.zoom, 0.25, 8.0, "a zoom in 0.25..8");
+  r.identifier("participant", s.participant);
+  return out;
+}
+
+std::string settingsJson(const Settings& s) {
+  Json json = Json::object();
+  json["version"] = 1;
+  json["device"] = s.device;
+  json["udp_port"] = s.udpPort;
+  json["joystick_index"] = s.joystickIndex;
+  json["override_coupling"] = s.overrideCoupling;
+  json["method"] = kMethods[s.method >= 0 && s.method < 4 ? s.method : 2];
+  json["stiffness_N_per_m"] = s.stiffness;
+  json["damping_N_s_per_m"] = s.damping;
+  json["alpha"] = s.alpha;
+  json["volume"] = s.volume;
+  json["vsync"] = s.vsync;
+  json["camera"] = kCameras[static_cast<int>(s.camera)];
+  json["zoom"] = s.zoom;
+  json["participant"] = s.participant;
+  return json.dump(2) + "\n";
+}
+
+std::string saveSettings(const std::filesystem::path& file, const Settings& settings) {
+  try {
+    std::error_code ec;
+    std::filesystem::create_directories(file.parent_path(), ec);
+    record::writeFileAtomically(file, settingsJson(settings));
+    return "";
+  } catch (const std::exception& e) {
+    return std::string("settings not saved: ") + e.what();
+  }
+}
+
+}  // namespace hemiroll::game

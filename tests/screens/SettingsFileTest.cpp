@@ -1,0 +1,110 @@
+#include "game/app/SettingsFile.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+
+#include "tests/support/TempDirectory.h"
+
+namespace hemiroll::game {
+namespace {
+
+using ::testing::HasSubstr;
+
+TEST(SettingsFileTest, AMissingFileGivesTheDefaultsAndNoNote) {
+  test::TempDirectory dir;
+  const LoadedSettings loaded = loadSettings(dir.path() / "settings.json");
+  EXPECT_TRUE(loaded.notes.empty());
+  EXPECT_EQ(settingsJson(loaded.settings), settingsJson(Settings{}));
+}
+
+TEST(SettingsFileTest, EveryFieldRoundTrips) {
+  test::TempDirectory dir;
+  Settings s;
+  s.device = "udp";
+  s.udpPort = 50000;
+  s.joystickIndex = 2;
+  s.overrideCoupling = true;
+  s.method = 0;
+  s.stiffness = 123.25;
+  s.damping = 3.5;
+  s.alpha = 1.5;
+  s.volume = 0.125;
+  s.vsync = false;
+  s.camera = render::CameraMode::Top;
+  s.zoom = 1.75;
+  s.participant = "P-07";
+  const auto file = dir.path() / "nested" / "settings.json";
+  ASSERT_EQ(saveSettings(file, s), "");
+  const LoadedSettings back = loadSettings(file);
+  EXPECT_TRUE(back.notes.empty());
+  EXPECT_EQ(settingsJson(back.settings), settingsJson(s));
+  EXPECT_EQ(back.settings.stiffness, 123.25);
+  EXPECT_EQ(back.settings.camera, render::CameraMode::Top);
+  EXPECT_EQ(back.settings.participant, "P-07");
+  // SI units in the key names.
+  EXPECT_THAT(settingsJson(s), HasSubstr("\"stiffness_N_per_m\": 123.25"));
+}
+
+// One bad key keeps its default and is named; the good ones still load.
+TEST(SettingsFileTest, ABadValueKeepsItsDefaultAndIsNamed) {
+  test::TempDirectory dir;
+  const std::string file = dir.write("settings.json",
+                                     R"({"zoom": -2, "camera": "side", "volume": 0.25, "device": "phantom",
+                                         "participant": "../etc", "udp_port": 70000, "vsync": "yes",
+                                         "stiffness_N_per_m": 1e30})");
+  const LoadedSettings loaded = loadSettings(file);
+  EXPECT_EQ(loaded.settings.volume, 0.25);
+  EXPECT_EQ(loaded.settings.zoom, Settings{}.zoom);
+  EXPECT_EQ(loaded.settings.camera, Settings{}.camera);
+  EXPECT_EQ(loaded.settings.device, "mouse");
+  EXPECT_EQ(loaded.settings.participant, Settings{}.participant);
+  EXPECT_EQ(loaded.settings.udpPort, Settings{}.udpPort);
+  EXPECT_EQ(loaded.settings.vsync, Settings{}.vsync);
+  std::string all;
+  for (const std::string& n : loaded.notes) all += n + "\n";
+  EXPECT_EQ(loaded.settings.stiffness, Settings{}.stiffness);
+  for (const char* key : {"'zoom'", "'camera'", "'device'", "'participant'", "'udp_port'", "'vsync'",
+                          "'stiffness_N_per_m'"})
+    EXPECT_THAT(all, HasSubstr(key));
+  EXPECT_THAT(all, HasSubstr("'follow', 'orbit' or 'top'"));
+}
+
+TEST(SettingsFileTest, AFileThatIsNotJsonIsMovedAsideNotDeleted) {
+  test::TempDirectory dir;
+  const std::string file = dir.write("settings.json", "{ zoom: 2");
+  const LoadedSettings loaded = loadSettings(file);
+  ASSERT_EQ(loaded.notes.size(), 1u);
+  EXPECT_THAT(loaded.notes[0], HasSubstr("moved aside"));
+  EXPECT_FALSE(std::filesystem::exists(file));
+  int aside = 0;
+  for (const auto& e : std::filesystem::directory_iterator(dir.path()))
+    aside += e.path().filename().string().rfind("settings.json.unreadable-", 0) == 0;
+  EXPECT_EQ(aside, 1);
+  EXPECT_EQ(settingsJson(loaded.settings), settingsJson(Settings{}));
+}
+
+TEST(SettingsFileTest, AnUnwritableDirectoryIsASentenceNotACrash) {
+  test::TempDirectory dir;
+  const std::string blocker = dir.write("file", "x");  // a file where a directory would go
+  const std::string error = saveSettings(std::filesystem::path(blocker) / "settings.json", Settings{});
+  EXPECT_THAT(error, HasSubstr("settings not saved"));
+}
+
+TEST(SettingsFileTest, ConfigDirectoryFollowsXdg) {
+  const char* savedOwn = std::getenv("HEMIROLL_CONFIG_DIR");
+  const char* savedXdg = std::getenv("XDG_CONFIG_HOME");
+  const std::string own = savedOwn ? savedOwn : "", xdg = savedXdg ? savedXdg : "";
+  setenv("HEMIROLL_CONFIG_DIR", "/some/where", 1);
+  EXPECT_EQ(configDirectory(), "/some/where");
+  unsetenv("HEMIROLL_CONFIG_DIR");
+  setenv("XDG_CONFIG_HOME", "/xdg", 1);
+  EXPECT_EQ(configDirectory(), "/xdg/hemiroll");
+  if (savedOwn) setenv("HEMIROLL_CONFIG_DIR", own.c_str(), 1);
+  if (savedXdg) setenv("XDG_CONFIG_HOME", xdg.c_str(), 1);
+  else unsetenv("XDG_CONFIG_HOME");
+}
+
+}  // namespace
+}  // namespace hemiroll::game
