@@ -55,6 +55,15 @@ struct ZoneMarker {
   Vec2d min{}, max{};        // box corners [m]
 };
 
+// A ghost: another run of the same level (the player's best, replayed in
+// step with this one), drawn translucent so the two can be raced.
+struct GhostPose {
+  bool shown = false;
+  Vec3d centre{0.0, 0.0, 0.04};              // [m], as RenderScene's
+  Mat3d orientation{1, 0, 0, 0, 1, 0, 0, 0, 1};
+  Vec2d massPoint{};                         // face coordinates [m]
+};
+
 struct RenderScene {
   // The hemisphere.
   double radius = 0.04;                      // R [m]
@@ -74,6 +83,8 @@ struct RenderScene {
   std::vector<ZoneMarker> forbidden;
   const ContactTrace* trace = nullptr;       // the contact point's path; null = none
   double time = 0.0;                         // now [s], for the trace's fading
+
+  GhostPose ghost;                           // same radius as the hemisphere
 
   CameraDef camera;
 };

@@ -22,6 +22,7 @@ constexpr Rgba kMassPoint{0.95f, 0.75f, 0.10f, 1.0f};
 constexpr Rgba kProxy{0.20f, 0.45f, 0.95f, 0.85f};
 constexpr Rgba kArrow{0.95f, 0.30f, 0.10f, 1.0f};
 constexpr Rgba kWhite{1, 1, 1, 1};
+constexpr Rgba kGhost{0.55f, 0.75f, 1.0f, 0.35f};  // translucent: the live hemisphere shows through
 constexpr double kMassPointRadii = 0.12;  // [R]: visible at the follow distance, small beside the face
 constexpr double kProxyRadii = 0.10;      // [R]
 constexpr double kShadowRadii = 0.9;      // [R]
@@ -116,6 +117,7 @@ void Renderer::render(const RenderScene& scene, int width, int height) {
 
   drawFloorLayer(s);
   drawSolids(s);
+  if (s.ghost.shown) drawGhost(s);
   // X-ray: the outlines and the trace once more over everything, faint. The
   // hemisphere sits on its own contact point, so millimetre targets and the
   // trace's head would otherwise be hidden exactly where the player looks.
@@ -225,6 +227,25 @@ void Renderer::drawSolids(const RenderScene& s) {
       drawMesh(spring_, Eigen::Matrix4f::Identity(), kWhite, false);
     }
   }
+}
+
+// After the solids, depth-tested but not written: the ghost is hidden behind
+// the live hemisphere where it is behind it, and never hides it.
+void Renderer::drawGhost(const RenderScene& s) {
+  glEnable(GL_DEPTH_TEST);
+  glDepthMask(GL_FALSE);
+  const float radius = float(s.radius);
+  const Eigen::Vector3f centre = toVec(s.ghost.centre);
+  const Eigen::Matrix3f rotation = rotationOf(s.ghost.orientation);
+  Eigen::Matrix4f body = Eigen::Matrix4f::Identity();
+  body.topLeftCorner<3, 3>() = rotation * radius;
+  body.topRightCorner<3, 1>() = centre;
+  drawMesh(hemisphere_, body, kGhost, true);
+  const float ball = float(kMassPointRadii) * radius;
+  const Eigen::Vector3f massPoint =
+      centre + rotation * Eigen::Vector3f(float(s.ghost.massPoint[0]), float(s.ghost.massPoint[1]), ball);
+  drawMesh(sphere_, translateScale(massPoint, ball), kGhost, true);
+  glDepthMask(GL_TRUE);
 }
 
 }  // namespace hemiroll::render

@@ -7,7 +7,8 @@
 // One frame, in order: floor and sky (two clears), 1 cm / 10 cm grid,
 // forbidden zones, target bands, contact shadow, trace (no depth test: all
 // lie on the plane); then with depth test the hemisphere, the mass point, the
-// proxy, the force arrow and the spring; last, the outlines and the trace's
+// proxy, the force arrow and the spring; a ghost (translucent, depth-tested,
+// not written), when the scene has one; last, the outlines and the trace's
 // newest part once more over everything, faint (targets under the hemisphere
 // stay visible). Scratch vertex buffers and dynamic GPU buffers are sized at
 // construction: after the first frame, render() allocates nothing.
@@ -56,6 +57,7 @@ class Renderer {
   void clearFloorAndSky(int width, int height);
   void drawFloorLayer(const RenderScene& s);
   void drawSolids(const RenderScene& s);
+  void drawGhost(const RenderScene& s);
 
   RendererDef def_;
   std::vector<std::string> notes_;

@@ -65,6 +65,14 @@ bool SceneSanitizer::sanitize(const RenderScene& in, RenderScene& out) {
   out.forceScale = forceOk ? in.forceScale : 0.0;
   if ((in.showProxy && !out.showProxy) || !forceOk) clean = false;
 
+  // A ghost with a bad pose is left out (the live hemisphere matters more).
+  out.ghost = in.ghost;
+  if (in.ghost.shown && !(finite(in.ghost.centre) && finite(in.ghost.orientation) &&
+                          isRotation(in.ghost.orientation) && finite(in.ghost.massPoint))) {
+    out.ghost.shown = false;
+    clean = false;
+  }
+
   out.targets.clear();
   for (const TargetMarker& t : in.targets) {
     if (finite(t.position) && finite(t.halfWidth) && t.halfWidth[0] > 0.0 && t.halfWidth[1] > 0.0)

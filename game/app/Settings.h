@@ -26,6 +26,7 @@ struct Settings {
   bool vsync = true;
   render::CameraMode camera = render::CameraMode::Follow;
   double zoom = 1.0;
+  bool ghost = true;           // race against your best run of a level (its replay, translucent)
   // Research session.
   std::string participant = "player";
 };

@@ -140,6 +140,7 @@ LoadedSettings loadSettings(const std::filesystem::path& file) {
   r.choice("camera", kCameras, camera);
   s.camera = static_cast<render::CameraMode>(camera);
   r.number("zoom", s.zoom, 0.25, 8.0, "a zoom in 0.25..8");
+  r.boolean("ghost", s.ghost);
   r.identifier("participant", s.participant);
   return out;
 }
@@ -159,6 +160,7 @@ std::string settingsJson(const Settings& s) {
   json["vsync"] = s.vsync;
   json["camera"] = kCameras[static_cast<int>(s.camera)];
   json["zoom"] = s.zoom;
+  json["ghost"] = s.ghost;
   json["participant"] = s.participant;
   return json.dump(2) + "\n";
 }

@@ -15,6 +15,7 @@ namespace {
 const ImVec4 kGreen(0.35f, 0.85f, 0.4f, 1.0f);
 const ImVec4 kRed(0.95f, 0.4f, 0.35f, 1.0f);
 const ImVec4 kAmber(0.95f, 0.75f, 0.3f, 1.0f);
+const ImVec4 kGhostBlue(0.55f, 0.75f, 1.0f, 1.0f);  // the ghost's own colour
 
 double wrapAngle(double a) {
   a = std::remainder(a, 2.0 * std::numbers::pi);
@@ -123,12 +124,13 @@ void PlayHud::draw(double fps) {
   ImGui::Separator();
   ImGui::Text("%s, %s", device_.c_str(), method_.c_str());
   switch (r.engagement) {
-    case haptics::Engagement::Disengaged: ImGui::TextColored(kAmber, "click on the mass point to take hold"); break;
-    case haptics::Engagement::Armed: ImGui::TextColored(kAmber, "bring the pointer onto the mass point"); break;
+    case haptics::Engagement::Disengaged: ImGui::TextColored(kAmber, "click or Space to take hold"); break;
+    case haptics::Engagement::Armed: ImGui::TextColored(kAmber, "bring the proxy onto the mass point"); break;
     case haptics::Engagement::Engaged: ImGui::Text("engaged, force %3.0f%%", r.rampScale * 100.0); break;
     case haptics::Engagement::RampingOut: ImGui::Text("letting go %3.0f%%", r.rampScale * 100.0); break;
   }
   if (mousePlayer_) ImGui::TextDisabled("a mouse pushes no force back: the arrow shows it");
+  if (!ghost_.empty()) ImGui::TextColored(kGhostBlue, "%s", ghost_.c_str());
   if (r.loopWarning)
     ImGui::TextColored(kAmber, "servo loop late: worst %.2f ms, %llu missed ticks", r.latenessMs, r.missedTicks);
   ImGui::Text("%.0f fps", fps);

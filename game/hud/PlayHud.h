@@ -49,6 +49,10 @@ class PlayHud {
   void setLabels(std::string level, std::string device, std::string method, bool mousePlayer, double faceRadius);
   void draw(double fps);
 
+  // The ghost's line ("" = none): whose run it is, and how it is going.
+  void setGhost(std::string line) { ghost_ = std::move(line); }
+  const std::string& ghost() const { return ghost_; }
+
   // The level's score function on the summary so far (none: no score function).
   void setScore(std::optional<double> score) { score_ = score; }
   // A level's message (hemiroll.message), shown until `until` [s, simulated];
@@ -69,7 +73,7 @@ class PlayHud {
   ScrollingPlot plot_, faceX_, faceY_;
   int channel_ = 0;
   double lastPsi_ = 0.0, lastTime_ = -1.0;
-  std::string level_, device_, method_;
+  std::string level_, device_, method_, ghost_;
   bool mousePlayer_ = true;
   std::optional<double> score_;
   std::array<std::string, kMessages> messages_{};

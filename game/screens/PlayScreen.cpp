@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "engine/physics/StateLayout.h"
 #include "game/app/App.h"
@@ -11,6 +12,7 @@
 #include "game/screens/ScreenLayout.h"
 #include "game/scores/ScoreStore.h"
 #include "engine/render/Camera.h"
+#include "game/play/GhostFile.h"
 #include "game/view/RenderSceneBuilder.h"
 
 namespace hemiroll::game {
@@ -51,6 +53,22 @@ void PlayScreen::begin() {
                  level_.def.params.radius);
   trace_.clear();
   lastEngagement_ = haptics::Engagement::Disengaged;
+  loadGhost();
+}
+
+void PlayScreen::loadGhost() {
+  ghost_.reset();
+  scene_.ghost.shown = false;
+  hud_.setGhost("");
+  if (!app_.settings().ghost) return;
+  const std::filesystem::path file = ghostFile(dataDirectory(), level_.def.name, app_.settings().participant);
+  std::error_code ec;
+  if (!std::filesystem::exists(file, ec)) return;
+  try {
+    ghost_ = std::make_unique<ReplayPlayer>(level_.def, levelPath_, file);
+  } catch (const std::exception& e) {
+    hud_.setGhost(std::string("no ghost: ") + e.what());
+  }
 }
 
 void PlayScreen::enter() {
@@ -128,6 +146,16 @@ void PlayScreen::update(double dt) {
   hud_.update(s, session_->judging().judge());
   const std::size_t stage = static_cast<std::size_t>(std::max(0, session_->judging().judge().stage()));
   fillFromSnapshot(level_.def, s, stage, scene_);
+  if (ghost_) {
+    // In step by simulated time, which stands still while paused.
+    ghost_->playTo(static_cast<std::uint64_t>(std::llround(s.time / ghost_->period())));
+    fillGhost(level_.def, ghost_->snapshot(), scene_.ghost);
+    const double best = static_cast<double>(ghost_->ticksTotal()) * ghost_->period();
+    char line[96];
+    std::snprintf(line, sizeof line, ghost_->done() ? "ghost: your best finished at %.2f s" : "ghost: your best, %.2f s",
+                  best);
+    hud_.setGhost(line);
+  }
   // The proxy is the cursor: drawn where this frame's strokes put it, not
   // where the servo thread last read it (up to a tick behind).
   const haptics::Vec3 proxy = session_->pointerScene();

@@ -5,7 +5,9 @@
 // Mouse: the proxy starts on the mass point and moves by the mouse's strokes
 // (captured pointer, the proxy drawn as the cursor: PointerMapping.h says
 // why), left click = take hold (engages near the mass point), right click =
-// let go, wheel = proxy height. Keys: Escape pauses
+// let go, wheel = proxy height. With the ghost on (settings), the player's
+// best run of the level (its replay) is played in step with this one, by
+// simulated time, and drawn translucent beside it. Keys: Escape pauses
 // (as does the window losing focus), Tab changes the camera. When the judge
 // ends the trial the results screen takes this one's place.
 
@@ -17,6 +19,7 @@
 #include "engine/script/LevelLoader.h"
 #include "game/hud/PlayHud.h"
 #include "game/play/PlaySession.h"
+#include "game/play/ReplayPlayer.h"
 #include "game/screens/Screen.h"
 
 namespace hemiroll::game {
@@ -41,17 +44,20 @@ class PlayScreen final : public Screen {
   }
 
   PlaySession* session() { return session_.get(); }
+  const ReplayPlayer* ghost() const { return ghost_.get(); }
   const PlayHud& hud() const { return hud_; }
   const std::string& error() const { return error_; }
 
  private:
   void begin();
+  void loadGhost();
   void pause();
 
   std::string levelPath_;
   std::string error_;  // the level failed to load or the loop refused it
   script::LoadedLevel level_;
   std::unique_ptr<PlaySession> session_;
+  std::unique_ptr<ReplayPlayer> ghost_;
   PlayHud hud_;
   render::RenderScene scene_;
   render::ContactTrace trace_;

@@ -1,21 +1,15 @@
 #pragma once
-// Watching a replay: the log's device readings played back through
-// ReplayDevice into a ServoLoop built from the level, on this thread, as many
-// ticks per frame as wall time asks (1x speed), each logged command posted
-// before the tick that applied it (ReplayRunner's rule, one frame at a time).
-// The level file must hash as logged; otherwise the screen says so.
-// Escape or Enter goes back. Ghost racing (a replay beside live play) is not
-// done.
+// Watching a replay: a ReplayPlayer plays the log as many ticks per frame as
+// wall time asks (1x speed). The level file must hash as logged; otherwise
+// the screen says so. Escape or Enter goes back.
 
 #include <memory>
 #include <string>
 
-#include "engine/haptics/ReplayDevice.h"
-#include "engine/haptics/ServoLoop.h"
-#include "engine/record/ReplayReader.h"
 #include "engine/render/ContactTrace.h"
 #include "engine/render/RenderScene.h"
 #include "engine/script/LevelLoader.h"
+#include "game/play/ReplayPlayer.h"
 #include "game/screens/Screen.h"
 
 namespace hemiroll::game {
@@ -31,18 +25,14 @@ class ReplayScreen final : public Screen {
   void paint() override;
 
   const std::string& error() const { return error_; }
-  std::size_t ticksPlayed() const { return next_; }
-  std::size_t ticksTotal() const { return log_.inputs.size(); }
+  std::size_t ticksPlayed() const { return player_ ? player_->ticksPlayed() : 0; }
+  std::size_t ticksTotal() const { return player_ ? player_->ticksTotal() : 0; }
 
  private:
   std::string levelPath_, replayFile_, error_;
   script::LoadedLevel level_;
-  record::ReplayLog log_;
-  std::unique_ptr<haptics::ReplayDevice> device_;
-  std::unique_ptr<haptics::ServoLoop> loop_;
-  std::size_t next_ = 0, nextCommand_ = 0;
+  std::unique_ptr<ReplayPlayer> player_;
   double clock_ = 0.0;  // [s] of wall time watched
-  haptics::ServoSnapshot snapshot_;
   render::RenderScene scene_;
   render::ContactTrace trace_;
 };

@@ -6,6 +6,7 @@
 #include <ctime>
 
 #include "game/app/App.h"
+#include "game/play/GhostFile.h"
 #include "game/screens/PlayScreen.h"
 #include "game/screens/ReplayScreen.h"
 #include "game/screens/ScreenLayout.h"
@@ -32,6 +33,10 @@ ResultsScreen::ResultsScreen(App& app, std::string levelPath, std::string levelN
   entry.score = result_.score;
   entry.medal = script::medalName(result_.medal);
   stored_ = app_.scores().add(entry);
+  if (newBest_ && !replay_.empty()) {
+    const std::string error = keepAsGhost(replay_, ghostFile(dataDirectory(), levelName_, player));
+    replayNote_ = error.empty() ? "kept as your ghost: race it next time" : error;
+  }
 }
 
 ResultsScreen::~ResultsScreen() {

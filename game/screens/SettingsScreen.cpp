@@ -83,6 +83,7 @@ void SettingsScreen::paint() {
   if (ImGui::Combo("camera", &camera, kCameras, IM_ARRAYSIZE(kCameras))) s.camera = static_cast<render::CameraMode>(camera);
   float zoom = static_cast<float>(s.zoom);
   if (ImGui::SliderFloat("zoom", &zoom, 0.5f, 3.0f, "%.2f")) s.zoom = zoom;
+  ImGui::Checkbox("race against your best run (a translucent ghost)", &s.ghost);
 
   ImGui::Spacing();
   if (ImGui::Button("Back  (Esc)", ImVec2(-1, 0))) app_.screens().pop();

@@ -72,6 +72,16 @@ void fillFromState(const script::LevelDef& level, const physics::ForceDrivenStat
   fillZones(level, scene);
 }
 
+void fillGhost(const script::LevelDef& level, const haptics::ServoSnapshot& ghost, render::GhostPose& out) {
+  const physics::ForceDrivenState& x = Eigen::Map<const physics::ForceDrivenState>(ghost.state.data());
+  const physics::Orientation o = physics::makeOrientation(x[slot::u_o], x[slot::v_o], x[slot::psi]);
+  out.shown = true;
+  out.centre = {x[slot::u_a], x[slot::v_a], level.params.radius};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) out.orientation[3 * i + j] = o.R(i, j);
+  out.massPoint = {x[slot::x_p], x[slot::y_p]};
+}
+
 void fillFromSnapshot(const script::LevelDef& level, const haptics::ServoSnapshot& snapshot, std::size_t stage,
                       render::RenderScene& scene) {
   const physics::ForceDrivenState x = Eigen::Map<const physics::ForceDrivenState>(snapshot.state.data());

@@ -24,6 +24,9 @@ void fillFromState(const script::LevelDef& level, const physics::ForceDrivenStat
 
 // The same from a servo snapshot, plus the proxy, the spring (drawn while
 // the coupling is engaged or ramping) and F_h as the force arrow.
+// The ghost's pose from another run's snapshot (a replayed best).
+void fillGhost(const script::LevelDef& level, const haptics::ServoSnapshot& ghost, render::GhostPose& out);
+
 void fillFromSnapshot(const script::LevelDef& level, const haptics::ServoSnapshot& snapshot, std::size_t stage,
                       render::RenderScene& scene);
 

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <functional>
 #include <limits>
 
@@ -204,6 +205,35 @@ TEST_F(RendererTest, NonFiniteScenesDrawTheLastGoodPoseAndNoBadMarkers) {
   EXPECT_FALSE(renderer_->lastSceneClean());
   const test::ImageDifference d = test::compareImages(before, after);
   EXPECT_EQ(d.differingFraction, 0.0) << "max channel difference " << d.maxChannelDifference;
+}
+
+// The ghost is drawn where its pose says, translucent (the floor shows
+// through: the pixel is neither the floor nor an opaque body), and a ghost
+// with a bad pose is left out rather than drawn anywhere.
+TEST_F(RendererTest, TheGhostIsDrawnTranslucentWhereItsPoseSays) {
+  RenderScene s = uprightAt(0.0, 0.0);
+  s.camera.mode = CameraMode::Top;
+  const Vec3d ghostTop{0.05, 0.0, kR};  // its face centre, seen from above
+  const Image without = draw(s);
+  s.ghost.shown = true;
+  s.ghost.centre = {0.05, 0.0, kR};
+  const Image with = draw(s);
+  const PixelPoint p = projectToPixel(renderer_->camera(), ghostTop, kW, kH);
+  ASSERT_TRUE(p.visible);
+  const std::uint8_t* before = without.pixel(int(p.x), int(p.y));
+  const std::uint8_t* after = with.pixel(int(p.x), int(p.y));
+  EXPECT_NE(std::memcmp(before, after, 3), 0) << "nothing drawn at the ghost";
+  // Translucent blue over the floor: bluer than the floor, yet not the tint itself.
+  EXPECT_GT(int(after[2]) - int(after[0]), int(before[2]) - int(before[0]));
+  EXPECT_GT(after[0], 60);
+  // The live hemisphere at the origin is drawn as before.
+  const PixelPoint live = projectToPixel(renderer_->camera(), {0.0, 0.0, kR}, kW, kH);
+  EXPECT_EQ(std::memcmp(without.pixel(int(live.x), int(live.y)), with.pixel(int(live.x), int(live.y)), 3), 0);
+
+  s.ghost.orientation[0] = kNaN;
+  const Image bad = draw(s);
+  EXPECT_FALSE(renderer_->lastSceneClean());
+  EXPECT_EQ(test::compareImages(without, bad).differingFraction, 0.0);
 }
 
 TEST_F(RendererTest, MissingAssetsFallBackToBuiltInsThatDrawTheSame) {

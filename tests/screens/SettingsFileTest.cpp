@@ -34,6 +34,7 @@ TEST(SettingsFileTest, EveryFieldRoundTrips) {
   s.vsync = false;
   s.camera = render::CameraMode::Top;
   s.zoom = 1.75;
+  s.ghost = false;
   s.participant = "P-07";
   const auto file = dir.path() / "nested" / "settings.json";
   ASSERT_EQ(saveSettings(file, s), "");

@@ -1,0 +1,134 @@
+// Racing a ghost in the real window (Xvfb + llvmpipe): a new personal best
+// is kept as the level's ghost, and the next play of the level replays it in
+// step with the live trial, by simulated time.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include "engine/script/LevelLoader.h"
+#include "game/app/App.h"
+#include "game/play/GhostFile.h"
+#include "game/play/PlaySession.h"
+#include "game/play/ReplayCapture.h"
+#include "game/screens/PlayScreen.h"
+#include "game/screens/ResultsScreen.h"
+#include "tests/support/TempDirectory.h"
+
+namespace hemiroll::game {
+namespace {
+
+using namespace std::chrono_literals;
+using ::testing::HasSubstr;
+
+const std::string kLevel = HEMIROLL_SOURCE_DIR "/levels/tutorial_01_tilt_and_return.lua";
+
+std::string bytesOf(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// A logged mouse trial of ~1 s with strokes, as the play screen keeps one.
+void playAndLog(const std::filesystem::path& file) {
+  script::LoadedLevel level = script::LevelLoader().loadFile(kLevel);
+  PlaySessionDef def;
+  def.replayFile = file;
+  def.levelHash = levelFileHash(kLevel);
+  PlaySession session(level, def);
+  session.start();
+  session.click();
+  const auto start = std::chrono::steady_clock::now();
+  double lastX = 0.0;
+  while (std::chrono::steady_clock::now() - start < 1000ms) {
+    const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    session.pointerMotion(10.0 * std::sin(3.0 * t) - lastX, 0.0);
+    lastX = 10.0 * std::sin(3.0 * t);
+    session.frame();
+    std::this_thread::sleep_for(10ms);
+  }
+  session.finish();
+  ASSERT_EQ(session.replayError(), "");
+}
+
+class GhostRaceTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    setenv("HEMIROLL_DATA_DIR", dir_.path().c_str(), 1);
+    def_.hidden = true;
+    def_.vsync = false;
+    def_.scoresFile = (dir_.path() / "scores.sqlite").string();
+    def_.settingsFile = (dir_.path() / "settings.json").string();
+  }
+  test::TempDirectory dir_;
+  AppDef def_;
+};
+
+TEST_F(GhostRaceTest, ANewBestIsKeptAsTheLevelsGhost) {
+  const std::filesystem::path replay = dir_.path() / "replays" / "last-trial.hrr";
+  std::filesystem::create_directories(replay.parent_path());
+  playAndLog(replay);
+  App app(def_);
+  const script::LoadedLevel level = script::LevelLoader().loadFile(kLevel);
+  TrialResult result;
+  result.outcome = script::TrialOutcome::Success;
+  result.reason = "target held";
+  result.time = 1.0;
+  ResultsScreen results(app, kLevel, level.def.name, result, replay, "");
+  const std::filesystem::path ghost = ghostFile(dir_.path(), level.def.name, app.settings().participant);
+  ASSERT_TRUE(std::filesystem::exists(ghost));
+  EXPECT_EQ(bytesOf(ghost), bytesOf(replay));
+
+  // A slower success is no new best: the ghost stays.
+  const std::string kept = bytesOf(ghost);
+  std::filesystem::resize_file(replay, 0);  // a different "replay"
+  result.time = 5.0;
+  ResultsScreen slower(app, kLevel, level.def.name, result, replay, "");
+  EXPECT_EQ(bytesOf(ghost), kept);
+}
+
+TEST_F(GhostRaceTest, TheNextPlayRacesTheGhostInStep) {
+  const script::LoadedLevel level = script::LevelLoader().loadFile(kLevel);
+  const std::filesystem::path ghost = ghostFile(dir_.path(), level.def.name, "player");
+  std::filesystem::create_directories(ghost.parent_path());
+  playAndLog(ghost);
+  App app(def_);
+  app.screens().push(std::make_unique<PlayScreen>(app, kLevel));
+  const auto start = std::chrono::steady_clock::now();
+  while (std::chrono::steady_clock::now() - start < 600ms) app.frame();
+  auto* play = dynamic_cast<PlayScreen*>(app.screens().top());
+  ASSERT_NE(play, nullptr);
+  ASSERT_NE(play->ghost(), nullptr) << play->hud().ghost();
+  EXPECT_THAT(play->hud().ghost(), HasSubstr("ghost: your best"));
+  // In step: the ghost has played the ticks of the live trial's time at the
+  // last update (the live snapshot may be a tick or so newer by now).
+  const double live = play->session()->snapshot().time;
+  const double ghostTime = static_cast<double>(play->ghost()->ticksPlayed()) * play->ghost()->period();
+  EXPECT_GT(ghostTime, 0.1);
+  EXPECT_NEAR(ghostTime, live, 0.05);  // a frame of llvmpipe at most behind
+  EXPECT_FALSE(play->ghost()->done());
+}
+
+TEST_F(GhostRaceTest, ABrokenGhostIsNamedNotRaced) {
+  const script::LoadedLevel level = script::LevelLoader().loadFile(kLevel);
+  const std::filesystem::path ghost = ghostFile(dir_.path(), level.def.name, "player");
+  std::filesystem::create_directories(ghost.parent_path());
+  std::ofstream(ghost) << "not a replay";
+  App app(def_);
+  app.screens().push(std::make_unique<PlayScreen>(app, kLevel));
+  for (int i = 0; i < 3; ++i) app.frame();
+  auto* play = dynamic_cast<PlayScreen*>(app.screens().top());
+  ASSERT_NE(play, nullptr);
+  EXPECT_EQ(play->ghost(), nullptr);
+  EXPECT_THAT(play->hud().ghost(), HasSubstr("no ghost: "));
+  EXPECT_NE(play->session(), nullptr);  // the trial itself goes on
+}
+
+}  // namespace
+}  // namespace hemiroll::game
