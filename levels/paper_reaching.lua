@@ -57,5 +57,15 @@ return {
   end,
   medals = { bronze = 240 - 170, silver = 240 - 46, gold = 240 - 40 },
 
-  scene = { contact_trace = true, plots = { "u_a", "v_a" }, record_rate = 100 },  -- Fig. 5 shows x of the contact
+  scene = {
+    contact_trace = true, plots = { "u_a", "v_a" }, record_rate = 100,  -- Fig. 5 shows x of the contact
+    -- Scenery only (nothing collides with it): a flag past the target, far
+    -- enough (5 cm, more than R) that the hemisphere at the target clears it,
+    -- and two cones behind the start.
+    props = {
+      { mesh = "meshes/flag.obj", position = { -0.075, -0.075, 0 }, size = 0.015, colour = { 0.9, 0.25, 0.2 } },
+      { mesh = "meshes/cone.gltf", position = { 0.065, 0.02, 0 }, size = 0.008 },
+      { mesh = "meshes/cone.gltf", position = { 0.02, 0.065, 0 }, size = 0.008 },
+    },
+  },
 }

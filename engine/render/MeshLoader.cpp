@@ -4,6 +4,8 @@
 #include <assimp/scene.h>
 
 #include <algorithm>
+#include <cctype>
+#include <filesystem>
 #include <assimp/Importer.hpp>
 #include <cmath>
 #include <limits>
@@ -41,6 +43,11 @@ LoadedMesh loadMeshFile(const std::string& path, Rgba color) {
     out.error = path + ": " + (importer.GetErrorString()[0] ? importer.GetErrorString() : "cannot read it");
     return out;
   }
+  // glTF is y up by its specification; the engine is z up (RENDERING.md).
+  // OBJ has no convention: hemiroll's are written z up.
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  const bool yUp = ext == ".gltf" || ext == ".glb";
   MeshData m;
   m.primitive = Primitive::Triangles;
   for (unsigned i = 0; i < scene->mNumMeshes; ++i) {
@@ -58,7 +65,9 @@ LoadedMesh loadMeshFile(const std::string& path, Rgba color) {
           const aiColor4D& vc = mesh->mColors[0][idx];
           c = {vc.r, vc.g, vc.b, vc.a};
         }
-        m.vertices.push_back(makeVertex(p.x, p.y, p.z, n.x, n.y, n.z, c));
+        // +90 degrees about x: (x, y, z) -> (x, -z, y) takes y up to z up.
+        if (yUp) m.vertices.push_back(makeVertex(p.x, -p.z, p.y, n.x, -n.z, n.y, c));
+        else m.vertices.push_back(makeVertex(p.x, p.y, p.z, n.x, n.y, n.z, c));
       }
     }
   }

@@ -117,6 +117,7 @@ void Renderer::render(const RenderScene& scene, int width, int height) {
 
   drawFloorLayer(s);
   drawSolids(s);
+  drawProps();
   if (s.ghost.shown) drawGhost(s);
   // X-ray: the outlines and the trace once more over everything, faint. The
   // hemisphere sits on its own contact point, so millimetre targets and the
@@ -227,6 +228,45 @@ void Renderer::drawSolids(const RenderScene& s) {
       drawMesh(spring_, Eigen::Matrix4f::Identity(), kWhite, false);
     }
   }
+}
+
+std::vector<std::string> Renderer::setProps(const std::vector<PropDef>& props) {
+  std::vector<std::string> notes;
+  propMeshes_.clear();
+  propBase_.clear();
+  props_.clear();
+  std::vector<std::string> files;  // propMeshes_[i] was loaded from files[i]
+  for (const PropDef& p : props) {
+    const bool placed = std::isfinite(p.position[0]) && std::isfinite(p.position[1]) && std::isfinite(p.position[2]) &&
+                        std::isfinite(p.size) && p.size > 0.0 && std::isfinite(p.yaw);
+    if (!placed) {
+      notes.push_back("prop " + p.mesh + ": a non-finite place or a size <= 0; left out");
+      continue;
+    }
+    std::size_t index = std::find(files.begin(), files.end(), p.mesh) - files.begin();
+    if (index == files.size()) {
+      // White vertices where the file has no colours: the prop's colour tints them.
+      LoadedMesh loaded = loadMeshFile(def_.assetsDir + "/" + p.mesh, kWhite);
+      if (!loaded.mesh) notes.push_back(loaded.error + " (drawn as the built-in marker)");
+      const MeshData mesh = loaded.mesh ? std::move(*loaded.mesh) : makeOctahedronMesh(kWhite);
+      float base = 0.0f;
+      for (const Vertex& v : mesh.vertices) base = std::min(base, v.position[2]);
+      propMeshes_.push_back(GpuMesh::makeStatic(mesh));
+      propBase_.push_back(base);
+      files.push_back(p.mesh);
+    }
+    Eigen::Matrix4f model = Eigen::Matrix4f::Identity();
+    model.topLeftCorner<3, 3>() =
+        Eigen::AngleAxisf(float(p.yaw), Eigen::Vector3f::UnitZ()).toRotationMatrix() * float(p.size);
+    // Standing on its position: the bounding box's bottom there, not its centre.
+    model.topRightCorner<3, 1>() = toVec(p.position) - Eigen::Vector3f(0.0f, 0.0f, propBase_[index] * float(p.size));
+    props_.push_back({index, model, p.colour});
+  }
+  return notes;
+}
+
+void Renderer::drawProps() {
+  for (const PlacedProp& p : props_) drawMesh(propMeshes_[p.mesh], p.model, p.tint, true);
 }
 
 // After the solids, depth-tested but not written: the ghost is hidden behind

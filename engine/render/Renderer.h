@@ -7,7 +7,7 @@
 // One frame, in order: floor and sky (two clears), 1 cm / 10 cm grid,
 // forbidden zones, target bands, contact shadow, trace (no depth test: all
 // lie on the plane); then with depth test the hemisphere, the mass point, the
-// proxy, the force arrow and the spring; a ghost (translucent, depth-tested,
+// proxy, the force arrow and the spring, the level's props; a ghost (translucent, depth-tested,
 // not written), when the scene has one; last, the outlines and the trace's
 // newest part once more over everything, faint (targets under the hemisphere
 // stay visible). Scratch vertex buffers and dynamic GPU buffers are sized at
@@ -35,6 +35,16 @@ struct RendererDef {
   double maxArrowRadii = 6.0;              // the force arrow is at most this many R long
 };
 
+// Scenery a level names: a mesh file placed on the plane. Static for the
+// level: setProps() loads the meshes once, render() only draws them.
+struct PropDef {
+  std::string mesh;                        // relative to the assets directory (glTF, GLB, OBJ)
+  Vec3d position{};                        // base frame: where it stands, the middle of its bounding box's bottom [m]
+  double size = 0.01;                      // radius of the sphere the mesh is scaled to [m]
+  double yaw = 0.0;                        // turn about the vertical [rad]
+  Rgba colour{1.0f, 1.0f, 1.0f, 1.0f};     // multiplies the mesh's colours (white where the file has none)
+};
+
 class Renderer {
  public:
   explicit Renderer(const RendererDef& def = {});  // throws RenderError (no usable shaders)
@@ -42,6 +52,12 @@ class Renderer {
 
   // Draws into the currently bound framebuffer of this size [GL px].
   void render(const RenderScene& scene, int width, int height);
+
+  // Replaces the props drawn with every frame (a level's scenery; {} = none).
+  // Each file loads once; a mesh that cannot be loaded is drawn as the
+  // built-in marker, and a prop with a non-finite place or a size <= 0 is
+  // left out: both named in the returned sentences. Outside render().
+  std::vector<std::string> setProps(const std::vector<PropDef>& props);
 
   // Fallbacks taken while loading (missing or broken shader/mesh files), as
   // sentences naming the file; empty when every asset loaded.
@@ -58,6 +74,7 @@ class Renderer {
   void drawFloorLayer(const RenderScene& s);
   void drawSolids(const RenderScene& s);
   void drawGhost(const RenderScene& s);
+  void drawProps();
 
   RendererDef def_;
   std::vector<std::string> notes_;
@@ -69,6 +86,14 @@ class Renderer {
   GpuMesh decals_, lines_, spring_;    // dynamic
   std::vector<Vertex> decalScratch_, lineScratch_, springScratch_;
   std::size_t outlineVertices_ = 0;    // lines_ holds the outlines first, then the trace
+  struct PlacedProp {
+    std::size_t mesh;                  // index into propMeshes_
+    Eigen::Matrix4f model;
+    Rgba tint;
+  };
+  std::vector<GpuMesh> propMeshes_;
+  std::vector<float> propBase_;        // lowest z of each prop mesh (unit sphere scale)
+  std::vector<PlacedProp> props_;
   SceneSanitizer sanitizer_;
   RenderScene clean_;
   CameraView camera_;

@@ -43,8 +43,19 @@ struct ScoringDef {
 };
 
 // What the scene must show and record, so nothing else is computed.
+// Scenery: a mesh from the game's assets placed on the plane (visual only:
+// nothing collides with it).
+struct PropDef {
+  std::string mesh;                    // path under assets/ ("meshes/flag.obj"); glTF, GLB or OBJ
+  std::array<double, 3> position{};    // base frame: where it stands (its bounding box's bottom middle) [m]
+  double size = 0.01;                  // radius of the sphere the mesh is scaled to [m]
+  double yaw = 0.0;                    // turn about the vertical [rad]
+  std::array<double, 3> colour{1.0, 1.0, 1.0};  // multiplies the mesh's colours, each in [0, 1]
+};
+
 struct SceneDef {
   bool contactTrace = true;            // draw the contact point's path on the plane
+  std::vector<PropDef> props;          // scenery (docs/LEVELS.md, "scene.props")
   std::vector<std::string> plots;      // channel names (docs/LEVELS.md, "scene.plots")
   double recordRate = 100.0;           // samples per second a recording keeps [Hz], in (0, 1000]
 };

@@ -140,10 +140,51 @@ void readDevice(const LuaTableReader& top, LevelDef& def) {
   }
 }
 
+// A mesh path stays inside the assets directory and names a format assimp reads.
+void checkMeshPath(const LuaTableReader& prop, const std::string& mesh) {
+  if (mesh.empty()) prop.fail("mesh", "expected a file under assets/, e.g. \"meshes/flag.obj\"");
+  if (mesh.front() == '/' || mesh.find("..") != std::string::npos || mesh.find('\\') != std::string::npos)
+    prop.fail("mesh", "'" + mesh + "' must be a relative path under assets/ without '..'");
+  const std::size_t dot = mesh.rfind('.');
+  const std::string ext = dot == std::string::npos ? "" : mesh.substr(dot);
+  if (ext != ".obj" && ext != ".gltf" && ext != ".glb")
+    prop.fail("mesh", "'" + mesh + "' is not a .obj, .gltf or .glb file");
+}
+
+void readProps(const LuaTableReader& scene, std::vector<PropDef>& props) {
+  const auto list = scene.table("props");
+  if (!list) return;
+  const int count = list->entryCount();
+  if (static_cast<int>(lua_rawlen(list->state(), list->index())) != count)
+    list->fail("", "expected a list of props {mesh = ..., position = ...}, {...}");
+  for (int i = 1; i <= count; ++i) {
+    const std::string at = positionKey(i);
+    if (list->typeAt(i) != LUA_TTABLE) list->fail(at, "expected a prop table {mesh = ..., position = {x, y, z}}");
+    lua_rawgeti(list->state(), list->index(), i);
+    const LuaTableReader prop(list->state(), -1, list->source(), list->fieldPath(at));
+    rejectUnknownLevelKeys(prop, {"mesh", "position", "size", "yaw", "colour"});
+    PropDef def;
+    def.mesh = prop.string("mesh").value_or("");
+    checkMeshPath(prop, def.mesh);
+    const auto position = readVector<3>(prop, "position", "{x, y, z} in metres");
+    if (!position) prop.fail("position", "required: {x, y, z} in metres, base frame");
+    def.position = *position;
+    def.size = readPositive(prop, "size", "m").value_or(def.size);
+    if (def.size > 1.0) prop.fail("size", "at most 1 m (the radius the mesh is scaled to)");
+    def.yaw = prop.number("yaw").value_or(def.yaw);
+    if (!std::isfinite(def.yaw)) prop.fail("yaw", "expected a finite angle in radians");
+    def.colour = readVector<3>(prop, "colour", "{r, g, b}, each in [0, 1]").value_or(def.colour);
+    for (double c : def.colour)
+      if (c < 0.0 || c > 1.0) prop.fail("colour", "each of {r, g, b} must be in [0, 1]");
+    props.push_back(std::move(def));
+  }
+}
+
 void readScene(const LuaTableReader& top, SceneDef& scene) {
   const auto table = top.table("scene");
   if (!table) return;
-  rejectUnknownLevelKeys(*table, {"contact_trace", "plots", "record_rate"});
+  rejectUnknownLevelKeys(*table, {"contact_trace", "plots", "record_rate", "props"});
+  readProps(*table, scene.props);
   scene.contactTrace = readBool(*table, "contact_trace").value_or(scene.contactTrace);
   scene.recordRate = readPositive(*table, "record_rate", "Hz").value_or(scene.recordRate);
   if (scene.recordRate > 1000.0) table->fail("record_rate", "at most 1000 Hz (the servo rate)");

@@ -100,6 +100,7 @@ int runScreenshotCommand(const std::vector<std::string>& args) {
     if (rendererDef.assetsDir.empty()) rendererDef.assetsDir = "assets";
     render::Renderer renderer(rendererDef);
     for (const std::string& note : renderer.notes()) std::cerr << kPrefix << "note: " << note << "\n";
+    for (const std::string& note : renderer.setProps(propsOf(level.def))) std::cerr << kPrefix << "note: " << note << "\n";
     render::Framebuffer target(o.width, o.height);
     target.bind();
     renderer.render(scene, o.width, o.height);

@@ -53,6 +53,7 @@ void PlayScreen::begin() {
                  level_.def.params.radius);
   trace_.clear();
   lastEngagement_ = haptics::Engagement::Disengaged;
+  for (const std::string& note : app_.renderer().setProps(propsOf(level_.def))) hud_.addMessage("scene: " + note, 10.0);
   loadGhost();
 }
 

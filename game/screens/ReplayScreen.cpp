@@ -19,6 +19,7 @@ void ReplayScreen::enter() {
   try {
     level_ = script::LevelLoader().loadFile(levelPath_);
     player_ = std::make_unique<ReplayPlayer>(level_.def, levelPath_, replayFile_);
+    app_.renderer().setProps(propsOf(level_.def));  // a missing mesh was named when the level was played
   } catch (const std::exception& e) {
     error_ = e.what();
     player_.reset();

@@ -72,6 +72,14 @@ void fillFromState(const script::LevelDef& level, const physics::ForceDrivenStat
   fillZones(level, scene);
 }
 
+std::vector<render::PropDef> propsOf(const script::LevelDef& level) {
+  std::vector<render::PropDef> props;
+  for (const script::PropDef& p : level.scene.props)
+    props.push_back({p.mesh, p.position, p.size, p.yaw,
+                     {float(p.colour[0]), float(p.colour[1]), float(p.colour[2]), 1.0f}});
+  return props;
+}
+
 void fillGhost(const script::LevelDef& level, const haptics::ServoSnapshot& ghost, render::GhostPose& out) {
   const physics::ForceDrivenState& x = Eigen::Map<const physics::ForceDrivenState>(ghost.state.data());
   const physics::Orientation o = physics::makeOrientation(x[slot::u_o], x[slot::v_o], x[slot::psi]);

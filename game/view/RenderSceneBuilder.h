@@ -12,6 +12,7 @@
 #include "engine/haptics/ServoSnapshot.h"
 #include "engine/physics/StateLayout.h"
 #include "engine/render/RenderScene.h"
+#include "engine/render/Renderer.h"
 #include "engine/script/LevelDef.h"
 
 namespace hemiroll::game {
@@ -24,6 +25,9 @@ void fillFromState(const script::LevelDef& level, const physics::ForceDrivenStat
 
 // The same from a servo snapshot, plus the proxy, the spring (drawn while
 // the coupling is engaged or ramping) and F_h as the force arrow.
+// The level's scenery for Renderer::setProps.
+std::vector<render::PropDef> propsOf(const script::LevelDef& level);
+
 // The ghost's pose from another run's snapshot (a replayed best).
 void fillGhost(const script::LevelDef& level, const haptics::ServoSnapshot& ghost, render::GhostPose& out);
 

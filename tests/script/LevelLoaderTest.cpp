@@ -65,7 +65,9 @@ TEST(LevelLoader, ReadsEveryField) {
       },
       score = function(s) return 1 end,
       medals = {bronze = 1, silver = 2, gold = 3},
-      scene = {contact_trace = false, plots = {"u_a", "energy"}, record_rate = 50},
+      scene = {contact_trace = false, plots = {"u_a", "energy"}, record_rate = 50,
+               props = {{mesh = "meshes/flag.obj", position = {0.1, -0.2, 0}, size = 0.02, yaw = 0.5,
+                         colour = {1, 0.5, 0}}, {mesh = "meshes/cone.gltf", position = {0, 0, 0}}}},
       callbacks = {rate = 25, on_update = function(s) end},
       demo_bot = "bots.rose",
     })");
@@ -103,6 +105,14 @@ TEST(LevelLoader, ReadsEveryField) {
   EXPECT_FALSE(d.scene.contactTrace);
   EXPECT_EQ(d.scene.plots, (std::vector<std::string>{"u_a", "energy"}));
   EXPECT_EQ(d.scene.recordRate, 50.0);
+  ASSERT_EQ(d.scene.props.size(), 2u);
+  EXPECT_EQ(d.scene.props[0].mesh, "meshes/flag.obj");
+  EXPECT_EQ(d.scene.props[0].position, (std::array<double, 3>{0.1, -0.2, 0.0}));
+  EXPECT_EQ(d.scene.props[0].size, 0.02);
+  EXPECT_EQ(d.scene.props[0].yaw, 0.5);
+  EXPECT_EQ(d.scene.props[0].colour, (std::array<double, 3>{1.0, 0.5, 0.0}));
+  EXPECT_EQ(d.scene.props[1].size, PropDef{}.size);  // defaults
+  EXPECT_EQ(d.scene.props[1].colour, PropDef{}.colour);
   EXPECT_EQ(d.callbacks.rate, 25.0);
   EXPECT_TRUE(d.callbacks.onUpdate);
   EXPECT_FALSE(d.callbacks.onStart);
@@ -195,6 +205,16 @@ INSTANTIATE_TEST_SUITE_P(
         ErrorCase{"return { name = 'x', scene = {\n plots = {'u_a',\n 'enrgy'} } }",
                   "lv.lua:3: scene.plots[2]: unknown channel 'enrgy' (did you mean 'energy'?)"},
         ErrorCase{"return { name = 'x',\n demo_bot = '../../etc/passwd' }", "lv.lua:2: demo_bot: bad module name"},
+        ErrorCase{"return { name = 'x', scene = { props = {\n { mesh = '../secret.obj', position = {0, 0, 0} } } } }",
+                  "lv.lua:2: scene.props[1].mesh: '../secret.obj' must be a relative path under assets/ without '..'"},
+        ErrorCase{"return { name = 'x', scene = { props = {\n { mesh = 'meshes/a.png', position = {0, 0, 0} } } } }",
+                  "lv.lua:2: scene.props[1].mesh: 'meshes/a.png' is not a .obj, .gltf or .glb file"},
+        ErrorCase{"return { name = 'x', scene = { props = {\n { mesh = 'meshes/flag.obj' } } } }",
+                  "lv.lua:2: scene.props[1].position: required"},
+        ErrorCase{"return { name = 'x', scene = { props = {\n { mesh = 'meshes/flag.obj', position = {0, 0, 0},\n colour = {2, 0, 0} } } } }",
+                  "lv.lua:3: scene.props[1].colour: each of {r, g, b} must be in [0, 1]"},
+        ErrorCase{"return { name = 'x', scene = { props = {\n { mesh = 'meshes/flag.obj', position = {0, 0, 0}, sise = 1 } } } }",
+                  "lv.lua:2: scene.props[1].sise: unknown key 'sise' (did you mean 'size'?)"},
         ErrorCase{"return 42", "lv.lua:1: the level must return a table, got number"},
         ErrorCase{"return {\n name = 'x',\n", "lv.lua:3: unexpected symbol near <eof>"},
         ErrorCase{"local t = nil\nreturn { name = t.x }", "lv.lua:2: attempt to index a nil value"},
