@@ -24,8 +24,9 @@ struct Settings {
   bool vsync = true;
   render::CameraMode camera = render::CameraMode::Follow;
   double zoom = 1.0;
-  // Research session.
+  // Research session (ResearchScreen): who plays, and which session of theirs.
   std::string participant = "player";
+  std::string sessionId = "1";
 };
 
 // The coupling the play session uses: the level's, or the player's override

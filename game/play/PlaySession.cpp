@@ -21,7 +21,7 @@ PlaySession::PlaySession(script::LoadedLevel& level, const PlaySessionDef& def)
       loopDef_(HeadlessTrial::loopDefFor(level.def, "mouse")),
       mapping_(def.pointer),
       ring_(std::make_unique<haptics::RecordRing>()),
-      judging_(level, nullptr, 10, /*faultsEndTrial=*/false) {
+      judging_(level, def.recordRing, def.recordEvery, /*faultsEndTrial=*/false) {
   loopDef_.requestRealtime = def.requestRealtime;
   loopDef_.recordRing = ring_.get();
   loopDef_.recordEvery = 1;  // the judge sees every tick

@@ -6,7 +6,15 @@
 // point), right click = let go, wheel = proxy height. Keys: Escape pauses
 // (as does the window losing focus), Tab changes the camera. When the judge
 // ends the trial the results screen takes this one's place.
+//
+// A research session's trial (SessionScreen) plays the session's next trial
+// instead: its level with the plan's overrides and seed (the settings'
+// override is not used), recorded into the session folder (trial CSV and
+// sidecar through the loop's ring, the replay log beside them), no restart;
+// when it ends the results row is appended, the screen goes and `done` says
+// how it went (no results screen, no scores).
 
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -19,9 +27,20 @@
 
 namespace hemiroll::game {
 
+class ResearchSession;
+class TrialRecording;
+
+// How a session's trial ended: recorded (its result), or not (why).
+struct SessionTrialEnd {
+  bool recorded = false;
+  TrialResult result;
+  std::string error;
+};
+
 class PlayScreen final : public Screen {
  public:
   PlayScreen(App& app, std::string levelPath);
+  PlayScreen(App& app, ResearchSession& session, std::function<void(const SessionTrialEnd&)> done);
   ~PlayScreen() override;
   const char* name() const override { return "play"; }
   void enter() override;
@@ -38,11 +57,15 @@ class PlayScreen final : public Screen {
   }
 
   PlaySession* session() { return session_.get(); }
+  bool inResearchSession() const { return research_ != nullptr; }
   const PlayHud& hud() const { return hud_; }
   const std::string& error() const { return error_; }
 
  private:
   void begin();
+  void beginSessionTrial(PlaySessionDef& def);
+  void endSessionTrial(SessionTrialEnd end);
+  void back();
   void pause();
 
   std::string levelPath_;
@@ -55,6 +78,9 @@ class PlayScreen final : public Screen {
   haptics::Engagement lastEngagement_ = haptics::Engagement::Disengaged;
   bool started_ = false;
   double scoreClock_ = 0.0;  // [s] since the running score was last asked for
+  ResearchSession* research_ = nullptr;  // set: a research session's trial
+  std::function<void(const SessionTrialEnd&)> sessionDone_;
+  std::unique_ptr<TrialRecording> recording_;
 };
 
 }  // namespace hemiroll::game
