@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 
 #include "engine/script/ScriptError.h"
 #include "tests/support/TempDirectory.h"
@@ -166,6 +167,35 @@ TEST(ProtocolLoaderFiles, ThePapersProtocolHasThePapersConditions) {
   EXPECT_EQ(*day2.conditions[0].overrides.method, "M3");
   EXPECT_EQ(*day2.conditions[0].overrides.alpha, 2.0);
   EXPECT_EQ(*day2.conditions[0].overrides.timeLimit, 240.0);  // Sec. 4, para. 4
+}
+
+// docs/PROTOCOLS.md's complete example is a protocol that loads, with every key.
+TEST(ProtocolLoaderFiles, TheDocumentedExampleLoads) {
+  std::ifstream doc(std::string(HEMIROLL_SOURCE_DIR) + "/docs/PROTOCOLS.md");
+  std::string line, example;
+  bool inside = false;
+  while (std::getline(doc, line)) {
+    if (!inside && line == "```lua") inside = true;
+    else if (inside && line == "```") break;
+    else if (inside) example += line + "\n";
+  }
+  ASSERT_FALSE(example.empty());
+  ProtocolLoadOptions options;
+  options.levelsDir = kLevels;
+  const ProtocolDef def = ProtocolLoader(options).loadSource(example, "example.lua", kLevels + "/protocols");
+  EXPECT_EQ(def.experiment, "example");
+  EXPECT_EQ(def.seed, 42u);
+  ASSERT_EQ(def.blocks.size(), 3u);
+  EXPECT_EQ(def.blocks[0].repetitions, 2);
+  EXPECT_EQ(def.blocks[0].conditions[0].label, "warm-up");
+  ASSERT_EQ(def.blocks[1].conditions.size(), 4u);
+  EXPECT_EQ(def.blocks[1].repetitions, 3);
+  EXPECT_TRUE(def.blocks[1].randomise);
+  EXPECT_EQ(*def.blocks[1].conditions[3].overrides.method, "M2");
+  EXPECT_EQ(*def.blocks[1].conditions[3].overrides.stiffness, 250.0);
+  ASSERT_TRUE(def.blocks[1].breakAfter);
+  EXPECT_TRUE(def.blocks[1].breakAfter->stop);
+  EXPECT_EQ(*def.blocks[2].conditions[0].overrides.timeLimit, 30.0);
 }
 
 struct ErrorCase {
