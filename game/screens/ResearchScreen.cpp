@@ -57,6 +57,16 @@ void ResearchScreen::enter() {
   refresh();
 }
 
+// Levels are looked for beside the protocol, then in the game's levels folder.
+SessionRequest ResearchScreen::requestFor(const std::string& protocol) const {
+  SessionRequest request;
+  request.protocolPath = protocol;
+  request.levelsDir = app_.def().levelsDir;
+  request.participant = app_.settings().participant;
+  request.session = app_.settings().sessionId;
+  return request;
+}
+
 void ResearchScreen::select(int index) {
   selected_ = index;
   refresh();
@@ -75,11 +85,8 @@ void ResearchScreen::refresh() {
     status_ = "this protocol cannot be run (its error is above)";
     return;
   }
-  SessionRequest request;
-  request.protocolPath = p.path;
-  request.participant = app_.settings().participant;
-  request.session = app_.settings().sessionId;
   try {
+    const SessionRequest request = requestFor(p.path);
     const ResearchSession s(request);
     canStart_ = !s.complete();
     if (!s.resumed()) status_ = "a new session of " + std::to_string(s.trialCount()) + " trials";
@@ -95,11 +102,8 @@ void ResearchScreen::refresh() {
 
 void ResearchScreen::start() {
   if (!canStart_) return;
-  SessionRequest request;
-  request.protocolPath = protocols_[static_cast<std::size_t>(selected_)].path;
-  request.participant = app_.settings().participant;
-  request.session = app_.settings().sessionId;
-  app_.screens().push(std::make_unique<SessionScreen>(app_, request));
+  app_.screens().push(
+      std::make_unique<SessionScreen>(app_, requestFor(protocols_[static_cast<std::size_t>(selected_)].path)));
 }
 
 void ResearchScreen::input(const platform::InputEvent& e) {

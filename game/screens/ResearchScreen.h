@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "game/research/ResearchSession.h"
 #include "game/screens/Screen.h"
 
 namespace hemiroll::game {
@@ -43,6 +44,7 @@ class ResearchScreen final : public Screen {
   void refresh();  // the status of the selected protocol, participant and session
   void start();
   void select(int index);
+  SessionRequest requestFor(const std::string& protocol) const;
   std::vector<ProtocolEntry> protocols_;
   int selected_ = 0;
   std::array<char, 65> participant_{};
