@@ -93,7 +93,8 @@ std::string SessionManifest::toJson() const {
     for (const auto& [from, to] : a.moved) moved.push_back({{"from", from}, {"to", to}});
     j["aborted"].push_back({{"trial_id", a.trialId}, {"time", a.time}, {"reason", a.reason}, {"moved", moved}});
   }
-  return j.dump(2) + "\n";
+  // Protocol text is bytes: invalid UTF-8 becomes U+FFFD (JSON must be UTF-8).
+  return j.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
 }
 
 SessionManifest SessionManifest::fromJson(const std::string& text, const std::string& source) {

@@ -69,6 +69,17 @@ TEST(SessionManifest, RoundTripsEveryField) {
   EXPECT_EQ(back.aborted[0].moved[1].second, "trial-002.json.aborted-1");
 }
 
+TEST(SessionManifest, InvalidUtf8FromTheProtocolIsReplacedNotThrown) {
+  SessionManifest m = sample();
+  m.description = "bad \xff byte";
+  m.plan[0].blockName = "\xc3(";
+  std::string json;
+  ASSERT_NO_THROW(json = m.toJson());
+  const SessionManifest back = SessionManifest::fromJson(json, "session.json");
+  EXPECT_EQ(back.description, "bad \xef\xbf\xbd byte");
+  EXPECT_EQ(back.plan[0].blockName, "\xef\xbf\xbd(");
+}
+
 TEST(SessionManifest, KeysCarryTheirUnits) {
   const std::string json = sample().toJson();
   for (const char* key : {"\"kr_N_per_m\"", "\"kv_N_s_per_m\"", "\"time_limit_s\"", "\"min_duration_s\"",
