@@ -119,6 +119,8 @@ int runSessionCommand(const std::vector<std::string>& args) {
   Tally tally;
   try {
     ResearchSession session(request);
+    if (const std::string problem = session.couplingProblem(HeadlessTrial::deviceSpec()); !problem.empty())
+      return fail(kExitUsage, problem);
     session.begin(*o.botPath);
     for (const auto& [trialId, reason] : session.interrupted())
       std::cerr << "hemiroll session: " << trialId << " was " << reason << "; its files were moved aside (*.aborted-N)\n";

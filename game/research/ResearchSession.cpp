@@ -188,6 +188,23 @@ bool ResearchSession::stopsHere() const {
   return pause != nullptr && pause->stop && ranThisSitting_ > 0;
 }
 
+std::string ResearchSession::couplingProblem(const haptics::DeviceSpec& device) const {
+  for (std::size_t i = static_cast<std::size_t>(done_); i < manifest_.plan.size(); ++i) {
+    const ManifestTrial& t = manifest_.plan[i];
+    script::TrialOverrides planned;  // the effective coupling, as overrides of any
+    planned.method = t.method;
+    planned.stiffness = t.stiffness;
+    planned.damping = t.damping;
+    planned.alpha = t.alpha;
+    const physics::CouplingDef coupling = script::overriddenCoupling(planned, {});
+    const std::string problem = haptics::ServoLoop::couplingProblem(coupling, device);
+    if (!problem.empty())
+      return t.trialId + " (" + t.conditionLabel + ", " + t.levelFile + "): the " + device.name +
+             " device cannot take this coupling: " + problem;
+  }
+  return "";
+}
+
 script::LoadedLevel ResearchSession::loadNextLevel() const {
   const ManifestTrial& trial = nextTrial();
   const auto& [path, overrides] = trials_.at(static_cast<std::size_t>(done_));

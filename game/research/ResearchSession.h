@@ -72,6 +72,11 @@ class ResearchSession {
   const ManifestBreak* pendingBreak() const;
   bool stopsHere() const;
 
+  // "" when every trial still to run has a coupling `device` renders
+  // stably; else one sentence naming the first that has not (a protocol's
+  // kr, alpha too stiff for the device): checked before the first trial.
+  std::string couplingProblem(const haptics::DeviceSpec& device) const;
+
   // The next trial's level with the plan's overrides and seed. Throws
   // SessionError (BadInput) when it no longer loads.
   script::LoadedLevel loadNextLevel() const;

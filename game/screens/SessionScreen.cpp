@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "engine/haptics/MouseDevice.h"
 #include "game/app/App.h"
 #include "game/screens/PlayScreen.h"
 #include "game/screens/ScreenLayout.h"
@@ -26,6 +27,8 @@ void SessionScreen::open() {
   opened_ = true;
   try {
     session_ = std::make_unique<ResearchSession>(request_);
+    if (const std::string problem = session_->couplingProblem(haptics::MouseDeviceDef{}.spec); !problem.empty())
+      throw SessionError(SessionError::Kind::BadInput, problem);
     session_->begin("mouse");
   } catch (const std::exception& e) {
     error_ = e.what();

@@ -132,6 +132,15 @@ TEST(SessionCommandTest, BadInputIsOneSentenceAndExitTwoWithNothingWritten) {
   const ProcessResult badId = session({kDemo, "--participant", "a.b", "--data", data, "--bot", kSolver});
   EXPECT_EQ(badId.exitCode, 2);
   EXPECT_THAT(badId.err, HasSubstr("the participant id 'a.b' must be"));
+  // Too stiff for the bot's device (1000 N/m): refused before the first trial.
+  const std::string stiff = dir.write(
+      "stiff.lua", "return { experiment = 'x', blocks = { { level = '" + kSource +
+                       "/levels/tutorial_01_tilt_and_return.lua' }, { level = '" + kSource +
+                       "/levels/tutorial_01_tilt_and_return.lua', label = 'stiff', kr = 600 } } }");
+  const ProcessResult tooStiff = session({stiff, "--participant", "p01", "--data", data, "--bot", kSolver});
+  EXPECT_EQ(tooStiff.exitCode, 2);
+  EXPECT_THAT(tooStiff.err, HasSubstr("trial-002 (stiff, "));
+  EXPECT_THAT(tooStiff.err, HasSubstr("the bot device cannot take this coupling: coupling stiffness exceeds"));
   EXPECT_EQ(session({kDemo}).exitCode, 2);
   EXPECT_FALSE(fs::exists(data));
   EXPECT_EQ(session({"--help"}).exitCode, 0);
