@@ -146,6 +146,7 @@ void ResearchScreen::paint() {
     refresh();
   }
   ImGui::TextDisabled("data root: %s", defaultSessionsRoot().string().c_str());
+  ImGui::TextDisabled("(free play stores its scores under this participant id in %s)", app_.scores().file().c_str());
   ImGui::TextDisabled("(set HEMIROLL_DATA_DIR or XDG_DATA_HOME to change it)");
   ImGui::TextWrapped("%s", status_.c_str());
   ImGui::BeginDisabled(!canStart_);
