@@ -42,6 +42,8 @@ void PlayScreen::beginSessionTrial(PlaySessionDef& def) {
 }
 
 void PlayScreen::endSessionTrial(SessionTrialEnd end) {
+  if (sessionEnded_) return;  // two Escapes in one frame: the stack changes once
+  sessionEnded_ = true;
   if (end.recorded) {
     try {
       research_->finishNext(*recording_, end.result, session_->timing());

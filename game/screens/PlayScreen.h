@@ -81,6 +81,7 @@ class PlayScreen final : public Screen {
   ResearchSession* research_ = nullptr;  // set: a research session's trial
   std::function<void(const SessionTrialEnd&)> sessionDone_;
   std::unique_ptr<TrialRecording> recording_;
+  bool sessionEnded_ = false;
 };
 
 }  // namespace hemiroll::game
