@@ -10,6 +10,7 @@
 #include "game/commands/PlayCommand.h"
 #include "game/commands/RunCommand.h"
 #include "game/commands/ScreenshotCommand.h"
+#include "game/commands/SessionCommand.h"
 #include "game/commands/SimCommand.h"
 #include "game/commands/VersionCommand.h"
 
@@ -25,6 +26,8 @@ constexpr CommandEntry kCommands[] = {
     {"play", "open the game window (the default with no command)", hemiroll::game::runPlayCommand},
     {"sim", "run a scenario's physics headless and write the trajectory as CSV", hemiroll::game::runSimCommand},
     {"run", "play a level with a bot (headless) and print the result as one JSON line", hemiroll::game::runRunCommand},
+    {"session", "run a research protocol for a participant (bots headless; people in the window)",
+     hemiroll::game::runSessionCommand},
     {"screenshot", "render one frame of a level offscreen and write it as a PNG", hemiroll::game::runScreenshotCommand},
     {"version", "print the version", hemiroll::game::runVersionCommand},
 };

@@ -18,8 +18,9 @@ ForceDrivenState toState(const std::array<double, 12>& a) { return Eigen::Map<co
 
 Triple toTriple(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
 
-// Empty when the device can render the coupling stably.
-std::string couplingProblem(const physics::CouplingDef& c, const DeviceSpec& spec) {
+}  // namespace
+
+std::string ServoLoop::couplingProblem(const physics::CouplingDef& c, const DeviceSpec& spec) {
   std::string problem = physics::validateCoupling(c);
   if (!problem.empty()) return problem;
   const double stiffest = c.stiffness * (c.method == physics::ForceMethod::M3 ? std::max(1.0, c.alpha) : 1.0);
@@ -27,8 +28,6 @@ std::string couplingProblem(const physics::CouplingDef& c, const DeviceSpec& spe
     return "coupling stiffness exceeds the device's maxStiffness";
   return {};
 }
-
-}  // namespace
 
 ServoLoop::ServoLoop(const ServoLoopDef& def, HapticDevice& device)
     : def_(def),

@@ -91,6 +91,10 @@ class ServoLoop {
   // sends forces. Throws std::invalid_argument for an invalid definition.
   ServoLoop(const ServoLoopDef& def, HapticDevice& device);
   ~ServoLoop();
+  // Empty when `device` can render the coupling stably, else why not (what
+  // the constructor and post() refuse): for checking a plan of trials
+  // before the first one runs.
+  static std::string couplingProblem(const physics::CouplingDef& coupling, const DeviceSpec& device);
   ServoLoop(const ServoLoop&) = delete;
   ServoLoop& operator=(const ServoLoop&) = delete;
 

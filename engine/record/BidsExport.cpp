@@ -124,7 +124,7 @@ BidsFiles BidsExport::write(const Recording& r, const std::filesystem::path& dir
   j["TrackedPointsCount"] = 5;  // mass point (face and scene), hemisphere, contact (plane, sphere), proxy, device
   j["MissingValues"] = "n/a";
   j["SubjectArtefactDescription"] = "n/a";
-  writeFileAtomically(files.motionJson, j.dump(2) + "\n");
+  writeFileAtomically(files.motionJson, j.dump(2, ' ', false, decltype(j)::error_handler_t::replace) + "\n");
   return files;
 }
 

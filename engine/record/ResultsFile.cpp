@@ -34,7 +34,63 @@ std::string number(double v) {
   return s;
 }
 
+// One record of RFC 4180 text from `at`: its fields, and `at` moved past its
+// line end. False when the text ends before the line end.
+bool readRecord(const std::string& text, std::size_t& at, std::vector<std::string>& fields, int& line) {
+  fields.assign(1, std::string());
+  bool quoted = false;
+  while (at < text.size()) {
+    const char c = text[at++];
+    if (quoted) {
+      if (c != '"') {
+        line += c == '\n';
+        fields.back() += c;
+      } else if (at < text.size() && text[at] == '"') {
+        fields.back() += '"';
+        ++at;
+      } else {
+        quoted = false;
+      }
+    } else if (c == '"') {
+      quoted = true;
+    } else if (c == ',') {
+      fields.emplace_back();
+    } else if (c == '\n') {
+      ++line;
+      return true;
+    } else if (c != '\r') {
+      fields.back() += c;
+    }
+  }
+  return false;
+}
+
 }  // namespace
+
+ResultsTable ResultsFile::read() const {
+  ResultsTable table;
+  std::error_code ec;
+  if (!std::filesystem::exists(path_, ec)) return table;
+  const std::string text = readWholeFile(path_);
+  std::size_t at = 0;
+  int line = 1;
+  std::vector<std::string> fields;
+  while (at < text.size()) {
+    const int first = line;
+    if (!readRecord(text, at, fields, line))
+      throw RecordError(path_.string() + ": line " + std::to_string(first) +
+                        ": the last row has no line end (a write was cut short)");
+    if (table.columns.empty()) {
+      table.columns = fields;
+    } else if (fields.size() != table.columns.size()) {
+      throw RecordError(path_.string() + ": line " + std::to_string(first) + ": " + std::to_string(fields.size()) +
+                        " fields, the header has " + std::to_string(table.columns.size()));
+    } else {
+      table.rows.push_back(fields);
+    }
+  }
+  return table;
+}
 
 std::vector<std::string> ResultsFile::columns(const TrialResult& r) {
   std::vector<std::string> c = {"participant", "session", "trial",     "level",        "level_hash",

@@ -30,6 +30,12 @@ struct TrialResult {
   Fields extra;               // more columns, in this order
 };
 
+// results.csv read back: the header's columns and every row's fields.
+struct ResultsTable {
+  std::vector<std::string> columns;
+  std::vector<std::vector<std::string>> rows;
+};
+
 class ResultsFile {
  public:
   explicit ResultsFile(std::filesystem::path path) : path_(std::move(path)) {}
@@ -37,6 +43,12 @@ class ResultsFile {
   // Throws RecordError naming the file on an I/O error or a column mismatch.
   void append(const TrialResult& result) const;
   const std::filesystem::path& path() const { return path_; }
+  // The file's header and rows (RFC 4180: quoted fields may hold commas,
+  // quotes and line breaks); a missing file is an empty table. Throws
+  // RecordError naming the file and line for a row with more or fewer
+  // fields than the header, or a last row without its line end (a write cut
+  // short: appends are single writes, so only a power cut leaves one).
+  ResultsTable read() const;
 
   static std::vector<std::string> columns(const TrialResult& result);
 

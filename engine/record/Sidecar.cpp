@@ -94,7 +94,9 @@ std::string Sidecar::toJson(const TrialMeta& m, const SidecarStatus& s) {
     j["outcome"] = nullptr;
     j["timing"] = nullptr;
   }
-  return j.dump(2) + "\n";
+  // Text from a level or protocol is bytes: invalid UTF-8 becomes U+FFFD
+  // instead of an exception (JSON must be UTF-8).
+  return j.dump(2, ' ', false, ordered_json::error_handler_t::replace) + "\n";
 }
 
 void Sidecar::fromJson(const std::string& text, const std::string& source, TrialMeta& m, SidecarStatus& s) {

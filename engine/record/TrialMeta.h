@@ -54,5 +54,7 @@ struct TrialEnd {
 
 // This build's version (the CMake project version).
 const char* softwareVersion();
+// Now as ISO-8601 UTC with milliseconds, e.g. 2026-11-22T06:40:00.123Z.
+std::string utcTimestamp();
 
 }  // namespace hemiroll::record

@@ -23,19 +23,6 @@ bool safeFileName(const std::string& name) {
   return true;
 }
 
-// ISO-8601 UTC with milliseconds, e.g. 2026-11-22T06:40:00.123Z.
-std::string utcNow() {
-  const auto now = std::chrono::system_clock::now();
-  const std::time_t seconds = std::chrono::system_clock::to_time_t(now);
-  const auto ms = std::chrono::duration_cast<std::chrono::milliseconds>(now.time_since_epoch()).count() % 1000;
-  std::tm tm{};
-  gmtime_r(&seconds, &tm);
-  char text[64];
-  std::snprintf(text, sizeof text, "%04d-%02d-%02dT%02d:%02d:%02d.%03dZ", tm.tm_year + 1900, tm.tm_mon + 1,
-                tm.tm_mday, tm.tm_hour, tm.tm_min, tm.tm_sec, static_cast<int>(ms));
-  return text;
-}
-
 }  // namespace
 
 struct TrialRecorder::Impl {
@@ -83,7 +70,7 @@ struct TrialRecorder::Impl {
     SidecarStatus s;
     s.complete = end.has_value();
     s.startTime = startTime;
-    s.endTime = end ? utcNow() : std::string();
+    s.endTime = end ? utcTimestamp() : std::string();
     s.rows = rows;
     s.tickGaps = tickGaps;
     s.end = end;
@@ -94,7 +81,7 @@ struct TrialRecorder::Impl {
   RecorderOptions options;
   std::filesystem::path csvPath, sidecarPath;
   DurableFile csv;
-  std::string startTime = utcNow();
+  std::string startTime = utcTimestamp();
   std::string line;
   std::uint64_t rows = 0, tickGaps = 0, lastTick = 0;
   Clock::time_point lastFlush = Clock::now();

@@ -2,19 +2,15 @@
 
 #include <lua.hpp>
 
-#include <cctype>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "engine/script/LevelFieldChecks.h"
-#include "engine/script/LevelSourceMap.h"
 #include "engine/script/LevelTaskReader.h"
 #include "engine/script/LuaSandbox.h"
 #include "engine/script/LuaTableReader.h"
 #include "engine/script/ScriptError.h"
 #include "engine/script/ScriptModules.h"
+#include "engine/script/ScriptSourceFile.h"
 
 namespace hemiroll::script {
 
@@ -36,29 +32,6 @@ class StackTop {
 constexpr std::initializer_list<const char*> kPlotChannels = {
     "x_p", "y_p", "xd_p", "yd_p", "w_x", "w_y", "w_z", "u_a", "v_a", "u_o", "v_o", "psi",
     "omega_norm", "energy", "proxy_x", "proxy_y", "proxy_z", "force_x", "force_y", "force_z", "force_norm"};
-
-// "name:12:" at the start: the message already has its line.
-bool startsWithLine(const std::string& message, const std::string& name) {
-  if (message.compare(0, name.size(), name) != 0 || message.size() <= name.size() + 1 || message[name.size()] != ':')
-    return false;
-  std::size_t i = name.size() + 1;
-  const std::size_t digits = i;
-  while (i < message.size() && std::isdigit(static_cast<unsigned char>(message[i]))) ++i;
-  return i > digits && i < message.size() && message[i] == ':';
-}
-
-// "name: path: message" -> "name:LINE: path: message", the line from the source.
-std::string withLine(const std::string& message, const std::string& name, std::string_view source) {
-  if (startsWithLine(message, name)) return message;
-  const std::string prefix = name + ": ";
-  if (message.compare(0, prefix.size(), prefix) != 0) return name + ":1: " + message;
-  const std::string rest = message.substr(prefix.size());
-  const std::size_t colon = rest.find(": ");
-  const std::string path = colon == std::string::npos ? "" : rest.substr(0, colon);
-  const bool pathLike = !path.empty() && path.find(' ') == std::string::npos;
-  const LevelSourceMap map(source);
-  return name + ":" + std::to_string(map.lineOf(pathLike ? path : "")) + ": " + rest;
-}
 
 void readMeta(const LuaTableReader& top, LevelDef& def) {
   const auto name = top.string("name");
@@ -284,35 +257,19 @@ LoadedLevel load(const LevelLoadOptions& options, std::string_view source, const
     sandbox->runChunk(source, name, 1);
     LoadedLevel out;
     out.def = readLevel(L, name);
+    if (options.adjust) options.adjust(out.def);
     lua_settop(L, restore.top() + 1);  // just the level table, for the script
     out.script = std::make_shared<LevelScript>(sandbox, out.def);
     return out;
   } catch (const ScriptError& e) {
-    throw ScriptError(withLine(e.what(), name, source));
+    throw ScriptError(withSourceLine(e.what(), name, source));
   }
-}
-
-std::string readText(const std::string& path) {
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error))
-    throw ScriptError(path + ":1: " + (std::filesystem::exists(path, error) ? "not a regular file" : "no such file"));
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ScriptError(path + ":1: cannot open the level file");
-  std::ostringstream content;
-  content << in.rdbuf();
-  if (in.bad()) throw ScriptError(path + ":1: cannot read the level file");
-  std::string text = content.str();
-  // As the stand-alone interpreter: skip a UTF-8 byte-order mark, blank out a
-  // first line starting with '#', keeping line numbers.
-  if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);
-  if (!text.empty() && text.front() == '#') text.erase(0, std::min(text.find('\n'), text.size()));
-  return text;
 }
 
 }  // namespace
 
 LoadedLevel LevelLoader::loadFile(const std::string& path) const {
-  const std::string text = readText(path);
+  const std::string text = readScriptText(path, "level file");
   if (text.size() > options_.limits.memoryLimitBytes) throw ScriptError(path + ":1: file is larger than the memory limit");
   return load(options_, text, path, options_.scriptsDir.empty() ? defaultScriptsDir(path) : options_.scriptsDir);
 }

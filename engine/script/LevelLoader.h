@@ -9,6 +9,7 @@
 // line of the returned table when the field is computed elsewhere).
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -26,6 +27,10 @@ struct LevelLoadOptions {
   // loadFile, and no modules for loadSource.
   std::string scriptsDir;
   std::uint64_t seed = 0;  // hemiroll.random's seed for this trial
+  // Called with the level as its file declares it, before the level's script
+  // is built from it: a research protocol's overrides (applyTrialOverrides),
+  // so that the judge, the callbacks' state and the score all see them.
+  std::function<void(LevelDef&)> adjust;
 };
 
 struct LoadedLevel {

@@ -16,6 +16,10 @@
 // (docs/RUN.md): loading a bot module in its own sandbox and calling its
 // init/act with a read-only observation view that allocates nothing per tick
 // (BotScript, BotObservation); the trial loop that feeds it is the game's.
+// Research protocols (docs/PROTOCOLS.md): loading a protocol file
+// (ProtocolLoader -> ProtocolDef, errors "file:line:" as for levels, level
+// files checked to exist) and expanding it into a deterministic trial plan
+// (ProtocolPlan); running a session is the game's.
 //
 // What a script can reach: the base functions assert, error, getmetatable,
 // ipairs, next, pairs, pcall, print (to stderr), rawequal, rawlen, select,
@@ -25,10 +29,11 @@
 // collectgarbage, rawget, rawset; `require` only where the engine installs
 // its own (ScriptModules.h); the string metatable is hidden.
 //
-// Must not know: any particular level (the judge evaluates what a level
-// declares), the game, commands, command-line flags, files other than the
-// script it is asked to load and modules under the scripts/ directory it is
-// given, threads, clocks, devices, rendering. Depends on engine/physics (for
+// Must not know: any particular level or protocol (the judge evaluates what a
+// level declares), the game, commands, command-line flags, files other than
+// the script it is asked to load, modules under the scripts/ directory it is
+// given and (only whether they exist) the level files a protocol names,
+// threads, clocks, devices, rendering. Depends on engine/physics (for
 // the definitions it fills) and Lua.
 //
 // Known limit: the quota counts Lua VM instructions, so a single long call
@@ -45,12 +50,16 @@
 #include "engine/script/LevelScript.h"
 #include "engine/script/LuaProxyTrajectory.h"
 #include "engine/script/LuaSandbox.h"
+#include "engine/script/ProtocolDef.h"
+#include "engine/script/ProtocolLoader.h"
+#include "engine/script/ProtocolPlan.h"
 #include "engine/script/LuaTableReader.h"
 #include "engine/script/SandboxLimits.h"
 #include "engine/script/ScenarioDef.h"
 #include "engine/script/ScenarioLoader.h"
 #include "engine/script/ScriptError.h"
 #include "engine/script/ScriptModules.h"
+#include "engine/script/ScriptSourceFile.h"
 #include "engine/script/TaskDef.h"
 #include "engine/script/TaskJudge.h"
 #include "engine/script/TrialSummary.h"

@@ -1,16 +1,18 @@
 #include "game/app/Settings.h"
 
+#include "engine/script/ProtocolDef.h"
+
 namespace hemiroll::game {
 
+// The player's override is a protocol's, applied the same way (ProtocolDef).
 physics::CouplingDef couplingFor(const Settings& s, const physics::CouplingDef& level) {
   if (!s.overrideCoupling) return level;
-  physics::CouplingDef c = level;
-  c.method = s.method == 0 ? physics::ForceMethod::M1 : s.method == 1 ? physics::ForceMethod::M2 : physics::ForceMethod::M3;
-  c.visualOnly = s.method == 3;
-  c.stiffness = s.stiffness;
-  c.damping = s.damping;
-  c.alpha = s.alpha;
-  return c;
+  script::TrialOverrides o;
+  o.method = methodLabel(s.method);  // "?" for an unknown index: M3, as before
+  o.stiffness = s.stiffness;
+  o.damping = s.damping;
+  o.alpha = s.alpha;
+  return script::overriddenCoupling(o, level);
 }
 
 const char* methodLabel(int method) {

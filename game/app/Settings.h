@@ -27,8 +27,9 @@ struct Settings {
   render::CameraMode camera = render::CameraMode::Follow;
   double zoom = 1.0;
   bool ghost = true;           // race against your best run of a level (its replay, translucent)
-  // Research session.
+  // Research session (ResearchScreen): who plays, and which session of theirs.
   std::string participant = "player";
+  std::string sessionId = "1";
 };
 
 // The coupling the play session uses: the level's, or the player's override

@@ -173,6 +173,24 @@ TakeValue integerIn(int& target, int min, int max, std::string what) {
   };
 }
 
+TakeValue unsignedUpTo(std::uint64_t& target, std::uint64_t max, std::string what) {
+  return [&target, max, what = std::move(what)](const std::string& flag, const std::string& value) {
+    unsigned long long x = 0;
+    if (!readUnsigned(value, x) || x > max) return needs(flag, what, value);
+    target = x;
+    return std::string();
+  };
+}
+
+TakeValue unsignedUpTo(std::optional<std::uint64_t>& target, std::uint64_t max, std::string what) {
+  return [&target, max, what = std::move(what)](const std::string& flag, const std::string& value) {
+    unsigned long long x = 0;
+    if (!readUnsigned(value, x) || x > max) return needs(flag, what, value);
+    target = x;
+    return std::string();
+  };
+}
+
 TakeValue text(std::string& target, std::string what) {
   return [&target, what = std::move(what)](const std::string& flag, const std::string& value) {
     if (value.empty()) return needs(flag, what, value);

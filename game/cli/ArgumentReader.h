@@ -9,6 +9,7 @@
 // the values into engine types themselves).
 
 #include <array>
+#include <cstdint>
 #include <cstddef>
 #include <functional>
 #include <optional>
@@ -76,6 +77,9 @@ TakeValue positiveNumber(std::optional<double>& target, std::string what);
 // A whole number in [min, max].
 TakeValue integerIn(long long& target, long long min, long long max, std::string what);
 TakeValue integerIn(int& target, int min, int max, std::string what);
+// A whole number (decimal digits) in [0, max]: seeds.
+TakeValue unsignedUpTo(std::uint64_t& target, std::uint64_t max, std::string what);
+TakeValue unsignedUpTo(std::optional<std::uint64_t>& target, std::uint64_t max, std::string what);
 // A non-empty text ("a file name").
 TakeValue text(std::string& target, std::string what);
 TakeValue text(std::optional<std::string>& target, std::string what);

@@ -1,6 +1,7 @@
 #include "game/commands/RunCommand.h"
 
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <stdexcept>
@@ -12,6 +13,7 @@
 #include "game/commands/RunOptions.h"
 #include "game/play/HeadlessTrial.h"
 #include "game/play/JsonLine.h"
+#include "game/play/ReplayCapture.h"
 #include "game/play/TrialRecording.h"
 
 namespace hemiroll::game {
@@ -21,6 +23,39 @@ namespace {
 int badInput(const std::string& message) {
   std::cerr << "hemiroll run: " << message << "\n";
   return kExitUsage;
+}
+
+// Letters, digits, '-' and '_' only (TrialMeta's rule for file names).
+std::string safeName(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '_';
+    out += ok ? c : '_';
+  }
+  return out.empty() ? "trial" : out;
+}
+
+std::string stem(const std::string& path) { return std::filesystem::path(path).stem().string(); }
+
+// DIR/<level>_<bot>_seed<N>, participant "bot", session "run" (RUN.md).
+TrialRecordingDef recordingDef(const RunOptions& o) {
+  TrialRecordingDef def;
+  def.dir = *o.recordDir;
+  def.ids = {"bot", "run"};
+  def.trialId = safeName(stem(o.levelPath)) + "_" + safeName(stem(o.botPath)) + "_seed" + std::to_string(o.seed);
+  def.renameIfTaken = true;
+  def.taskName = "hemiroll run";
+  def.levelHash = levelFileHash(o.levelPath);
+  def.seed = o.seed;
+  def.sidecarExtra = {{"level_file", o.levelPath}, {"bot_file", o.botPath}, {"realtime", o.realtime ? "true" : "false"}};
+  return def;
+}
+
+record::Fields resultColumns(const RunOptions& o, const TrialResult& r) {
+  record::Fields extra = TrialRecording::scoreFields(r);
+  extra.emplace_back("bot_file", o.botPath);
+  extra.emplace_back("ticks", std::to_string(r.ticks));
+  return extra;
 }
 
 std::string resultLine(const RunOptions& o, const TrialResult& r) {
@@ -70,7 +105,11 @@ int runRunCommand(const std::vector<std::string>& args) {
   std::unique_ptr<TrialRecording> recording;
   TrialResult result;
   try {
-    if (options.recordDir) recording = std::make_unique<TrialRecording>(*options.recordDir, level.def, options, settings);
+    if (options.recordDir) {
+      recording = std::make_unique<TrialRecording>(recordingDef(options), level.def,
+                                                   HeadlessTrial::loopDefFor(level.def));
+      recording->attach(settings);
+    }
     result = HeadlessTrial(level, *bot, settings).run();
   } catch (const std::invalid_argument& e) {
     // The level asks for something the device cannot do (a coupling stiffer
@@ -83,7 +122,7 @@ int runRunCommand(const std::vector<std::string>& args) {
   if (!result.scoreError.empty()) std::cerr << "hemiroll run: " << result.scoreError << "\n";
   if (recording) {
     try {
-      recording->finish(result);
+      recording->finish(result, resultColumns(options, result));
     } catch (const TrialRecordingError& e) {
       std::cerr << "hemiroll run: " << e.what() << "\n";
       std::printf("%s\n", resultLine(options, result).c_str());

@@ -35,13 +35,7 @@ RunOptionsResult parseRunOptions(const std::vector<std::string>& args) {
       .option("--bot", cli::text(o.botPath, "a bot file"))
       .option("--record", cli::text(o.recordDir, "a directory"))
       // Lua integers are signed 64-bit, and the bot receives the seed as one.
-      .option("--seed", [&](const std::string& flag, const std::string& value) {
-        unsigned long long seed = 0;
-        if (!cli::readUnsigned(value, seed) || seed > 0x7fffffffffffffffULL)
-          return cli::needs(flag, "a whole number from 0 to 9223372036854775807", value);
-        o.seed = seed;
-        return std::string();
-      });
+      .option("--seed", cli::unsignedUpTo(o.seed, 0x7fffffffffffffffULL, "a whole number from 0 to 9223372036854775807"));
   result.error = reader.read(args);
   if (!result.error.empty() || o.help) return result;
   if (o.levelPath.empty()) result.error = "missing the level file";

@@ -60,6 +60,12 @@ JsonLine& JsonLine::add(std::string_view name, long long value) {
   return *this;
 }
 
+JsonLine& JsonLine::addBool(std::string_view name, bool value) {
+  key(name);
+  text_ += value ? "true" : "false";
+  return *this;
+}
+
 JsonLine& JsonLine::addNull(std::string_view name) {
   key(name);
   text_ += "null";

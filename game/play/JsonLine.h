@@ -17,6 +17,8 @@ class JsonLine {
   JsonLine& add(std::string_view key, double value);
   JsonLine& add(std::string_view key, long long value);
   JsonLine& addNull(std::string_view key);
+  // true / false (a separate name: a bool overload would catch pointers).
+  JsonLine& addBool(std::string_view key, bool value);
 
   // "{...}" without a newline.
   std::string str() const { return text_ + "}"; }

@@ -22,7 +22,7 @@ PlaySession::PlaySession(script::LoadedLevel& level, const PlaySessionDef& def)
       mapping_(def.pointer),
       ring_(std::make_unique<haptics::RecordRing>()),
       deviceName_(def.device),
-      judging_(level, nullptr, 10, /*faultsEndTrial=*/false) {
+      judging_(level, def.recordRing, def.recordEvery, /*faultsEndTrial=*/false) {
   if (def.device == "mouse") {
     auto mouse = std::make_unique<haptics::MouseDevice>(def.deviceOptions.mouse);
     mouse_ = mouse.get();

@@ -49,6 +49,11 @@ struct PlaySessionDef {
   // its header (levelFileHash of the level file).
   std::filesystem::path replayFile;
   std::string levelHash;
+  // Recording (a research session's trial): every recordEvery-th judged
+  // tick is forwarded into this ring, which a TrialRecorder's writer thread
+  // drains. nullptr = not recorded.
+  haptics::RecordRing* recordRing = nullptr;
+  int recordEvery = 10;
 };
 
 class PlaySession {

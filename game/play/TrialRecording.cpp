@@ -4,24 +4,11 @@
 #include <filesystem>
 
 #include "engine/record/RecordError.h"
-#include "engine/record/RecordingSession.h"
 #include "engine/record/TrialRecorder.h"
 
 namespace hemiroll::game {
 
 namespace {
-
-// Letters, digits, '-', '_' and '.' only (TrialMeta's rule for file names).
-std::string safeName(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '_';
-    out += ok ? c : '_';
-  }
-  return out.empty() ? "trial" : out;
-}
-
-std::string stem(const std::string& path) { return std::filesystem::path(path).stem().string(); }
 
 std::string freshTrialId(const std::filesystem::path& dir, const std::string& base) {
   std::string id = base;
@@ -32,46 +19,57 @@ std::string freshTrialId(const std::filesystem::path& dir, const std::string& ba
 
 }  // namespace
 
-TrialRecording::TrialRecording(const std::string& dir, const script::LevelDef& level, const RunOptions& options,
-                               TrialSettings& settings)
-    : ring_(std::make_unique<haptics::RecordRing>()), botPath_(options.botPath) {
-  const haptics::ServoLoopDef loop = HeadlessTrial::loopDefFor(level);
+TrialRecording::TrialRecording(const TrialRecordingDef& def, const script::LevelDef& level,
+                               const haptics::ServoLoopDef& loop)
+    : ring_(std::make_unique<haptics::RecordRing>()) {
   // The level's recording rate, as a whole number of ticks per row.
-  const int every = std::max(1, static_cast<int>(std::lround(1.0 / (level.scene.recordRate * loop.period))));
+  recordEvery_ = std::max(1, static_cast<int>(std::lround(1.0 / (level.scene.recordRate * loop.period))));
   try {
-    session_ = std::make_unique<record::RecordingSession>(dir, record::SessionIds{"bot", "run"});
+    session_ = std::make_unique<record::RecordingSession>(def.dir, def.ids);
     record::TrialMeta meta;
-    trialId_ = freshTrialId(dir, safeName(stem(options.levelPath)) + "_" + safeName(stem(options.botPath)) + "_seed" +
-                                     std::to_string(options.seed));
+    trialId_ = def.renameIfTaken ? freshTrialId(def.dir, def.trialId) : def.trialId;
     meta.trialId = trialId_;
-    meta.taskName = "hemiroll run";
+    meta.taskName = def.taskName;
     meta.levelName = level.name;
-    meta.seed = options.seed;
+    meta.levelHash = def.levelHash;
+    meta.seed = def.seed;
     meta.params = level.params;
-    meta.coupling = level.coupling;
-    meta.deviceName = "bot";
-    meta.deviceSpec = HeadlessTrial::deviceSpec();
+    meta.coupling = loop.coupling;
+    meta.deviceName = def.deviceName;
+    meta.deviceSpec = def.deviceSpec;
     meta.tickPeriod = loop.period;
-    meta.recordEvery = every;
-    meta.extra = {{"level_file", options.levelPath}, {"bot_file", options.botPath},
-                  {"realtime", options.realtime ? "true" : "false"}};
+    meta.recordEvery = recordEvery_;
+    meta.extra = def.sidecarExtra;
     recorder_ = std::make_unique<record::TrialRecorder>(session_->beginTrial(meta));
   } catch (const record::RecordError& e) {
     throw TrialRecordingError(e.what());
   } catch (const std::filesystem::filesystem_error& e) {
-    throw TrialRecordingError(dir + ": " + e.what());
+    throw TrialRecordingError(def.dir + ": " + e.what());
   }
-  settings.recordRing = ring_.get();
-  settings.recordEvery = every;
-  settings.drainRecording = [this] { recorder_->drain(*ring_); };
 }
 
 TrialRecording::~TrialRecording() = default;
 
-void TrialRecording::finish(const TrialResult& result) {
+void TrialRecording::attach(TrialSettings& settings) {
+  settings.recordRing = ring_.get();
+  settings.recordEvery = recordEvery_;
+  settings.drainRecording = [this] { recorder_->drain(*ring_); };
+}
+
+void TrialRecording::startWriter() { recorder_->startWriter(*ring_); }
+
+record::Fields TrialRecording::scoreFields(const TrialResult& result) {
+  const bool hasScore = result.score && std::isfinite(*result.score);
+  return {{"has_score", hasScore ? "true" : "false"}, {"medal", script::medalName(result.medal)}};
+}
+
+void TrialRecording::finish(const TrialResult& result, const record::Fields& extra,
+                            const std::optional<haptics::LoopTimingSummary>& timing) {
   record::TrialEnd end;
   end.outcome = result.outcome == script::TrialOutcome::Success ? "success" : "fail";
   end.reason = result.reason;
+  end.hasTiming = timing.has_value();
+  if (timing) end.timing = *timing;
   try {
     recorder_->finish(end);
     record::TrialResult row = record::RecordingSession::resultOf(*recorder_, end, result.time);
@@ -79,10 +77,7 @@ void TrialRecording::finish(const TrialResult& result) {
     // (no score function) is 0 there and marked by has_score = false.
     const bool hasScore = result.score && std::isfinite(*result.score);
     row.score = hasScore ? *result.score : 0.0;
-    row.extra = {{"has_score", hasScore ? "true" : "false"},
-                 {"medal", script::medalName(result.medal)},
-                 {"bot_file", botPath_},
-                 {"ticks", std::to_string(result.ticks)}};
+    row.extra = extra;
     session_->appendResult(row);
   } catch (const record::RecordError& e) {
     throw TrialRecordingError(e.what());

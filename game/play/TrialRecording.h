@@ -1,23 +1,23 @@
 #pragma once
-// `hemiroll run --record DIR`: one trial recorded through engine/record.
-// DIR becomes a recording session (created if needed): the trial's samples
-// go to DIR/<trial>.csv with its sidecar DIR/<trial>.json (TrialRecorder,
-// fed from the servo loop's record ring), and one summary row is appended
-// to DIR/results.csv when the trial ends. The trial id is
-// "<level file stem>_<bot file stem>_seed<N>", with "-2", "-3", ... added
-// when DIR already holds a trial of that name (a rerun never overwrites).
+// One trial recorded through engine/record, for `hemiroll run --record DIR`,
+// `hemiroll session` and the game's research sessions: the servo loop's
+// record ring drained into a TrialRecorder (DIR/<trial>.csv + sidecar
+// DIR/<trial>.json), and one summary row appended to DIR/results.csv when
+// the trial ends. The ring is drained on the trial's own thread between
+// ticks (headless: attach()) or by the recorder's writer thread (real time:
+// startWriter()); both write through the same formatting code.
 
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
 #include "engine/haptics/RecordRow.h"
+#include "engine/record/RecordingSession.h"
 #include "engine/script/LevelDef.h"
-#include "game/commands/RunOptions.h"
 #include "game/play/HeadlessTrial.h"
 
 namespace hemiroll::record {
-class RecordingSession;
 class TrialRecorder;
 }  // namespace hemiroll::record
 
@@ -29,27 +29,59 @@ class TrialRecordingError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+struct TrialRecordingDef {
+  std::string dir;                  // the session folder (created if needed)
+  record::SessionIds ids;           // participant and session
+  std::string trialId;              // names the files: letters, digits, '-', '_', '.'
+  // Add "-2", "-3", ... while the id's files exist (a rerun of `hemiroll run`
+  // never overwrites); otherwise existing files are an error.
+  bool renameIfTaken = false;
+  std::string taskName = "hemiroll";
+  std::string levelHash;            // levelFileHash of the level file
+  std::uint64_t seed = 0;
+  std::string deviceName = "bot";
+  haptics::DeviceSpec deviceSpec = HeadlessTrial::deviceSpec();
+  record::Fields sidecarExtra;      // the sidecar's `extra`
+};
+
 class TrialRecording {
  public:
-  // Opens the session and the trial's files, and points `settings` at the
-  // ring and the drain. Throws TrialRecordingError.
-  TrialRecording(const std::string& dir, const script::LevelDef& level, const RunOptions& options,
-                 TrialSettings& settings);
+  // Opens the session folder and the trial's files (the sidecar says
+  // "complete": false until finish()). `loop` is the trial's servo loop
+  // definition (its period); rows are kept at the level's record rate.
+  // Throws TrialRecordingError.
+  TrialRecording(const TrialRecordingDef& def, const script::LevelDef& level, const haptics::ServoLoopDef& loop);
   ~TrialRecording();
   TrialRecording(const TrialRecording&) = delete;
   TrialRecording& operator=(const TrialRecording&) = delete;
 
-  // Completes the sidecar and appends the results row. Throws TrialRecordingError.
-  void finish(const TrialResult& result);
+  // The ring the rows go through, and every how many ticks one is kept.
+  haptics::RecordRing& ring() { return *ring_; }
+  int recordEvery() const { return recordEvery_; }
+  // Headless: points the trial's settings at the ring and the drain.
+  void attach(TrialSettings& settings);
+  // Real time: the recorder's writer thread drains the ring until finish().
+  void startWriter();
+
+  // Completes the sidecar (outcome, reason; the loop's timing for real-time
+  // trials) and appends the results row with `extra` as its extra columns
+  // (scoreFields() gives the usual has_score and medal). Throws TrialRecordingError.
+  void finish(const TrialResult& result, const record::Fields& extra,
+              const std::optional<haptics::LoopTimingSummary>& timing = std::nullopt);
+
+  // has_score ("true"/"false": results.csv's score column is 0 when the
+  // level has none) and medal.
+  static record::Fields scoreFields(const TrialResult& result);
 
   const std::string& trialId() const { return trialId_; }
+  const record::RecordingSession& session() const { return *session_; }
 
  private:
   std::unique_ptr<haptics::RecordRing> ring_;  // 1 MB: on the heap, allocated once
   std::unique_ptr<record::RecordingSession> session_;
   std::unique_ptr<record::TrialRecorder> recorder_;
   std::string trialId_;
-  std::string botPath_;
+  int recordEvery_ = 10;
 };
 
 }  // namespace hemiroll::game

@@ -42,7 +42,8 @@ void PauseScreen::paint() {
   if (!reason_.empty()) ImGui::TextColored(ImVec4(0.95f, 0.75f, 0.3f, 1), "%s", reason_.c_str());
   const ImVec2 button(-1, 0);
   if (ImGui::Button("Continue  (Esc)", button)) resume();
-  if (ImGui::Button("Restart  (R)", button)) restart();
+  // A research session's trial is recorded once: it cannot be restarted.
+  if (!play_.inResearchSession() && ImGui::Button("Restart  (R)", button)) restart();
   if (ImGui::Button("Quit the trial  (Q)", button)) quit();
   ImGui::End();
 }

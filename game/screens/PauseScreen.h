@@ -1,8 +1,9 @@
 #pragma once
 // Pause, over the play screen (which keeps being drawn, frozen: the servo
 // loop got a Pause command, force zero at once). Continue (Escape, Enter),
-// restart (R), quit the trial (Q: it ends as a failure, "quit by the
-// player", and the results screen follows).
+// restart (R; not a research session's trial, which is recorded once), quit
+// the trial (Q: it ends as a failure, "quit by the player", and the results
+// screen follows, or the session screen for a session's trial).
 
 #include <string>
 

@@ -6,7 +6,10 @@
 #include <cstdio>
 
 #include "engine/physics/StateLayout.h"
+#include "engine/haptics/devices/DeviceFactory.h"
 #include "game/app/App.h"
+#include "game/play/TrialRecording.h"
+#include "game/research/ResearchSession.h"
 #include "game/screens/PauseScreen.h"
 #include "game/screens/ResultsScreen.h"
 #include "game/screens/ScreenLayout.h"
@@ -19,26 +22,69 @@ namespace hemiroll::game {
 
 PlayScreen::PlayScreen(App& app, std::string levelPath) : Screen(app), levelPath_(std::move(levelPath)) {}
 
+PlayScreen::PlayScreen(App& app, ResearchSession& session, std::function<void(const SessionTrialEnd&)> done)
+    : Screen(app), levelPath_(session.nextTrial().levelFile), research_(&session), sessionDone_(std::move(done)) {}
+
 PlayScreen::~PlayScreen() = default;
+
+// The session's next trial: its level with the plan's overrides, recorded
+// into the session folder (rows through the judge's forward ring, drained by
+// the recorder's writer thread), its replay log beside the trial's files.
+void PlayScreen::beginSessionTrial(PlaySessionDef& def) {
+  level_ = research_->loadNextLevel();
+  const ManifestTrial& trial = research_->nextTrial();
+  def.coupling = level_.def.coupling;
+  def.replayFile = research_->folder() / (trial.trialId + ".replay");
+  def.levelHash = trial.levelHash;
+  // The player's device: its mapping and spec go into the trial's sidecar.
+  haptics::ServoLoopDef loop = HeadlessTrial::loopDefFor(level_.def, def.device);
+  const std::optional<haptics::DeviceSpec> spec = haptics::DeviceFactory().specOf(def.device, def.deviceOptions);
+  if (!spec) throw std::runtime_error("unknown device '" + def.device + "'");
+  recording_ = research_->recordNext(level_.def, loop, def.device, *spec);
+  def.recordRing = &recording_->ring();
+  def.recordEvery = recording_->recordEvery();
+  session_ = std::make_unique<PlaySession>(level_, def);
+  recording_->startWriter();
+}
+
+void PlayScreen::endSessionTrial(SessionTrialEnd end) {
+  if (sessionEnded_) return;  // two Escapes in one frame: the stack changes once
+  sessionEnded_ = true;
+  if (end.recorded) {
+    try {
+      research_->finishNext(*recording_, end.result, session_->timing());
+    } catch (const std::exception& e) {
+      end.recorded = false;
+      end.error = e.what();
+    }
+  }
+  recording_.reset();
+  app_.screens().pop();  // applied after this frame: this screen lives until then
+  sessionDone_(end);
+}
 
 void PlayScreen::begin() {
   error_.clear();
   session_.reset();
   try {
-    level_ = script::LevelLoader().loadFile(levelPath_);
     PlaySessionDef def;
     def.device = app_.settings().device;
     def.deviceOptions.joystick.index = app_.settings().joystickIndex;
     def.deviceOptions.udp.port = static_cast<std::uint16_t>(app_.settings().udpPort);
     def.requestRealtime = app_.def().requestRealtime;
-    def.coupling = couplingFor(app_.settings(), level_.def.coupling);
-    // A replay repeats the trial only on the level's own loop definition:
-    // none while the player overrides the force method.
-    if (!app_.settings().overrideCoupling) {
-      def.replayFile = dataDirectory() / "replays" / "last-trial.hrr";
-      def.levelHash = levelFileHash(levelPath_);
+    if (research_ != nullptr) {
+      beginSessionTrial(def);
+    } else {
+      level_ = script::LevelLoader().loadFile(levelPath_);
+      def.coupling = couplingFor(app_.settings(), level_.def.coupling);
+      // A replay repeats the trial only on the level's own loop definition:
+      // none while the player overrides the force method.
+      if (!app_.settings().overrideCoupling) {
+        def.replayFile = dataDirectory() / "replays" / "last-trial.hrr";
+        def.levelHash = levelFileHash(levelPath_);
+      }
+      session_ = std::make_unique<PlaySession>(level_, def);
     }
-    session_ = std::make_unique<PlaySession>(level_, def);
     session_->start();
   } catch (const std::exception& e) {
     error_ = e.what();
@@ -47,7 +93,8 @@ void PlayScreen::begin() {
   }
   const bool mouse = app_.settings().device == "mouse";
   hud_.reset();
-  const physics::CouplingDef coupling = couplingFor(app_.settings(), level_.def.coupling);
+  const physics::CouplingDef coupling =
+      research_ != nullptr ? level_.def.coupling : couplingFor(app_.settings(), level_.def.coupling);
   hud_.setLabels(level_.def.name, app_.settings().device,
                  coupling.visualOnly ? "visual only" : physics::forceMethodName(coupling.method), mouse,
                  level_.def.params.radius);
@@ -61,7 +108,9 @@ void PlayScreen::loadGhost() {
   ghost_.reset();
   scene_.ghost.shown = false;
   hud_.setGhost("");
-  if (!app_.settings().ghost) return;
+  // No ghost in a research session's trial: it would be a condition the
+  // protocol did not ask for.
+  if (!app_.settings().ghost || research_ != nullptr) return;
   const std::filesystem::path file = ghostFile(dataDirectory(), level_.def.name, app_.settings().participant);
   std::error_code ec;
   if (!std::filesystem::exists(file, ec)) return;
@@ -93,7 +142,9 @@ void PlayScreen::resume() {
   if (session_) session_->resume();
 }
 
-void PlayScreen::restart() { begin(); }
+void PlayScreen::restart() {
+  if (research_ == nullptr) begin();  // a session's trial is recorded once: no restart
+}
 
 void PlayScreen::quit() {
   if (session_) session_->quit();
@@ -102,8 +153,7 @@ void PlayScreen::quit() {
 void PlayScreen::input(const platform::InputEvent& e) {
   using platform::InputType;
   if (!session_) {
-    if (e.type == InputType::KeyDown && (e.key == platform::Key::Escape || e.key == platform::Key::Enter))
-      app_.screens().pop();
+    if (e.type == InputType::KeyDown && (e.key == platform::Key::Escape || e.key == platform::Key::Enter)) back();
     return;
   }
   switch (e.type) {
@@ -194,6 +244,10 @@ void PlayScreen::update(double dt) {
     audio.setProximity(0.0);
     TrialResult result = session_->finish();
     audio.play(result.outcome == script::TrialOutcome::Success ? Cue::Success : Cue::Failure);
+    if (research_ != nullptr) {
+      endSessionTrial({true, std::move(result), {}});
+      return;
+    }
     std::string replayNote = session_->replayError();
     if (app_.settings().overrideCoupling) replayNote = "no replay: the force method was overridden in the settings";
     app_.screens().replace(std::make_unique<ResultsScreen>(app_, levelPath_, level_.def.name, std::move(result),
@@ -201,12 +255,18 @@ void PlayScreen::update(double dt) {
   }
 }
 
+// Leaving a trial that could not start; a session hears why.
+void PlayScreen::back() {
+  if (research_ != nullptr) endSessionTrial({false, {}, error_});
+  else app_.screens().pop();
+}
+
 void PlayScreen::paint() {
   if (!session_) {
     beginCentredPanel("play error", 700);
     ImGui::TextColored(ImVec4(1, 0.5f, 0.4f, 1), "This level cannot be played:");
     ImGui::TextWrapped("%s", error_.c_str());
-    if (ImGui::Button("Back  (Esc)")) app_.screens().pop();
+    if (ImGui::Button("Back  (Esc)")) back();
     ImGui::End();
     return;
   }

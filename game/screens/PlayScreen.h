@@ -10,7 +10,15 @@
 // simulated time, and drawn translucent beside it. Keys: Escape pauses
 // (as does the window losing focus), Tab changes the camera. When the judge
 // ends the trial the results screen takes this one's place.
+//
+// A research session's trial (SessionScreen) plays the session's next trial
+// instead: its level with the plan's overrides and seed (the settings'
+// override is not used), recorded into the session folder (trial CSV and
+// sidecar through the loop's ring, the replay log beside them), no restart;
+// when it ends the results row is appended, the screen goes and `done` says
+// how it went (no results screen, no scores).
 
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -24,9 +32,20 @@
 
 namespace hemiroll::game {
 
+class ResearchSession;
+class TrialRecording;
+
+// How a session's trial ended: recorded (its result), or not (why).
+struct SessionTrialEnd {
+  bool recorded = false;
+  TrialResult result;
+  std::string error;
+};
+
 class PlayScreen final : public Screen {
  public:
   PlayScreen(App& app, std::string levelPath);
+  PlayScreen(App& app, ResearchSession& session, std::function<void(const SessionTrialEnd&)> done);
   ~PlayScreen() override;
   const char* name() const override { return "play"; }
   void enter() override;
@@ -45,12 +64,16 @@ class PlayScreen final : public Screen {
 
   PlaySession* session() { return session_.get(); }
   const ReplayPlayer* ghost() const { return ghost_.get(); }
+  bool inResearchSession() const { return research_ != nullptr; }
   const PlayHud& hud() const { return hud_; }
   const std::string& error() const { return error_; }
 
  private:
   void begin();
   void loadGhost();
+  void beginSessionTrial(PlaySessionDef& def);
+  void endSessionTrial(SessionTrialEnd end);
+  void back();
   void pause();
 
   std::string levelPath_;
@@ -64,6 +87,10 @@ class PlayScreen final : public Screen {
   haptics::Engagement lastEngagement_ = haptics::Engagement::Disengaged;
   bool started_ = false;
   double scoreClock_ = 0.0;  // [s] since the running score was last asked for
+  ResearchSession* research_ = nullptr;  // set: a research session's trial
+  std::function<void(const SessionTrialEnd&)> sessionDone_;
+  std::unique_ptr<TrialRecording> recording_;
+  bool sessionEnded_ = false;
 };
 
 }  // namespace hemiroll::game

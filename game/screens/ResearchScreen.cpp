@@ -4,41 +4,156 @@
 
 #include <algorithm>
 #include <cstring>
+#include <filesystem>
 
+#include "engine/script/ProtocolLoader.h"
 #include "game/app/App.h"
+#include "game/research/ResearchSession.h"
+#include "game/research/SessionFolder.h"
 #include "game/screens/ScreenLayout.h"
+#include "game/screens/SessionScreen.h"
 
 namespace hemiroll::game {
 
+namespace {
+
+const ImVec4 kRed(1, 0.5f, 0.4f, 1);
+
+template <std::size_t N>
+void copyInto(std::array<char, N>& buffer, const std::string& text) {
+  buffer.fill('\0');
+  std::copy_n(text.begin(), std::min(text.size(), N - 1), buffer.begin());
+}
+
+}  // namespace
+
+std::vector<ProtocolEntry> scanProtocols(const std::string& dir) {
+  std::vector<ProtocolEntry> out;
+  std::error_code ec;
+  for (const auto& f : std::filesystem::directory_iterator(dir, ec)) {
+    if (!f.is_regular_file() || f.path().extension() != ".lua") continue;
+    ProtocolEntry e;
+    e.path = f.path().string();
+    e.experiment = f.path().filename().string();
+    try {
+      const script::ProtocolDef def = script::ProtocolLoader().loadFile(e.path);
+      e.experiment = def.experiment;
+      e.description = def.description;
+      for (const script::BlockDef& b : def.blocks) e.trials += static_cast<int>(b.conditions.size()) * b.repetitions;
+    } catch (const std::exception& error) {
+      e.error = error.what();
+    }
+    out.push_back(std::move(e));
+  }
+  std::sort(out.begin(), out.end(), [](const ProtocolEntry& a, const ProtocolEntry& b) { return a.path < b.path; });
+  return out;
+}
+
 void ResearchScreen::enter() {
-  const std::string& p = app_.settings().participant;
-  participant_.fill('\0');
-  std::copy_n(p.begin(), std::min(p.size(), participant_.size() - 1), participant_.begin());
+  copyInto(participant_, app_.settings().participant);
+  copyInto(session_, app_.settings().sessionId);
+  protocols_ = scanProtocols((std::filesystem::path(app_.def().levelsDir) / "protocols").string());
+  selected_ = std::clamp(selected_, 0, std::max(0, static_cast<int>(protocols_.size()) - 1));
+  refresh();
+}
+
+// Levels are looked for beside the protocol, then in the game's levels folder.
+SessionRequest ResearchScreen::requestFor(const std::string& protocol) const {
+  SessionRequest request;
+  request.protocolPath = protocol;
+  request.levelsDir = app_.def().levelsDir;
+  request.participant = app_.settings().participant;
+  request.session = app_.settings().sessionId;
+  return request;
+}
+
+void ResearchScreen::select(int index) {
+  selected_ = index;
+  refresh();
+}
+
+// Opening the session reads the protocol, its levels and the folder (a few
+// milliseconds) and writes nothing; done only when something changed.
+void ResearchScreen::refresh() {
+  canStart_ = false;
+  if (protocols_.empty()) {
+    status_ = "no protocols (*.lua) in " + app_.def().levelsDir + "/protocols";
+    return;
+  }
+  const ProtocolEntry& p = protocols_[static_cast<std::size_t>(selected_)];
+  if (!p.error.empty()) {
+    status_ = "this protocol cannot be run (its error is above)";
+    return;
+  }
+  try {
+    const SessionRequest request = requestFor(p.path);
+    const ResearchSession s(request);
+    canStart_ = !s.complete();
+    if (!s.resumed()) status_ = "a new session of " + std::to_string(s.trialCount()) + " trials";
+    else if (s.complete()) status_ = "this session is complete (" + std::to_string(s.trialCount()) + " trials)";
+    else
+      status_ = "resumes at trial " + std::to_string(s.done() + 1) + " of " + std::to_string(s.trialCount()) +
+                (s.interrupted().empty() ? "" : " (an interrupted trial's files will be moved aside)");
+    status_ += "; data: " + s.folder().string();
+  } catch (const std::exception& e) {
+    status_ = e.what();
+  }
+}
+
+void ResearchScreen::start() {
+  if (!canStart_) return;
+  app_.screens().push(
+      std::make_unique<SessionScreen>(app_, requestFor(protocols_[static_cast<std::size_t>(selected_)].path)));
 }
 
 void ResearchScreen::leave() { app_.saveSettings(); }
 
 void ResearchScreen::input(const platform::InputEvent& e) {
-  if (e.type == platform::InputType::KeyDown && e.key == platform::Key::Escape && !e.repeat) app_.screens().pop();
+  if (e.type != platform::InputType::KeyDown || e.repeat) return;
+  const int n = static_cast<int>(protocols_.size());
+  if (e.key == platform::Key::Down && n > 0) select((selected_ + 1) % n);
+  else if (e.key == platform::Key::Up && n > 0) select((selected_ + n - 1) % n);
+  else if (e.key == platform::Key::Enter) start();
+  else if (e.key == platform::Key::Escape) app_.screens().pop();
 }
 
 void ResearchScreen::paint() {
   Settings& s = app_.settings();
-  beginCentredPanel("research", 700);
+  beginCentredPanel("research", 900);
   ImGui::SetWindowFontScale(1.6f);
   ImGui::Text("Research session");
   ImGui::SetWindowFontScale(1.0f);
-  if (ImGui::InputText("participant id", participant_.data(), participant_.size())) {
-    // Ids name folders: letters, digits, '-' and '_' only.
-    std::string id;
-    for (char c : std::string(participant_.data()))
-      if (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_') id += c;
-    s.participant = id.empty() ? "player" : id;
+  ImGui::TextDisabled("protocols from %s/protocols (docs/PROTOCOLS.md)", app_.def().levelsDir.c_str());
+  for (std::size_t i = 0; i < protocols_.size(); ++i) {
+    const ProtocolEntry& p = protocols_[i];
+    ImGui::PushID(static_cast<int>(i));
+    const std::string label =
+        p.error.empty() ? p.experiment + "  (" + std::to_string(p.trials) + " trials)" : p.experiment + "  (broken)";
+    if (ImGui::Selectable(label.c_str(), selected_ == static_cast<int>(i))) select(static_cast<int>(i));
+    if (!p.error.empty()) {
+      ImGui::PushStyleColor(ImGuiCol_Text, kRed);
+      ImGui::TextWrapped("    %s", p.error.c_str());
+      ImGui::PopStyleColor();
+    }
+    else if (selected_ == static_cast<int>(i) && !p.description.empty()) ImGui::TextWrapped("    %s", p.description.c_str());
+    ImGui::PopID();
   }
-  ImGui::Text("trials are stored as participant '%s'", s.participant.c_str());
-  ImGui::Text("scores: %s", app_.scores().file().c_str());
-  ImGui::Text("data directory: %s", dataDirectory().c_str());
+  ImGui::Separator();
+  // Ids name folders: letters, digits, '-' and '_' only; what is typed is kept as it is.
+  const bool participantEdited = ImGui::InputText("participant id", participant_.data(), participant_.size());
+  const bool sessionEdited = ImGui::InputText("session id", session_.data(), session_.size());
+  if (participantEdited || sessionEdited) {
+    s.participant = participant_.data();
+    s.sessionId = session_.data();
+    refresh();
+  }
+  ImGui::TextDisabled("data root: %s", defaultSessionsRoot().string().c_str());
+  ImGui::TextDisabled("(free play stores its scores under this participant id in %s)", app_.scores().file().c_str());
   ImGui::TextDisabled("(set HEMIROLL_DATA_DIR or XDG_DATA_HOME to change it)");
+  ImGui::TextWrapped("%s", status_.c_str());
+  ImGui::BeginDisabled(!canStart_);
+  if (ImGui::Button("Start  (Enter)", ImVec2(-1, 0))) start();
+  ImGui::EndDisabled();
   if (ImGui::Button("Back  (Esc)", ImVec2(-1, 0))) app_.screens().pop();
   ImGui::End();
 }

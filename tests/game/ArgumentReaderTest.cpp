@@ -81,6 +81,21 @@ TEST(ArgumentReaderTest, EveryMistakeIsOneSentenceNamingTheFlagAndTheValue) {
   }
 }
 
+TEST(ArgumentReaderTest, UnsignedUpToTakesDigitsOnlyAndAtMostTheMaximum) {
+  std::uint64_t seed = 0;
+  std::optional<std::uint64_t> maybe;
+  ArgumentReader reader;
+  reader.option("--seed", unsignedUpTo(seed, 0x7fffffffffffffffULL, "a seed"))
+      .option("--maybe", unsignedUpTo(maybe, 10, "at most 10"));
+  EXPECT_EQ(reader.read({"--seed", "9223372036854775807", "--maybe=10"}), "");
+  EXPECT_EQ(seed, 0x7fffffffffffffffULL);
+  EXPECT_EQ(maybe, 10u);
+  EXPECT_EQ(reader.read({"--seed", "9223372036854775808"}), "flag --seed needs a seed, got '9223372036854775808'");
+  EXPECT_EQ(reader.read({"--maybe", "11"}), "flag --maybe needs at most 10, got '11'");
+  for (const std::string bad : {"-1", "1.5", "", "+3", "0x10"})
+    EXPECT_EQ(reader.read({"--seed", bad}), "flag --seed needs a seed, got '" + bad + "'");
+}
+
 TEST(ArgumentReaderTest, TheFirstErrorStopsTheReading) {
   Parsed p;
   EXPECT_THAT(readInto(p, {"--dt", "x", "--fast"}), HasSubstr("--dt"));

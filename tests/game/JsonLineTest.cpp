@@ -17,6 +17,12 @@ TEST(JsonLine, WritesKeysInOrder) {
   EXPECT_EQ(line.str(), R"({"level":"a.lua","ticks":12,"time":0.5,"score":null})");
 }
 
+TEST(JsonLine, BooleansAreBareWords) {
+  JsonLine line;
+  line.addBool("complete", true).addBool("stopped", false).add("name", "true");
+  EXPECT_EQ(line.str(), R"({"complete":true,"stopped":false,"name":"true"})");
+}
+
 TEST(JsonLine, EscapesQuotesBackslashesAndControlCharacters) {
   EXPECT_EQ(JsonLine::quote("say \"hi\"\\now\n\t\x01"), R"("say \"hi\"\\now\n\t\u0001")");
   EXPECT_EQ(JsonLine::quote("r\xC3\xA9sum\xC3\xA9"), "\"r\xC3\xA9sum\xC3\xA9\"") << "UTF-8 passes through";

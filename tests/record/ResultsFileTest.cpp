@@ -66,5 +66,45 @@ TEST(ResultsFileTest, AnUnwritablePlaceIsNamed) {
   }
 }
 
+// What append() writes, read() gives back, quoting included.
+TEST(ResultsFileTest, ReadGivesBackTheHeaderAndEveryFieldAsWritten) {
+  hemiroll::test::TempDirectory dir;
+  const ResultsFile file(dir.path() / "results.csv");
+  EXPECT_TRUE(file.read().columns.empty()) << "a missing file is an empty table";
+  file.append(result("t1", "goal"));
+  file.append(result("t2", "said \"done\", then\nleft, \"twice\""));
+  const ResultsTable table = file.read();
+  EXPECT_EQ(table.columns, ResultsFile::columns(result("t1", "")));
+  ASSERT_EQ(table.rows.size(), 2u);
+  EXPECT_EQ(table.rows[0][2], "t1");
+  EXPECT_EQ(table.rows[1][2], "t2");
+  EXPECT_EQ(table.rows[1][6], "said \"done\", then\nleft, \"twice\"");
+  EXPECT_EQ(table.rows[1][12], "M3");
+}
+
+TEST(ResultsFileTest, ReadRefusesACutRowAndAWrongFieldCountNamingTheLine) {
+  hemiroll::test::TempDirectory dir;
+  const auto path = dir.path() / "results.csv";
+  const ResultsFile file(path);
+  file.append(result("t1", "goal"));
+  const std::string good = readWholeFile(path);
+  dir.write("results.csv", good + "p01,1,t2,tut");
+  try {
+    file.read();
+    FAIL() << "a cut row was read";
+  } catch (const RecordError& e) {
+    EXPECT_NE(std::string(e.what()).find("results.csv: line 3: the last row has no line end"), std::string::npos)
+        << e.what();
+  }
+  dir.write("results.csv", good + "p01,1,t2\n");
+  try {
+    file.read();
+    FAIL() << "a short row was read";
+  } catch (const RecordError& e) {
+    EXPECT_NE(std::string(e.what()).find("results.csv: line 3: 3 fields, the header has 13"), std::string::npos)
+        << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace hemiroll::record

@@ -89,6 +89,21 @@ std::string errorOf(const std::string& text) {
   return "";
 }
 
+// A level's or protocol's text is Lua bytes; JSON must be UTF-8. Invalid
+// bytes become U+FFFD rather than an exception that would end the program.
+TEST(SidecarTest, InvalidUtf8InTextIsReplacedNotThrown) {
+  TrialMeta m = awkwardMeta();
+  m.levelName = "bad \xff name";
+  m.extra = {{"block_name", "\xc3("}};
+  std::string text;
+  ASSERT_NO_THROW(text = Sidecar::toJson(m, {}));
+  TrialMeta back;
+  SidecarStatus status;
+  Sidecar::fromJson(text, "t.json", back, status);
+  EXPECT_EQ(back.levelName, "bad \xef\xbf\xbd name");
+  EXPECT_EQ(back.extra[0].second, "\xef\xbf\xbd(");
+}
+
 TEST(SidecarTest, BrokenSidecarsGiveNamedErrors) {
   const std::string good = Sidecar::toJson(TrialMeta{}, {});
   EXPECT_NE(errorOf(good.substr(0, good.size() / 2)).find("trial.json: "), std::string::npos);

@@ -1,0 +1,77 @@
+#pragma once
+// A research protocol as its file declares it (docs/PROTOCOLS.md), in plain
+// C++: an experiment of blocks, each block a list of conditions (a level and
+// what the protocol overrides in it) run `repetitions` times, in order or
+// shuffled, with an optional break after it. ProtocolLoader fills it;
+// ProtocolPlan expands it into the flat list of trials a session runs.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "engine/script/LevelDef.h"
+
+namespace hemiroll::script {
+
+// What a protocol may change in a level for a trial. Unset = the level's.
+struct TrialOverrides {
+  std::optional<std::string> method;  // "M1", "M2", "M3" or "visual" (as a level's force.method)
+  std::optional<double> stiffness;    // kr [N/m], >= 0
+  std::optional<double> damping;      // kv [N s/m], >= 0
+  std::optional<double> alpha;        // M3's normal / in-face gain ratio [-], > 0
+  std::optional<double> timeLimit;    // [s], > 0
+
+  bool empty() const { return !method && !stiffness && !damping && !alpha && !timeLimit; }
+};
+
+// The coupling a level gets under the overrides: the method replaces the
+// level's ("visual" = M3 gains, no rendered force, as in a level file), the
+// gains replace the level's where given.
+physics::CouplingDef overriddenCoupling(const TrialOverrides& overrides, const physics::CouplingDef& level);
+// The coupling as above and the time limit, applied to a loaded level.
+void applyTrialOverrides(const TrialOverrides& overrides, LevelDef& level);
+// "M1", "M2", "M3" or "visual": the name a level file and a protocol use.
+std::string couplingMethodName(const physics::CouplingDef& coupling);
+
+// One condition of a block: a level with its overrides (the block's values
+// merged in; the condition's own win).
+struct ConditionDef {
+  std::string label;      // names the condition in results ("M3 alpha 1.5"); default built from the overrides
+  std::string level;      // the level file as the protocol writes it
+  std::string levelPath;  // where the loader found it (relative to the working directory, or absolute)
+  TrialOverrides overrides;
+};
+
+// Shown between this block and the next.
+struct BreakDef {
+  std::string message;
+  double minDuration = 0.0;  // [s] before the next block may start (people; bots do not rest)
+  // The sitting ends here: the session stops and running it again (same
+  // participant and session) continues with the next block, e.g. the next day.
+  bool stop = false;
+};
+
+struct BlockDef {
+  std::string name;           // default "block N"
+  std::string instructions;   // shown before the block's first trial
+  std::vector<ConditionDef> conditions;  // at least one
+  int repetitions = 1;        // passes through the conditions, >= 1
+  bool randomise = false;     // shuffle the block's trials (all passes together)
+  std::optional<BreakDef> breakAfter;  // never on the last block
+};
+
+// 1 to 64 letters, digits, '-' or '_': an id that may name a folder (the
+// experiment's; the session's participant and session ids follow the same rule).
+bool isFolderName(const std::string& id);
+
+struct ProtocolDef {
+  std::string source;       // the file as named by the caller, for messages
+  std::string experiment;   // required; names the data folder: letters, digits, '-', '_'
+  std::string description;
+  std::string version = "1";
+  std::uint64_t seed = 0;   // the randomisation's seed when the session gives none
+  std::vector<BlockDef> blocks;  // at least one
+};
+
+}  // namespace hemiroll::script

@@ -1,0 +1,275 @@
+#include "engine/script/ProtocolLoader.h"
+
+#include <lua.hpp>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <optional>
+#include <vector>
+
+#include "engine/script/LevelFieldChecks.h"
+#include "engine/script/LuaSandbox.h"
+#include "engine/script/LuaTableReader.h"
+#include "engine/script/ScriptError.h"
+#include "engine/script/ScriptSourceFile.h"
+
+namespace hemiroll::script {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr std::initializer_list<const char*> kMethods = {"M1", "M2", "M3", "visual"};
+constexpr int kMaxRepetitions = 10000;
+constexpr int kMaxTrials = 100000;  // a plan larger than this is a mistake (a loop gone wrong)
+
+struct LevelFolders {
+  std::string base;    // the protocol's folder
+  std::string levels;  // the project's levels folder ("" = none)
+};
+
+std::string shortest(double v) {
+  char text[32];
+  const auto end = std::to_chars(text, text + sizeof text, v).ptr;
+  return std::string(text, end);
+}
+
+std::string shown(const std::string& dir) { return dir.empty() ? "." : dir; }
+
+// The level file as found, or "" when it is in neither folder.
+std::string findLevel(const std::string& written, const LevelFolders& folders) {
+  const fs::path path(written);
+  std::vector<fs::path> candidates;
+  if (path.is_absolute()) {
+    candidates.push_back(path);
+  } else {
+    candidates.push_back(fs::path(folders.base) / path);
+    if (!folders.levels.empty()) candidates.push_back(fs::path(folders.levels) / path);
+  }
+  std::error_code error;
+  for (const fs::path& c : candidates)
+    if (!written.empty() && fs::is_regular_file(c, error)) return c.lexically_normal().string();
+  return "";
+}
+
+std::string resolveLevel(const LuaTableReader& table, const std::string& written, const LevelFolders& folders) {
+  const std::string found = findLevel(written, folders);
+  if (found.empty()) {
+    std::string looked = shown(folders.base);
+    if (!folders.levels.empty() && !fs::path(written).is_absolute()) looked += " and " + shown(folders.levels);
+    table.fail("level", "no level file '" + written + "' (looked in " + looked + ")");
+  }
+  return found;
+}
+
+std::optional<double> readNonNegative(const LuaTableReader& table, const char* key, const char* unit) {
+  const auto value = table.number(key);
+  if (value && *value < 0.0) table.fail(key, std::string("must be >= 0 (") + unit + ")");
+  return value;
+}
+
+// method, kr, kv, alpha, time_limit of a block or a condition.
+TrialOverrides readOverrides(const LuaTableReader& table) {
+  TrialOverrides o;
+  if (const auto method = table.string("method")) {
+    if (std::none_of(kMethods.begin(), kMethods.end(), [&](const char* m) { return *method == m; })) {
+      const char* near = nearestName(*method, kMethods);
+      table.fail("method", "unknown method '" + *method + "'" +
+                               (near ? " (did you mean '" + std::string(near) + "'?)"
+                                     : " (expected \"M1\", \"M2\", \"M3\" or \"visual\")"));
+    }
+    o.method = *method;
+  }
+  o.stiffness = readNonNegative(table, "kr", "stiffness, N/m");
+  o.damping = readNonNegative(table, "kv", "damping, N s/m");
+  o.alpha = readPositive(table, "alpha", "the normal / in-face gain ratio");
+  o.timeLimit = readPositive(table, "time_limit", "s");
+  return o;
+}
+
+// The condition's values where it has them, the block's elsewhere.
+TrialOverrides merged(const TrialOverrides& block, const TrialOverrides& own) {
+  TrialOverrides o = block;
+  if (own.method) o.method = own.method;
+  if (own.stiffness) o.stiffness = own.stiffness;
+  if (own.damping) o.damping = own.damping;
+  if (own.alpha) o.alpha = own.alpha;
+  if (own.timeLimit) o.timeLimit = own.timeLimit;
+  return o;
+}
+
+std::string defaultLabel(const TrialOverrides& o, const std::string& level) {
+  std::string label;
+  auto add = [&](const std::string& part) { label += (label.empty() ? "" : " ") + part; };
+  if (o.method) add(*o.method);
+  if (o.stiffness) add("kr " + shortest(*o.stiffness));
+  if (o.damping) add("kv " + shortest(*o.damping));
+  if (o.alpha) add("alpha " + shortest(*o.alpha));
+  if (o.timeLimit) add("time limit " + shortest(*o.timeLimit) + " s");
+  return label.empty() ? fs::path(level).stem().string() : label;
+}
+
+// A list of tables under `key` (positions 1..n, nothing else), at least one.
+int listLength(const LuaTableReader& list, const char* what) {
+  const int count = list.entryCount();
+  if (count == 0) list.fail("", std::string("empty; give at least one ") + what);
+  if (static_cast<int>(lua_rawlen(list.state(), list.index())) != count)
+    list.fail("", std::string("expected a list of ") + what + "s { ... }, { ... }");
+  for (int i = 1; i <= count; ++i)
+    if (list.typeAt(i) != LUA_TTABLE) list.fail(positionKey(i), std::string("expected a ") + what + " table { ... }");
+  return count;
+}
+
+LuaTableReader entry(const LuaTableReader& list, int i) {
+  lua_rawgeti(list.state(), list.index(), i);
+  return LuaTableReader(list.state(), -1, list.source(), list.fieldPath(positionKey(i)));
+}
+
+ConditionDef readCondition(const LuaTableReader& table, const TrialOverrides& blockOverrides,
+                           const std::optional<std::string>& blockLevel, const LuaTableReader& block,
+                           const LevelFolders& folders) {
+  rejectUnknownLevelKeys(table, {"label", "level", "method", "kr", "kv", "alpha", "time_limit"});
+  ConditionDef c;
+  c.overrides = merged(blockOverrides, readOverrides(table));
+  const auto own = table.string("level");
+  if (own) {
+    c.level = *own;
+    c.levelPath = resolveLevel(table, c.level, folders);
+  } else if (blockLevel) {
+    c.level = *blockLevel;
+    c.levelPath = resolveLevel(block, c.level, folders);
+  } else {
+    table.fail("level", "missing; give the level file in the condition or in its block");
+  }
+  c.label = table.string("label").value_or(defaultLabel(c.overrides, c.level));
+  if (c.label.empty()) table.fail("label", "must not be empty");
+  return c;
+}
+
+BreakDef readBreak(const LuaTableReader& table) {
+  rejectUnknownLevelKeys(table, {"message", "min_duration", "stop"});
+  BreakDef b;
+  b.message = table.string("message").value_or("");
+  b.minDuration = readNonNegative(table, "min_duration", "s").value_or(0.0);
+  b.stop = readBool(table, "stop").value_or(false);
+  return b;
+}
+
+BlockDef readBlock(const LuaTableReader& block, int index, const LevelFolders& folders) {
+  rejectUnknownLevelKeys(block, {"name", "instructions", "label", "level", "conditions", "method", "kr", "kv", "alpha",
+                                 "time_limit", "repetitions", "randomise", "break_after"});
+  BlockDef b;
+  b.name = block.string("name").value_or("block " + std::to_string(index));
+  if (b.name.empty()) block.fail("name", "must not be empty");
+  b.instructions = block.string("instructions").value_or("");
+  const TrialOverrides overrides = readOverrides(block);
+  const auto level = block.string("level");
+  if (const auto list = block.table("conditions")) {
+    if (block.typeOf("label") != LUA_TNIL)
+      block.fail("label", "a block with conditions has no label of its own: label each condition");
+    const int count = listLength(*list, "condition");
+    for (int i = 1; i <= count; ++i)
+      b.conditions.push_back(readCondition(entry(*list, i), overrides, level, block, folders));
+  } else {
+    if (!level) block.fail("level", "missing; every block needs a level file (or conditions that each name one)");
+    ConditionDef c;
+    c.level = *level;
+    c.levelPath = resolveLevel(block, c.level, folders);
+    c.overrides = overrides;
+    c.label = block.string("label").value_or(defaultLabel(c.overrides, c.level));
+    if (c.label.empty()) block.fail("label", "must not be empty");
+    b.conditions.push_back(std::move(c));
+  }
+  b.repetitions = readInteger(block, "repetitions", 1, kMaxRepetitions).value_or(1);
+  b.randomise = readBool(block, "randomise").value_or(false);
+  if (const auto pause = block.table("break_after")) b.breakAfter = readBreak(*pause);
+  return b;
+}
+
+// A Lua integer, or a float with a whole value (1e3), from 0 to 2^63 - 1.
+std::uint64_t readSeed(const LuaTableReader& top) {
+  lua_State* L = top.state();
+  top.pushField("seed");
+  const int type = lua_type(L, -1);
+  const std::string got = describeLuaValue(L, -1);
+  std::optional<lua_Integer> value;
+  if (lua_isinteger(L, -1)) {
+    value = lua_tointeger(L, -1);
+  } else if (type == LUA_TNUMBER) {
+    const double d = lua_tonumber(L, -1);
+    if (d == std::floor(d) && std::fabs(d) < 9.2e18) value = static_cast<lua_Integer>(d);
+  }
+  lua_pop(L, 1);
+  if (type == LUA_TNIL) return 0;
+  if (!value || *value < 0) top.fail("seed", "expected a whole number from 0 to 9223372036854775807, got " + got);
+  return static_cast<std::uint64_t>(*value);
+}
+
+ProtocolDef readProtocol(lua_State* L, const std::string& name, const LevelFolders& folders) {
+  if (lua_type(L, -1) != LUA_TTABLE)
+    throw ScriptError(name + ": the protocol must return a table, got " + describeLuaValue(L, -1));
+  const LuaTableReader top(L, -1, name, "");
+  rejectUnknownLevelKeys(top, {"experiment", "description", "version", "seed", "blocks"});
+  ProtocolDef def;
+  def.source = name;
+  const auto experiment = top.string("experiment");
+  if (!experiment) top.fail("experiment", "missing; every protocol needs an experiment id (a string)");
+  if (!isFolderName(*experiment))
+    top.fail("experiment", "'" + *experiment + "' is not a folder name: use 1 to 64 letters, digits, '-' or '_'");
+  def.experiment = *experiment;
+  def.description = top.string("description").value_or("");
+  def.version = top.string("version").value_or(def.version);
+  def.seed = readSeed(top);
+  const auto blocks = top.table("blocks");
+  if (!blocks) top.fail("blocks", "missing; a protocol is a list of blocks { {level = ...}, ... }");
+  const int count = listLength(*blocks, "block");
+  long long trials = 0;
+  for (int i = 1; i <= count; ++i) {
+    const LuaTableReader block = entry(*blocks, i);
+    def.blocks.push_back(readBlock(block, i, folders));
+    const BlockDef& b = def.blocks.back();
+    trials += static_cast<long long>(b.conditions.size()) * b.repetitions;
+    if (trials > kMaxTrials)
+      block.fail("repetitions", "the plan would exceed " + std::to_string(kMaxTrials) + " trials");
+    if (i == count && b.breakAfter)
+      block.fail("break_after", "the last block has no block after it (a break goes between blocks)");
+  }
+  return def;
+}
+
+ProtocolDef load(const ProtocolLoadOptions& options, std::string_view source, const std::string& name,
+                 const LevelFolders& folders) {
+  LuaSandbox sandbox(options.limits);  // data only: no require, no random
+  try {
+    sandbox.runChunk(source, name, 1);
+    return readProtocol(sandbox.state(), name, folders);
+  } catch (const ScriptError& e) {
+    throw ScriptError(withSourceLine(e.what(), name, source));
+  }
+}
+
+}  // namespace
+
+std::string ProtocolLoader::levelsDirFor(const std::string& path) const {
+  if (!options_.levelsDir.empty()) return options_.levelsDir;
+  for (const fs::path& start : {fs::path(path), fs::absolute(path)})
+    for (fs::path dir = start.parent_path(); !dir.empty() && dir != dir.root_path(); dir = dir.parent_path())
+      if (dir.filename() == "levels") return dir.string();
+  return "";
+}
+
+ProtocolDef ProtocolLoader::loadFile(const std::string& path) const {
+  const std::string text = readScriptText(path, "protocol file");
+  if (text.size() > options_.limits.memoryLimitBytes)
+    throw ScriptError(path + ":1: file is larger than the memory limit");
+  return load(options_, text, path, {fs::path(path).parent_path().string(), levelsDirFor(path)});
+}
+
+ProtocolDef ProtocolLoader::loadSource(std::string_view source, const std::string& name,
+                                       const std::string& baseDir) const {
+  return load(options_, source, name, {baseDir, options_.levelsDir});
+}
+
+}  // namespace hemiroll::script

@@ -1,0 +1,148 @@
+#include "game/commands/SessionCommand.h"
+
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <stdexcept>
+
+#include "engine/script/BotScript.h"
+#include "engine/script/ScriptError.h"
+#include "game/commands/ExitCode.h"
+#include "game/commands/SessionOptions.h"
+#include "game/play/HeadlessTrial.h"
+#include "game/play/JsonLine.h"
+#include "game/research/ResearchSession.h"
+
+namespace hemiroll::game {
+
+namespace {
+
+int fail(int code, const std::string& message) {
+  std::cerr << "hemiroll session: " << message << "\n";
+  return code;
+}
+
+int exitCodeOf(const SessionError& e) { return e.kind() == SessionError::Kind::BadInput ? kExitUsage : kExitFailure; }
+
+std::string trialLine(const ManifestTrial& t, const TrialResult& r) {
+  JsonLine line;
+  line.add("event", "trial").add("trial", static_cast<long long>(t.index)).add("trial_id", t.trialId);
+  line.add("block", static_cast<long long>(t.block)).add("block_name", t.blockName);
+  line.add("repetition", static_cast<long long>(t.repetition)).add("condition", t.conditionLabel);
+  line.add("level", t.levelFile).add("method", t.method);
+  line.add("kr_N_per_m", t.stiffness).add("kv_N_s_per_m", t.damping).add("alpha", t.alpha);
+  line.add("outcome", script::trialOutcomeName(r.outcome)).add("reason", r.reason).add("time_s", r.time);
+  if (r.score)
+    line.add("score", *r.score);  // non-finite: null
+  else
+    line.addNull("score");
+  line.add("medal", script::medalName(r.medal)).add("ticks", r.ticks).add("wall_time_s", r.wallTime);
+  return line.str();
+}
+
+struct Tally {
+  long long ran = 0, successes = 0;
+};
+
+std::string summaryLine(const ResearchSession& s, const Tally& tally, bool stopped) {
+  JsonLine line;
+  line.add("event", "summary").add("experiment", s.manifest().experiment);
+  line.add("participant", s.manifest().participant).add("session", s.manifest().session);
+  line.add("folder", s.folder().string());
+  line.add("trials", static_cast<long long>(s.trialCount())).add("done", static_cast<long long>(s.done()));
+  line.add("kept", static_cast<long long>(s.keptFromEarlier())).add("ran", tally.ran);
+  line.add("successes", tally.successes).add("failures", tally.ran - tally.successes);
+  line.add("moved_aside", static_cast<long long>(s.interrupted().size()));
+  line.addBool("complete", s.complete()).addBool("stopped_at_break", stopped);
+  return line.str();
+}
+
+// One trial of the session, headless, recorded. Throws SessionError.
+TrialResult playNext(ResearchSession& session, const std::string& botPath) {
+  const ManifestTrial& trial = session.nextTrial();
+  script::LoadedLevel level = session.loadNextLevel();
+  std::unique_ptr<script::BotScript> bot;
+  try {
+    script::BotLoadOptions options;
+    options.seed = trial.seed;
+    bot = std::make_unique<script::BotScript>(botPath, options);
+  } catch (const script::ScriptError& e) {
+    throw SessionError(SessionError::Kind::BadInput, e.what());
+  }
+  const std::unique_ptr<TrialRecording> recording =
+      session.recordNext(level.def, HeadlessTrial::loopDefFor(level.def), "bot", HeadlessTrial::deviceSpec());
+  TrialSettings settings;
+  settings.seed = trial.seed;
+  recording->attach(settings);
+  TrialResult result;
+  try {
+    result = HeadlessTrial(level, *bot, settings).run();
+  } catch (const std::invalid_argument& e) {
+    // A coupling the device cannot render stably, found when the loop is built.
+    throw SessionError(SessionError::Kind::BadInput, trial.levelFile + " (" + trial.trialId + "): " + e.what());
+  }
+  if (!result.scoreError.empty()) std::cerr << "hemiroll session: " << trial.trialId << ": " << result.scoreError << "\n";
+  session.finishNext(*recording, result);
+  return result;
+}
+
+}  // namespace
+
+int runSessionCommand(const std::vector<std::string>& args) {
+  const SessionOptionsResult parsed = parseSessionOptions(args);
+  if (!parsed.error.empty()) {
+    std::cerr << "hemiroll session: " << parsed.error << "\n\n" << sessionUsage();
+    return kExitUsage;
+  }
+  const SessionOptions& o = parsed.options;
+  if (o.help) {
+    std::cout << sessionUsage();
+    return kExitOk;
+  }
+  if (!o.botPath)
+    return fail(kExitUsage,
+                "people play sessions in the game window: run `hemiroll play`, open Research session (R), pick "
+                "the protocol, enter the participant and start; here a bot plays every trial (--bot BOT.lua)");
+  try {
+    const script::BotScript check(*o.botPath);  // a broken bot is refused before anything is written
+  } catch (const script::ScriptError& e) {
+    return fail(kExitUsage, e.what());
+  }
+
+  SessionRequest request;
+  request.protocolPath = o.protocolPath;
+  request.levelsDir = o.levelsDir;
+  request.participant = o.participant;
+  request.session = o.session;
+  if (o.dataRoot) request.dataRoot = *o.dataRoot;
+  request.seed = o.seed;
+  Tally tally;
+  try {
+    ResearchSession session(request);
+    if (const std::string problem = session.couplingProblem(HeadlessTrial::deviceSpec()); !problem.empty())
+      return fail(kExitUsage, problem);
+    session.begin(*o.botPath);
+    for (const auto& [trialId, reason] : session.interrupted())
+      std::cerr << "hemiroll session: " << trialId << " was " << reason << "; its files were moved aside (*.aborted-N)\n";
+    while (!session.complete() && !session.stopsHere()) {
+      if (const ManifestBreak* pause = session.pendingBreak())
+        std::cerr << "hemiroll session: break before block " << session.nextTrial().block << ": " << pause->message
+                  << " (bots do not rest)\n";
+      const ManifestTrial trial = session.nextTrial();
+      const TrialResult result = playNext(session, *o.botPath);
+      ++tally.ran;
+      tally.successes += result.outcome == script::TrialOutcome::Success;
+      std::printf("%s\n", trialLine(trial, result).c_str());
+      std::fflush(stdout);
+    }
+    std::printf("%s\n", summaryLine(session, tally, !session.complete()).c_str());
+    if (!session.complete())
+      std::cerr << "hemiroll session: the sitting ends at a break (" << session.pendingBreak()->message
+                << "); run the same command again to continue\n";
+  } catch (const SessionError& e) {
+    return fail(exitCodeOf(e), e.what());
+  }
+  return kExitOk;
+}
+
+}  // namespace hemiroll::game

@@ -1,0 +1,56 @@
+#include "game/commands/SessionOptions.h"
+
+#include "game/cli/ArgumentReader.h"
+
+namespace hemiroll::game {
+
+const char* sessionUsage() {
+  return "usage: hemiroll session PROTOCOL.lua --participant ID [--session ID] [--data DIR]\n"
+         "                        [--bot BOT.lua] [--seed N] [--levels DIR]\n"
+         "\n"
+         "Runs a research protocol (docs/PROTOCOLS.md) for one participant: every trial of\n"
+         "its plan is recorded into DIR/<experiment>/<participant>/<session>/ (trial CSV +\n"
+         "sidecar, results.csv after every trial, session.json). With --bot a bot plays\n"
+         "every trial headless and one JSON line per trial is printed as it finishes, then\n"
+         "a summary line. Running the same session again resumes it after the last\n"
+         "finished trial; an interrupted trial's files are moved aside, never deleted.\n"
+         "People play sessions in the game window (hemiroll play, Research session).\n"
+         "\n"
+         "  --participant ID  who plays (letters, digits, '-', '_'; required)\n"
+         "  --session ID      the session id (default 1); a new id starts a new session\n"
+         "  --data DIR        the data root (default: the game's data directory/sessions)\n"
+         "  --bot BOT.lua     the bot that plays every trial (e.g. scripts/bots/tutorial_solver.lua)\n"
+         "  --seed N          the plan's randomisation seed (0 .. 9223372036854775807;\n"
+         "                    default: the protocol's; a resumed session keeps its own)\n"
+         "  --levels DIR      where level files are looked for after the protocol's folder\n"
+         "                    (default: the folder named levels that holds the protocol)\n"
+         "  --help            print this help\n"
+         "\n"
+         "Exit codes: 0 the session ran to its end or to a break that ends the sitting\n"
+         "(trial failures are data, not errors), 1 the data could not be written or the\n"
+         "session folder is inconsistent, 2 bad input (a flag, a protocol, level or bot\n"
+         "that cannot be loaded, a protocol changed since the session started, no --bot).\n";
+}
+
+SessionOptionsResult parseSessionOptions(const std::vector<std::string>& args) {
+  SessionOptionsResult result;
+  SessionOptions& o = result.options;
+  cli::ArgumentReader reader;
+  reader.flag("--help", [&] { o.help = true; })
+      .flag("-h", [&] { o.help = true; })
+      .positional("protocol file", 1, [&](const std::string& path) { o.protocolPath = path; })
+      .option("--participant", cli::text(o.participant, "a participant id"))
+      .option("--session", cli::text(o.session, "a session id"))
+      .option("--data", cli::text(o.dataRoot, "a directory"))
+      .option("--bot", cli::text(o.botPath, "a bot file"))
+      .option("--levels", cli::text(o.levelsDir, "a directory"))
+      // Lua integers are signed 64-bit, and the plan's trial seeds reach bots as one.
+      .option("--seed", cli::unsignedUpTo(o.seed, 0x7fffffffffffffffULL, "a whole number from 0 to 9223372036854775807"));
+  result.error = reader.read(args);
+  if (!result.error.empty() || o.help) return result;
+  if (o.protocolPath.empty()) result.error = "missing the protocol file";
+  else if (o.participant.empty()) result.error = "missing --participant ID";
+  return result;
+}
+
+}  // namespace hemiroll::game

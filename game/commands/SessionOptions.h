@@ -1,0 +1,31 @@
+#pragma once
+// The flags of `hemiroll session`, parsed and checked before any file is read.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace hemiroll::game {
+
+struct SessionOptions {
+  std::string protocolPath;
+  std::string participant;                 // --participant (required)
+  std::string session = "1";               // --session
+  std::optional<std::string> dataRoot;     // --data DIR (default: the game's data directory/sessions)
+  std::optional<std::string> botPath;      // --bot: without it, people play in the game window
+  std::optional<std::uint64_t> seed;       // --seed: 0 .. 2^63 - 1 (default: the protocol's)
+  std::string levelsDir;                   // --levels DIR ("" = the folder named levels above the protocol)
+  bool help = false;
+};
+
+struct SessionOptionsResult {
+  SessionOptions options;
+  std::string error;  // empty when the flags are good
+};
+
+SessionOptionsResult parseSessionOptions(const std::vector<std::string>& args);
+
+const char* sessionUsage();
+
+}  // namespace hemiroll::game

@@ -1,0 +1,277 @@
+#include "game/research/ResearchSession.h"
+
+#include <map>
+
+#include "engine/record/CsvRowFormat.h"
+#include "engine/record/DurableFile.h"
+#include "engine/record/RecordError.h"
+#include "engine/script/ProtocolLoader.h"
+#include "engine/script/ProtocolPlan.h"
+#include "engine/script/ScriptError.h"
+#include "game/play/ReplayCapture.h"
+#include "game/research/SessionFolder.h"
+#include "game/research/SessionResume.h"
+
+namespace hemiroll::game {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+[[noreturn]] void badInput(const std::string& message) { throw SessionError(SessionError::Kind::BadInput, message); }
+[[noreturn]] void environment(const std::string& message) {
+  throw SessionError(SessionError::Kind::Environment, message);
+}
+
+std::string number(double v) {
+  std::string out;
+  record::appendDouble(v, out);
+  return out;
+}
+
+// What the session needs of a level file: loaded once per file.
+struct LevelFacts {
+  std::string name, hash;
+  physics::CouplingDef coupling;
+  double timeLimit = 0.0;
+};
+
+LevelFacts factsOf(const std::string& path) {
+  try {
+    const script::LoadedLevel level = script::LevelLoader().loadFile(path);
+    return {level.def.name, levelFileHash(path), level.def.coupling, level.def.task.timeLimit};
+  } catch (const script::ScriptError& e) {
+    badInput(e.what());
+  }
+}
+
+}  // namespace
+
+ResearchSession::ResearchSession(const SessionRequest& request) {
+  if (const std::string problem = checkFolderId(request.participant, "participant id"); !problem.empty())
+    badInput(problem);
+  if (const std::string problem = checkFolderId(request.session, "session id"); !problem.empty()) badInput(problem);
+  try {
+    script::ProtocolLoadOptions options;
+    options.levelsDir = request.levelsDir;
+    protocol_ = script::ProtocolLoader(options).loadFile(request.protocolPath);
+  } catch (const script::ScriptError& e) {
+    badInput(e.what());
+  }
+  folder_ = sessionFolder(request.dataRoot.empty() ? defaultSessionsRoot() : request.dataRoot, protocol_.experiment,
+                          request.participant, request.session);
+  manifest_.participant = request.participant;
+  manifest_.session = request.session;
+
+  std::error_code ec;
+  const fs::path manifestPath = folder_ / kManifestFile;
+  std::optional<SessionManifest> previous;
+  if (fs::exists(manifestPath, ec)) {
+    try {
+      previous = SessionManifest::fromJson(record::readWholeFile(manifestPath), manifestPath.string());
+    } catch (const std::exception& e) {
+      environment(e.what());
+    }
+  } else if (fs::exists(folder_, ec) && !fs::is_empty(folder_, ec)) {
+    environment(folder_.string() + " holds files but no " + kManifestFile + ": it is not a session folder");
+  }
+  if (previous && request.seed && *request.seed != previous->seed)
+    badInput("session '" + request.session + "' of participant '" + request.participant + "' was started with seed " +
+             std::to_string(previous->seed) + ", not " + std::to_string(*request.seed) +
+             "; leave --seed out to resume it, or start a new session");
+  buildPlan(request, previous ? previous->seed : request.seed.value_or(protocol_.seed));
+  if (!previous) return;
+
+  checkAgainst(*previous);
+  resumed_ = true;
+  // The manifest keeps what the session started with; sittings and moved
+  // files accumulate.
+  const std::vector<std::pair<std::string, script::TrialOverrides>> current = std::move(trials_);
+  manifest_ = *previous;
+  trials_ = current;
+  const ResumePoint point = findResumePoint(folder_, manifest_.plan);
+  done_ = kept_ = point.done;
+  interrupted_ = point.interrupted;
+}
+
+void ResearchSession::buildPlan(const SessionRequest& request, std::uint64_t seed) {
+  const script::ProtocolPlan plan = script::expandProtocol(protocol_, seed);
+  manifest_.experiment = protocol_.experiment;
+  manifest_.description = protocol_.description;
+  manifest_.protocolFile = request.protocolPath;
+  manifest_.protocolHash = levelFileHash(request.protocolPath);
+  manifest_.protocolVersion = protocol_.version;
+  manifest_.seed = seed;
+  std::map<std::string, LevelFacts> levels;
+  for (const script::PlannedTrial& p : plan.trials) {
+    const script::ConditionDef& condition = script::ProtocolPlan::conditionOf(protocol_, p);
+    auto found = levels.find(condition.levelPath);
+    if (found == levels.end()) found = levels.emplace(condition.levelPath, factsOf(condition.levelPath)).first;
+    const LevelFacts& level = found->second;
+    const physics::CouplingDef coupling = script::overriddenCoupling(condition.overrides, level.coupling);
+    ManifestTrial t;
+    t.index = p.index;
+    t.trialId = sessionTrialId(p.index);
+    t.block = p.block;
+    t.blockName = script::ProtocolPlan::blockOf(protocol_, p).name;
+    t.trialInBlock = p.trialInBlock;
+    t.repetition = p.repetition;
+    t.condition = p.condition;
+    t.conditionLabel = condition.label;
+    t.levelFile = condition.levelPath;
+    t.levelName = level.name;
+    t.levelHash = level.hash;
+    t.method = script::couplingMethodName(coupling);
+    t.stiffness = coupling.stiffness;
+    t.damping = coupling.damping;
+    t.alpha = coupling.alpha;
+    t.timeLimit = condition.overrides.timeLimit.value_or(level.timeLimit);
+    t.seed = p.seed;
+    if (const script::BreakDef* b = script::ProtocolPlan::breakBefore(protocol_, p))
+      t.breakBefore = ManifestBreak{b->message, b->minDuration, b->stop};
+    manifest_.plan.push_back(std::move(t));
+    trials_.emplace_back(condition.levelPath, condition.overrides);
+  }
+}
+
+void ResearchSession::checkAgainst(const SessionManifest& previous) const {
+  const std::string which = "session '" + manifest_.session + "' of participant '" + manifest_.participant + "'";
+  const std::string fix = "; finish it with the protocol and levels it started with, or start a new session";
+  if (previous.protocolHash != manifest_.protocolHash)
+    badInput(manifest_.protocolFile + " changed since " + which + " started (content hash " + previous.protocolHash +
+             ", now " + manifest_.protocolHash + ")" + fix);
+  if (previous.plan.size() != manifest_.plan.size())
+    badInput("the plan of " + which + " has " + std::to_string(previous.plan.size()) + " trials, the protocol now " +
+             std::to_string(manifest_.plan.size()) + fix);
+  for (std::size_t i = 0; i < previous.plan.size(); ++i) {
+    const ManifestTrial& was = previous.plan[i];
+    const ManifestTrial& now = manifest_.plan[i];
+    if (was.levelHash != now.levelHash)
+      badInput(now.levelFile + " (" + now.trialId + ") changed since " + which + " started (content hash " +
+               was.levelHash + ", now " + now.levelHash + ")" + fix);
+    if (was.trialId != now.trialId || was.method != now.method || was.stiffness != now.stiffness ||
+        was.damping != now.damping || was.alpha != now.alpha || was.timeLimit != now.timeLimit || was.seed != now.seed)
+      badInput(now.trialId + " of " + which + " is planned differently now" + fix);
+  }
+}
+
+void ResearchSession::begin(const std::string& player) {
+  player_ = player;
+  if (complete()) return;
+  std::error_code ec;
+  fs::create_directories(folder_, ec);
+  if (ec) environment("cannot create the session folder " + folder_.string() + ": " + ec.message());
+  for (const auto& [trialId, reason] : interrupted_) manifest_.aborted.push_back(moveTrialAside(folder_, trialId, reason));
+  if (!resumed_) {
+    manifest_.startTime = record::utcTimestamp();
+    manifest_.softwareVersion = record::softwareVersion();
+  }
+  manifest_.sittings.push_back({record::utcTimestamp(), record::softwareVersion(), done_ + 1, player});
+  try {
+    record::writeFileAtomically(folder_ / kManifestFile, manifest_.toJson());
+  } catch (const record::RecordError& e) {
+    environment(e.what());
+  }
+}
+
+const std::string& ResearchSession::instructionsOf(const ManifestTrial& trial) const {
+  return protocol_.blocks.at(static_cast<std::size_t>(trial.block - 1)).instructions;
+}
+
+const ManifestBreak* ResearchSession::pendingBreak() const {
+  if (complete() || !nextTrial().breakBefore) return nullptr;
+  return &*nextTrial().breakBefore;
+}
+
+bool ResearchSession::stopsHere() const {
+  const ManifestBreak* pause = pendingBreak();
+  return pause != nullptr && pause->stop && ranThisSitting_ > 0;
+}
+
+std::string ResearchSession::couplingProblem(const haptics::DeviceSpec& device) const {
+  for (std::size_t i = static_cast<std::size_t>(done_); i < manifest_.plan.size(); ++i) {
+    const ManifestTrial& t = manifest_.plan[i];
+    script::TrialOverrides planned;  // the effective coupling, as overrides of any
+    planned.method = t.method;
+    planned.stiffness = t.stiffness;
+    planned.damping = t.damping;
+    planned.alpha = t.alpha;
+    const physics::CouplingDef coupling = script::overriddenCoupling(planned, {});
+    const std::string problem = haptics::ServoLoop::couplingProblem(coupling, device);
+    if (!problem.empty())
+      return t.trialId + " (" + t.conditionLabel + ", " + t.levelFile + "): the " + device.name +
+             " device cannot take this coupling: " + problem;
+  }
+  return "";
+}
+
+script::LoadedLevel ResearchSession::loadNextLevel() const {
+  const ManifestTrial& trial = nextTrial();
+  const auto& [path, overrides] = trials_.at(static_cast<std::size_t>(done_));
+  script::LevelLoadOptions options;
+  options.seed = trial.seed;
+  options.adjust = [&overrides](script::LevelDef& level) { script::applyTrialOverrides(overrides, level); };
+  try {
+    return script::LevelLoader(options).loadFile(path);
+  } catch (const script::ScriptError& e) {
+    badInput(e.what());
+  }
+}
+
+std::unique_ptr<TrialRecording> ResearchSession::recordNext(const script::LevelDef& level,
+                                                            const haptics::ServoLoopDef& loop,
+                                                            const std::string& deviceName,
+                                                            const haptics::DeviceSpec& spec) const {
+  const ManifestTrial& t = nextTrial();
+  TrialRecordingDef def;
+  def.dir = folder_.string();
+  def.ids = {manifest_.participant, manifest_.session};
+  def.trialId = t.trialId;
+  def.taskName = manifest_.experiment;
+  def.levelHash = t.levelHash;
+  def.seed = t.seed;
+  def.deviceName = deviceName;
+  def.deviceSpec = spec;
+  def.sidecarExtra = {{"experiment", manifest_.experiment},  {"protocol_file", manifest_.protocolFile},
+                      {"trial_index", std::to_string(t.index)}, {"block", std::to_string(t.block)},
+                      {"block_name", t.blockName},            {"trial_in_block", std::to_string(t.trialInBlock)},
+                      {"repetition", std::to_string(t.repetition)}, {"condition", std::to_string(t.condition)},
+                      {"condition_label", t.conditionLabel},  {"level_file", t.levelFile},
+                      {"player", player_}};
+  try {
+    return std::make_unique<TrialRecording>(def, level, loop);
+  } catch (const TrialRecordingError& e) {
+    environment(e.what());
+  }
+}
+
+void ResearchSession::finishNext(TrialRecording& recording, const TrialResult& result,
+                                 const std::optional<haptics::LoopTimingSummary>& timing) {
+  const ManifestTrial& t = nextTrial();
+  record::Fields extra = {{"trial_index", std::to_string(t.index)},
+                          {"block", std::to_string(t.block)},
+                          {"block_name", t.blockName},
+                          {"trial_in_block", std::to_string(t.trialInBlock)},
+                          {"repetition", std::to_string(t.repetition)},
+                          {"condition", std::to_string(t.condition)},
+                          {"condition_label", t.conditionLabel},
+                          {"level_file", t.levelFile},
+                          {"method", t.method},
+                          {"kr_N_per_m", number(t.stiffness)},
+                          {"kv_N_s_per_m", number(t.damping)},
+                          {"alpha", number(t.alpha)},
+                          {"time_limit_s", number(t.timeLimit)},
+                          {"seed", std::to_string(t.seed)}};
+  for (auto& field : TrialRecording::scoreFields(result)) extra.push_back(std::move(field));
+  extra.emplace_back("ticks", std::to_string(result.ticks));
+  extra.emplace_back("player", player_);
+  try {
+    recording.finish(result, extra, timing);
+  } catch (const TrialRecordingError& e) {
+    environment(e.what());
+  }
+  ++done_;
+  ++ranThisSitting_;
+}
+
+}  // namespace hemiroll::game

@@ -1,0 +1,106 @@
+#pragma once
+// A research session: a protocol (docs/PROTOCOLS.md) run for one
+// participant into its folder (SessionFolder.h), trial after trial, by a bot
+// (`hemiroll session --bot`) or a person (the game's research screen). Both
+// drive it the same way:
+//
+//   ResearchSession s(request);          // load, plan, check; changes nothing
+//   s.begin("mouse");                    // folder, manifest, interrupted files aside
+//   while (!s.complete() && !s.stopsHere()) {
+//     ... s.pendingBreak(), s.nextTrial() ...
+//     LoadedLevel level = s.loadNextLevel();       // with the plan's overrides
+//     auto recording = s.recordNext(level.def, loopDef, "mouse", spec);
+//     ... play the trial through recording->ring() ...
+//     s.finishNext(*recording, result);            // sidecar complete + results row
+//   }
+//
+// A session folder with a manifest is resumed: the protocol file must have
+// the same content (hash) and seed, and every level the same content, or the
+// session is refused (start a new session id instead).
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "engine/haptics/ServoLoop.h"
+#include "engine/script/LevelLoader.h"
+#include "engine/script/ProtocolDef.h"
+#include "game/play/TrialRecording.h"
+#include "game/research/SessionError.h"
+#include "game/research/SessionManifest.h"
+
+namespace hemiroll::game {
+
+struct SessionRequest {
+  std::string protocolPath;
+  std::string levelsDir;                  // "" = the protocol loader's default (ProtocolLoadOptions)
+  std::string participant;
+  std::string session = "1";
+  std::filesystem::path dataRoot;         // "" = defaultSessionsRoot()
+  std::optional<std::uint64_t> seed;      // none = the session's (resumed) or the protocol's
+};
+
+class ResearchSession {
+ public:
+  // Loads the protocol and every level it names, expands the plan, and, when
+  // the session folder has a manifest, checks it and finds where to go on.
+  // Writes nothing. Throws SessionError.
+  explicit ResearchSession(const SessionRequest& request);
+
+  // Starts (or resumes) the sitting: creates the folder, moves the files of
+  // an interrupted trial aside and (re)writes the manifest with this sitting
+  // (`player`: "mouse" or the bot file). Throws SessionError (Environment).
+  void begin(const std::string& player);
+
+  const script::ProtocolDef& protocol() const { return protocol_; }
+  const SessionManifest& manifest() const { return manifest_; }
+  const std::filesystem::path& folder() const { return folder_; }
+  int trialCount() const { return static_cast<int>(manifest_.plan.size()); }
+  int done() const { return done_; }
+  int keptFromEarlier() const { return kept_; }       // finished before this sitting
+  bool resumed() const { return resumed_; }           // the folder had a manifest
+  bool complete() const { return done_ == trialCount(); }
+  // Trials with files left by a crash (moved aside by begin()).
+  const std::vector<std::pair<std::string, std::string>>& interrupted() const { return interrupted_; }
+  const ManifestTrial& nextTrial() const { return manifest_.plan.at(static_cast<std::size_t>(done_)); }
+  const std::string& instructionsOf(const ManifestTrial& trial) const;
+  // The break before the next trial (nullptr: none); stopsHere(): it ends
+  // the sitting (a stop break reached after a trial of this sitting; a
+  // sitting that starts at it just shows it).
+  const ManifestBreak* pendingBreak() const;
+  bool stopsHere() const;
+
+  // "" when every trial still to run has a coupling `device` renders
+  // stably; else one sentence naming the first that has not (a protocol's
+  // kr, alpha too stiff for the device): checked before the first trial.
+  std::string couplingProblem(const haptics::DeviceSpec& device) const;
+
+  // The next trial's level with the plan's overrides and seed. Throws
+  // SessionError (BadInput) when it no longer loads.
+  script::LoadedLevel loadNextLevel() const;
+  // Opens the next trial's recording. Throws SessionError (Environment).
+  std::unique_ptr<TrialRecording> recordNext(const script::LevelDef& level, const haptics::ServoLoopDef& loop,
+                                             const std::string& deviceName, const haptics::DeviceSpec& spec) const;
+  // Completes the sidecar, appends the results row and moves on. Throws
+  // SessionError (Environment).
+  void finishNext(TrialRecording& recording, const TrialResult& result,
+                  const std::optional<haptics::LoopTimingSummary>& timing = std::nullopt);
+
+ private:
+  void buildPlan(const SessionRequest& request, std::uint64_t seed);
+  void checkAgainst(const SessionManifest& previous) const;
+
+  script::ProtocolDef protocol_;
+  SessionManifest manifest_;
+  std::filesystem::path folder_;
+  std::string player_;
+  int done_ = 0, kept_ = 0, ranThisSitting_ = 0;
+  bool resumed_ = false;
+  std::vector<std::pair<std::string, std::string>> interrupted_;
+  // Per planned trial: the level file as found now and the protocol's overrides.
+  std::vector<std::pair<std::string, script::TrialOverrides>> trials_;
+};
+
+}  // namespace hemiroll::game

@@ -1,0 +1,224 @@
+// `hemiroll session`, end to end: the real binary in a child process plays a
+// protocol with a bot into its session folder; a SIGKILL in the middle of a
+// trial and a second run resume it with the finished trial untouched, the
+// interrupted one moved aside and one results row per planned trial.
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <signal.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <thread>
+
+#include "engine/record/DurableFile.h"
+#include "engine/record/RecordingReader.h"
+#include "engine/record/ResultsFile.h"
+#include "game/research/SessionManifest.h"
+#include "tests/support/ChildProcess.h"
+#include "tests/support/ProcessRunner.h"
+#include "tests/support/TempDirectory.h"
+
+namespace hemiroll::test {
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+using ::testing::StartsWith;
+
+const std::string kBinary = HEMIROLL_BINARY;
+const std::string kSource = HEMIROLL_SOURCE_DIR;
+const std::string kSolver = kSource + "/scripts/bots/tutorial_solver.lua";
+const std::string kDemo = kSource + "/levels/protocols/tutorial_demo.lua";
+
+// `hemiroll session ARGS...`
+ProcessResult session(std::vector<std::string> args) {
+  args.insert(args.begin(), "session");
+  return runProcess(kBinary, args);
+}
+
+std::vector<std::string> lines(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) out.push_back(line);
+  return out;
+}
+
+std::set<std::string> filesIn(const fs::path& dir) {
+  std::set<std::string> names;
+  for (const auto& f : fs::directory_iterator(dir)) names.insert(f.path().filename().string());
+  return names;
+}
+
+std::vector<std::string> trialColumn(const fs::path& results) {
+  const record::ResultsTable table = record::ResultsFile(results).read();
+  std::vector<std::string> ids;
+  for (const auto& row : table.rows) ids.push_back(row[2]);
+  return ids;
+}
+
+TEST(SessionCommandTest, ABotPlaysEveryTrialIntoTheSessionFolder) {
+  TempDirectory dir;
+  const ProcessResult r =
+      session({kDemo, "--participant", "p01", "--data", dir.path().string(), "--bot", kSolver});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const fs::path folder = dir.path() / "tutorial-demo" / "p01" / "1";
+  EXPECT_EQ(filesIn(folder), (std::set<std::string>{"session.json", "results.csv", "trial-001.csv", "trial-001.json",
+                                                    "trial-002.csv", "trial-002.json", "trial-003.csv",
+                                                    "trial-003.json"}));
+  // One line per trial as it finished, then the summary.
+  const std::vector<std::string> out = lines(r.out);
+  ASSERT_EQ(out.size(), 4u) << r.out;
+  for (int i = 0; i < 3; ++i)
+    EXPECT_THAT(out[static_cast<std::size_t>(i)],
+                StartsWith("{\"event\":\"trial\",\"trial\":" + std::to_string(i + 1) + ",\"trial_id\":\"trial-00" +
+                           std::to_string(i + 1) + "\""));
+  EXPECT_THAT(out[3], StartsWith("{\"event\":\"summary\",\"experiment\":\"tutorial-demo\""));
+  EXPECT_THAT(out[3], HasSubstr("\"trials\":3,\"done\":3,\"kept\":0,\"ran\":3,\"successes\":3,\"failures\":0"));
+  EXPECT_THAT(out[3], HasSubstr("\"complete\":true"));
+  EXPECT_THAT(r.err, HasSubstr("break before block 2: Well done."));
+
+  // The manifest, and each trial in the recorder's formats, complete, of
+  // the planned level with the planned coupling.
+  const game::SessionManifest m =
+      game::SessionManifest::fromJson(record::readWholeFile(folder / "session.json"), "session.json");
+  EXPECT_EQ(m.protocolFile, kDemo);
+  EXPECT_EQ(m.seed, 7u);  // the protocol's
+  ASSERT_EQ(m.plan.size(), 3u);
+  for (const game::ManifestTrial& t : m.plan) {
+    const record::Recording rec = record::RecordingReader::load(folder / (t.trialId + ".csv"));
+    EXPECT_TRUE(rec.status.complete) << t.trialId;
+    EXPECT_GT(rec.rows.size(), 100u) << t.trialId;
+    EXPECT_EQ(rec.meta.levelHash, t.levelHash);
+    EXPECT_EQ(rec.meta.coupling.alpha, t.alpha);
+    EXPECT_EQ(rec.meta.seed, t.seed);
+    EXPECT_EQ(rec.meta.participant, "p01");
+  }
+  EXPECT_EQ(trialColumn(folder / "results.csv"), (std::vector<std::string>{"trial-001", "trial-002", "trial-003"}));
+
+  // The same protocol and seed elsewhere: the same trials, bit for bit.
+  TempDirectory other;
+  ASSERT_EQ(session({kDemo, "--participant", "p01", "--data", other.path().string(), "--bot", kSolver}).exitCode, 0);
+  for (const char* file : {"trial-001.csv", "trial-002.csv", "trial-003.csv"})
+    EXPECT_EQ(record::readWholeFile(folder / file),
+              record::readWholeFile(other.path() / "tutorial-demo" / "p01" / "1" / file))
+        << file;
+
+  // Run again: nothing left to do, nothing touched.
+  const std::string results = record::readWholeFile(folder / "results.csv");
+  const ProcessResult again =
+      session({kDemo, "--participant", "p01", "--data", dir.path().string(), "--bot", kSolver});
+  EXPECT_EQ(again.exitCode, 0) << again.err;
+  EXPECT_THAT(again.out, HasSubstr("\"done\":3,\"kept\":3,\"ran\":0"));
+  EXPECT_EQ(record::readWholeFile(folder / "results.csv"), results);
+}
+
+TEST(SessionCommandTest, BadInputIsOneSentenceAndExitTwoWithNothingWritten) {
+  TempDirectory dir;
+  const std::string data = (dir.path() / "data").string();
+  const ProcessResult noBot = session({kDemo, "--participant", "p01", "--data", data});
+  EXPECT_EQ(noBot.exitCode, 2);
+  EXPECT_THAT(noBot.err, HasSubstr("people play sessions in the game window"));
+  const std::string broken = dir.write("broken.lua", "return { experiment = 'x',\n blocks = { { levle = 'a.lua' } } }");
+  const ProcessResult bad = session({broken, "--participant", "p01", "--data", data, "--bot", kSolver});
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_THAT(bad.err, StartsWith("hemiroll session: " + broken + ":2: blocks[1].levle: unknown key 'levle' (did you mean 'level'?)"));
+  EXPECT_EQ(bad.out, "");
+  const ProcessResult badBot = session({kDemo, "--participant", "p01", "--data", data, "--bot", broken});
+  EXPECT_EQ(badBot.exitCode, 2);
+  const ProcessResult badId = session({kDemo, "--participant", "a.b", "--data", data, "--bot", kSolver});
+  EXPECT_EQ(badId.exitCode, 2);
+  EXPECT_THAT(badId.err, HasSubstr("the participant id 'a.b' must be"));
+  // Too stiff for the bot's device (1000 N/m): refused before the first trial.
+  const std::string stiff = dir.write(
+      "stiff.lua", "return { experiment = 'x', blocks = { { level = '" + kSource +
+                       "/levels/tutorial_01_tilt_and_return.lua' }, { level = '" + kSource +
+                       "/levels/tutorial_01_tilt_and_return.lua', label = 'stiff', kr = 600 } } }");
+  const ProcessResult tooStiff = session({stiff, "--participant", "p01", "--data", data, "--bot", kSolver});
+  EXPECT_EQ(tooStiff.exitCode, 2);
+  EXPECT_THAT(tooStiff.err, HasSubstr("trial-002 (stiff, "));
+  EXPECT_THAT(tooStiff.err, HasSubstr("the bot device cannot take this coupling: coupling stiffness exceeds"));
+  EXPECT_EQ(session({kDemo}).exitCode, 2);
+  EXPECT_FALSE(fs::exists(data));
+  EXPECT_EQ(session({"--help"}).exitCode, 0);
+}
+
+TEST(SessionCommandTest, AnUnwritableDataRootIsExitOne) {
+  TempDirectory dir;
+  const std::string blocker = dir.write("blocker", "a file where a folder must go");
+  const ProcessResult r = session({kDemo, "--participant", "p01", "--data", blocker, "--bot", kSolver});
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_THAT(r.err, HasSubstr("cannot create the session folder"));
+}
+
+// Trial 2 takes about 2 s of wall time (a 400 s trial the solver cannot
+// finish, headless at ~200x real time), so the kill lands inside it.
+constexpr const char* kCrashProtocol = R"lua(
+return {
+  experiment = "crash",
+  blocks = {
+    { level = "tutorial_01_tilt_and_return.lua" },
+    { level = "paper_reaching.lua", time_limit = 400 },
+    { level = "tutorial_01_tilt_and_return.lua" },
+  },
+}
+)lua";
+
+TEST(SessionCommandTest, KilledInTheSecondTrialResumesWithTheFirstUntouched) {
+  TempDirectory dir;
+  const std::string protocol = dir.write("crash.lua", kCrashProtocol);
+  const std::vector<std::string> args = {"session", protocol, "--participant", "p01", "--data", dir.path().string(),
+                                         "--bot", kSolver, "--levels", kSource + "/levels"};
+  const fs::path folder = dir.path() / "crash" / "p01" / "1";
+  {
+    ChildProcess child(kBinary, args);
+    const auto giveUp = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+    while (!fs::exists(folder / "trial-002.json") && child.running() && std::chrono::steady_clock::now() < giveUp)
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    // Into the trial: rows are being written (the recorder flushes every 0.5 s).
+    std::this_thread::sleep_for(std::chrono::milliseconds(600));
+    ASSERT_TRUE(child.running()) << "the session ended before the kill: " << child.err();
+    child.signal(SIGKILL);
+    EXPECT_EQ(child.wait(), -1);
+  }
+  ASSERT_TRUE(fs::exists(folder / "trial-002.csv"));
+  record::ReadOptions lenient;
+  lenient.allowTruncatedTail = true;
+  EXPECT_FALSE(record::RecordingReader::load(folder / "trial-002.csv", lenient).status.complete);
+  EXPECT_EQ(trialColumn(folder / "results.csv"), std::vector<std::string>{"trial-001"});
+  const std::string firstCsv = record::readWholeFile(folder / "trial-001.csv");
+  const std::string firstSidecar = record::readWholeFile(folder / "trial-001.json");
+  const std::string cutCsv = record::readWholeFile(folder / "trial-002.csv");
+
+  const ProcessResult r = runProcess(kBinary, args);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_THAT(r.err, HasSubstr("trial-002 was interrupted before it finished; its files were moved aside"));
+  EXPECT_THAT(r.out, HasSubstr("\"trials\":3,\"done\":3,\"kept\":1,\"ran\":2"));
+  // The finished trial: the same bytes. The interrupted one: moved aside whole.
+  EXPECT_EQ(record::readWholeFile(folder / "trial-001.csv"), firstCsv);
+  EXPECT_EQ(record::readWholeFile(folder / "trial-001.json"), firstSidecar);
+  EXPECT_EQ(record::readWholeFile(folder / "trial-002.csv.aborted-1"), cutCsv);
+  EXPECT_TRUE(fs::exists(folder / "trial-002.json.aborted-1"));
+  EXPECT_TRUE(record::RecordingReader::load(folder / "trial-002.csv").status.complete);
+  // Exactly one results row per planned trial.
+  EXPECT_EQ(trialColumn(folder / "results.csv"), (std::vector<std::string>{"trial-001", "trial-002", "trial-003"}));
+  const game::SessionManifest m =
+      game::SessionManifest::fromJson(record::readWholeFile(folder / "session.json"), "session.json");
+  ASSERT_EQ(m.aborted.size(), 1u);
+  EXPECT_EQ(m.aborted[0].trialId, "trial-002");
+  EXPECT_EQ(m.aborted[0].moved.size(), 2u);
+  ASSERT_EQ(m.sittings.size(), 2u);
+  EXPECT_EQ(m.sittings[1].firstTrial, 2);
+
+  // The protocol edited since: refused, the folder left as it is.
+  dir.write("crash.lua", std::string(kCrashProtocol) + "-- edited\n");
+  const ProcessResult changed = runProcess(kBinary, args);
+  EXPECT_EQ(changed.exitCode, 2);
+  EXPECT_THAT(changed.err, HasSubstr("crash.lua changed since session '1' of participant 'p01' started"));
+}
+
+}  // namespace
+}  // namespace hemiroll::test

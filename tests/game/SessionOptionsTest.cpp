@@ -1,0 +1,54 @@
+// game/commands/SessionOptions: the flags of `hemiroll session`, checked
+// before any file is read.
+
+#include "game/commands/SessionOptions.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+namespace hemiroll::game {
+namespace {
+
+using ::testing::HasSubstr;
+
+TEST(SessionOptions, ReadsEveryFlag) {
+  const SessionOptionsResult r =
+      parseSessionOptions({"p.lua", "--participant", "p01", "--session=2", "--data", "d", "--bot", "b.lua",
+                           "--seed", "9223372036854775807", "--levels", "lv"});
+  ASSERT_EQ(r.error, "");
+  EXPECT_EQ(r.options.protocolPath, "p.lua");
+  EXPECT_EQ(r.options.participant, "p01");
+  EXPECT_EQ(r.options.session, "2");
+  EXPECT_EQ(r.options.dataRoot, "d");
+  EXPECT_EQ(r.options.botPath, "b.lua");
+  EXPECT_EQ(r.options.seed, 9223372036854775807u);
+  EXPECT_EQ(r.options.levelsDir, "lv");
+}
+
+TEST(SessionOptions, DefaultsAreSessionOneTheProtocolsSeedAndNoBot) {
+  const SessionOptionsResult r = parseSessionOptions({"--participant=x", "p.lua"});
+  ASSERT_EQ(r.error, "");
+  EXPECT_EQ(r.options.session, "1");
+  EXPECT_FALSE(r.options.seed);
+  EXPECT_FALSE(r.options.botPath);
+  EXPECT_FALSE(r.options.dataRoot);
+  EXPECT_EQ(r.options.levelsDir, "");
+}
+
+TEST(SessionOptions, MistakesAreOneSentence) {
+  const std::pair<std::vector<std::string>, std::string> cases[] = {
+      {{"--participant", "x"}, "missing the protocol file"},
+      {{"p.lua"}, "missing --participant ID"},
+      {{"p.lua", "--participant", "x", "--seed", "-1"}, "--seed needs a whole number"},
+      {{"p.lua", "--participant", "x", "--seed", "9223372036854775808"}, "--seed needs a whole number"},
+      {{"p.lua", "--participant"}, "--participant needs a value"},
+      {{"p.lua", "--participant", "x", "--realtime"}, "unknown flag '--realtime'"},
+      {{"p.lua", "q.lua", "--participant", "x"}, "unexpected argument 'q.lua'"},
+  };
+  for (const auto& [args, expected] : cases) EXPECT_THAT(parseSessionOptions(args).error, HasSubstr(expected));
+  EXPECT_TRUE(parseSessionOptions({"--help"}).options.help);
+  EXPECT_EQ(parseSessionOptions({"--help"}).error, "");
+}
+
+}  // namespace
+}  // namespace hemiroll::game
