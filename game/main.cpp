@@ -6,7 +6,9 @@
 #include <string_view>
 #include <vector>
 
+#include "game/commands/AnalyzeCommand.h"
 #include "game/commands/ExitCode.h"
+#include "game/commands/FiguresCommand.h"
 #include "game/commands/PlayCommand.h"
 #include "game/commands/RunCommand.h"
 #include "game/commands/ScreenshotCommand.h"
@@ -26,6 +28,8 @@ constexpr CommandEntry kCommands[] = {
     {"sim", "run a scenario's physics headless and write the trajectory as CSV", hemiroll::game::runSimCommand},
     {"run", "play a level with a bot (headless) and print the result as one JSON line", hemiroll::game::runRunCommand},
     {"screenshot", "render one frame of a level offscreen and write it as a PNG", hemiroll::game::runScreenshotCommand},
+    {"analyze", "measure phases, rose and helix in recorded trials; tables and SVG plots", hemiroll::game::runAnalyzeCommand},
+    {"figures", "regenerate the paper's Figs. 9-11 from the simulator, with their features", hemiroll::game::runFiguresCommand},
     {"version", "print the version", hemiroll::game::runVersionCommand},
 };
 

@@ -40,7 +40,7 @@ void drawSeries(SvgDocument& doc, const Rect& f, const PlotAxis& x, const PlotAx
       continue;
     }
     const bool last = i + 1 == n;
-    if (!run.empty() && !last && std::hypot(p.x - run.back().x, p.y - run.back().y) < 0.5) continue;
+    if (!run.empty() && !last && std::hypot(p.x - run.back().x, p.y - run.back().y) < 1.0) continue;
     run.push_back(p);
   }
   flush();

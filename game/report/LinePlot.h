@@ -2,8 +2,8 @@
 // A line (or marker) plot with axes, ticks, grid, title, shaded intervals
 // and a legend, drawn into a rectangle of an SvgDocument. Data in SI; the
 // axes' scale turns them into the labels' units. A series' line breaks at
-// non-finite values; points closer than half a pixel to the last drawn one
-// are skipped (a 35 s trace at 1 kHz stays a small file and looks the same).
+// non-finite values; points closer than a pixel to the last drawn one are
+// skipped (a 35 s trace at 1 kHz stays a small file and looks the same).
 
 #include <string>
 #include <vector>

@@ -38,7 +38,7 @@ TEST(LinePlot, ALineBreaksAtNaNAndNeverWritesIt) {
   def.bands.push_back({2.0, 4.0, "steady", "#2ca02c", 0.15});
   const std::string svg = renderLinePlot(def);
   EXPECT_EQ(test::xmlProblem(svg), "") << svg;
-  EXPECT_THAT(svg, Not(HasSubstr("nan")));
+  EXPECT_EQ(svg.find("nan"), std::string::npos);
   EXPECT_EQ(count(svg, "<polyline"), 2u);  // before and after the NaN
   EXPECT_THAT(svg, HasSubstr(">steady</text>"));
   EXPECT_THAT(svg, HasSubstr(">t [s]</text>"));
@@ -67,8 +67,8 @@ TEST(LinePlot, EqualAspectGivesAUnitTheSameLengthOnBothAxes) {
     const double x = std::stod((*it)[1]), y = std::stod((*it)[2]);
     xMin = std::min(xMin, x), xMax = std::max(xMax, x), yMin = std::min(yMin, y), yMax = std::max(yMax, y);
   }
-  // Pixels are rounded to 0.01 and points within half a pixel skipped: equal within 1 px.
-  EXPECT_NEAR(xMax - xMin, yMax - yMin, 1.0);
+  // Pixels are rounded to 0.01 and points within a pixel of the last one skipped: equal within 2 px.
+  EXPECT_NEAR(xMax - xMin, yMax - yMin, 2.0);
   EXPECT_GT(xMax - xMin, 50.0);
 }
 
@@ -78,7 +78,7 @@ TEST(LinePlot, EmptyPlotStillDrawsItsAxes) {
   const std::string svg = renderLinePlot(def);
   EXPECT_EQ(test::xmlProblem(svg), "");
   EXPECT_THAT(svg, HasSubstr(">nothing</text>"));
-  EXPECT_THAT(svg, Not(HasSubstr("nan")));
+  EXPECT_EQ(svg.find("nan"), std::string::npos);
 }
 
 }  // namespace

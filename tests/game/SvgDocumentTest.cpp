@@ -45,7 +45,7 @@ TEST(SvgDocument, NonFiniteCoordinatesLeaveTheElementOut) {
   doc.polyline(bad, s);
   doc.text({kNaN, 0}, "x", TextStyle{});
   const std::string svg = doc.str();
-  EXPECT_THAT(svg, Not(HasSubstr("nan")));
+  EXPECT_EQ(svg.find("nan"), std::string::npos);
   EXPECT_THAT(svg, Not(HasSubstr("inf")));
   EXPECT_THAT(svg, Not(HasSubstr("<line")));
   EXPECT_THAT(svg, Not(HasSubstr("<circle")));
