@@ -23,8 +23,8 @@
 // Steps: resample evenly, smooth over `smoothingTime` (a moving average of
 // w seconds shrinks the fast term r2 by sinc(pi w / P), P = 2 pi / (k |Omega|)
 // its period in the face frame: a bias of about (pi w / P)^2 / 6 on the leaf
-// radius, 0.07 % for the paper's rose and 0.25 % for k = 14 at w = 0.05 s,
-// 100 Hz); centre = the centre
+// radius; at 100 Hz the 0.05 s default is 7 samples, 0.07 s, and the bias
+// 0.13 % for the paper's rose, 0.4 % for k = 14); centre = the centre
 // of the bounding box, then twice the centre of the circle through the leaf
 // tips; extrema of rho with hysteresis; the longest run of regular leaves
 // (same direction, angle and duration within `regularity` of the run's
