@@ -81,7 +81,8 @@ Phases segmentPhases(std::span<const double> time, std::span<const double> psi, 
   const std::vector<double> angle = def.unwrap ? unwrapAngles(series.channels[0]) : series.channels[0];
   out.rateT0 = series.t0;
   out.rateDt = series.dt;
-  out.rate = localSlope(angle, series.dt, halfWidthFor(def.rateWindow, series.dt));
+  out.rate = movingAverage(localSlope(angle, series.dt, halfWidthFor(def.rateWindow, series.dt)),
+                           halfWidthFor(def.rateAverage, series.dt));
   const std::vector<double>& r = out.rate;
 
   Run run = longestWithinOwnBand(r, def.relativeBand, def.absoluteBand);

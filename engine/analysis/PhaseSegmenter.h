@@ -5,10 +5,12 @@
 //
 // Definitions (docs/ANALYSIS.md):
 //  - rate: psi'(t) by a local least-squares slope over `rateWindow` seconds
-//    of the (unwrapped) angle. The window is longer than two leaves of the
-//    rose (2.2 s each in the paper's actuation), whose wobble on psi would
-//    otherwise split the steady phase; for a quadratic psi (a constant
-//    acceleration) the slope is exact;
+//    of the (unwrapped) angle, then a moving average over `rateAverage`
+//    seconds. Each leaf of the rose puts a wobble on psi (2.2 s in the
+//    paper's actuation, Fig. 11; ~2 s in the human data), which would split
+//    the steady phase; the two stages together (6 s of support) pass less
+//    than 5 % of it, where one 5 s slope passed 20 %. For a quadratic psi
+//    (a constant acceleration) both stages are exact away from the ends;
 //  - steady precession: the longest interval on which the rate stays within
 //    +-(relativeBand |m| + absoluteBand) of m, where m is the median rate
 //    over that same interval. It is found as a fixed point: start from the
@@ -19,8 +21,8 @@
 //    stabilisation: from its end to the end (either may be empty).
 // Not found, with the reason, when |m| < minRate (no precession) or the
 // interval is shorter than minDuration.
-// The rate is smoothed over rateWindow, so a boundary between phases is
-// located to about half that window plus the band's share of a ramp.
+// The rate is smoothed over rateWindow + rateAverage, so a boundary between
+// phases is located to about half of that plus the band's share of a ramp.
 
 #include <span>
 #include <string>
@@ -35,7 +37,8 @@ struct TimeInterval {
 };
 
 struct PhaseDef {
-  double rateWindow = 5.0;      // [s] slope window for psi'
+  double rateWindow = 3.0;      // [s] slope window for psi'
+  double rateAverage = 3.0;     // [s] then a moving average of the slope over this window
   double relativeBand = 0.25;   // [-] steady: within this fraction of |m| ...
   double absoluteBand = 0.02;   // [rad/s] ... plus this
   double minRate = 0.05;        // [rad/s] a slower median is no precession

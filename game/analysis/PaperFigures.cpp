@@ -32,10 +32,11 @@ std::string paperFiguresMarkdown(const FigureRun& run, const analysis::TrialFeat
   const analysis::ArcFeatures& a = f.helix.arc;
   const analysis::LoopFeatures& l = f.helix.loops;
   const analysis::Phases& p = f.phases;
-  std::string md = "Run: prescribed rose drive (8 states, eqs. 46-48), r1 = " + fixed(100 * d.r1, 2) +
+  std::string md = "Run: " + run.trial.source + ", prescribed rose drive (8 states, eqs. 46-48), r1 = " + fixed(100 * d.r1, 2) +
                    " cm, r2 = " + fixed(100 * d.r2, 2) + " cm, k = " + fixed(d.k, 2) + ", Omega = " + fixed(d.omega, 4) +
                    " rad/s, " + fixed(p.trial.duration(), 3) + " s at h = " + fixed(1000 * run.timeStep, 3) + " ms (" +
-                   run.integrator + ")" + (run.event.empty() ? "" : ", stopped by the event " + run.event) + ".\n\n";
+                   run.integrator + "), starting " + run.start +
+                   (run.event.empty() ? "" : ", stopped by the event " + run.event) + ".\n\n";
   md += "| feature | the paper | measured on this run |\n|---|---|---|\n";
   md += row("leaves per closed cycle (mass point)", "k + 1 = " + fixed(d.k + 1, 0) + " (human: 8-15)",
             r.found ? std::to_string(r.leaves) + " (" + fixed(r.leavesPerCycle, 3) + " ± " + fixed(r.leavesPerCycleSpread, 3) + ")"
@@ -52,8 +53,8 @@ std::string paperFiguresMarkdown(const FigureRun& run, const analysis::TrialFeat
                           " ± " + fixed(p.steadyRateSpread, 3) + " rad/s"
                     : "not found: " + p.reason);
   md += row("curvature of the contact trace", "circularly curved (Fig. 10)",
-            a.found ? fixed(a.curvature, 1) + " ± " + fixed(a.curvatureError, 1) + " 1/m (radius " +
-                          fixed(100 * a.radius, 1) + " cm, rms " + fixed(1000 * a.rmsResidual, 1) + " mm)"
+            a.found ? fixed(a.curvature, 1) + " ± " + fixed(a.curvatureError, 2) + " 1/m (radius " +
+                          fixed(100 * a.radius, 2) + " cm, rms " + fixed(1000 * a.rmsResidual, 2) + " mm)"
                     : a.reason);
   md += row("loops along the trace", "spiral-like loops, conjectured one per leaf",
             l.found ? std::to_string(l.count) + " loops every " + fixed(l.spacingTime.value, 2) + " ± " +
@@ -80,7 +81,7 @@ OutputFiles paperFigures(const FigureRun& run, const analysis::TrialFeatures& f)
   nlohmann::json j = nlohmann::json::parse(featuresJson(run.trial, f));
   j["run"] = {{"drive", "rose"},           {"r1_m", run.rose.r1},          {"r2_m", run.rose.r2},
               {"k", run.rose.k},           {"Omega_rad_per_s", run.rose.omega}, {"time_step_s", run.timeStep},
-              {"integrator", run.integrator}, {"event", run.event.empty() ? nlohmann::json() : nlohmann::json(run.event)}};
+              {"integrator", run.integrator}, {"start", run.start}, {"event", run.event.empty() ? nlohmann::json() : nlohmann::json(run.event)}};
   files.emplace_back("figures_features.json", j.dump(2) + "\n");
   files.emplace_back("figures_features.md", "# Features of the `hemiroll figures` run\n\n" + paperFiguresMarkdown(run, f));
   return files;

@@ -18,6 +18,7 @@ struct FigureRun {
   double timeStep = 0.001;        // [s]
   std::string integrator = "rk4";
   std::string event;              // a domain event that stopped the run early, else empty
+  std::string start;              // the initial state in words ("upright at rest", "u_o = -0.58271 rad")
 };
 
 // fig09_mass_point_rose.svg, fig10_contact_trajectory.svg,

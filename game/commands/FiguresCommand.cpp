@@ -1,5 +1,6 @@
 #include "game/commands/FiguresCommand.h"
 
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <optional>
@@ -7,6 +8,7 @@
 #include <system_error>
 
 #include "engine/physics/DomainEvents.h"
+#include "engine/physics/StateLayout.h"
 #include "engine/record/RecordError.h"
 #include "engine/script/ScenarioLoader.h"
 #include "engine/script/ScriptError.h"
@@ -96,6 +98,14 @@ int runFiguresCommand(const std::vector<std::string>& args) {
   run.trial.id = "figures";
   run.trial.source = path;
   run.trial.kind = "sim";
+  // The rose drive uses the hemisphere's eight states (slots 4..11); the mass point comes from the curve.
+  for (int i = physics::force_slot::body; i < 12; ++i) {
+    if (scenario.initial[i] == 0.0) continue;
+    char value[64];
+    std::snprintf(value, sizeof value, "%.9g", scenario.initial[i]);
+    run.start += (run.start.empty() ? "from " : ", ") + std::string(physics::kStateNames[i]) + " = " + value;
+  }
+  if (run.start.empty()) run.start = "upright at rest (the all-zero state)";
   RunSummary summary;
   try {
     summary = ScenarioRun(scenario, settings).run([&](const TrajectoryRow& row) {

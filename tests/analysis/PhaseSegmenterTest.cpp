@@ -56,8 +56,9 @@ void expectThreePhases(const Phases& p, double w, double tolerance) {
 }
 
 TEST(PhaseSegmenter, ThreeKnownPhasesAtTheirTimes) {
-  // The boundaries lie 3.5 s inside the ramps, more than the rate window's
-  // half (2.5 s), where a local slope of a quadratic psi is exact: only the
+  // The boundaries lie 3.5 s inside the ramps, more than the rate filter's
+  // half support (1.5 s slope + 1.5 s average), where the slope of a
+  // quadratic psi and the average of a linear rate are exact: only the
   // 0.01 s sampling of the band edge remains.
   expectThreePhases(segmentPhases(threePhases(0.5).t, threePhases(0.5).psi), 0.5, 0.02);
   // Clockwise, as the paper's Omega < 0.
@@ -68,9 +69,9 @@ TEST(PhaseSegmenter, ThreeKnownPhasesAtTheirTimes) {
 TEST(PhaseSegmenter, NoisyAngleStillSegmentedWithinFiftyMilliseconds) {
   Samples s = threePhases(0.5);
   test::addNoise(s.psi, 0.005, 11);
-  // The slope over 501 samples has a standard error of 0.005 / (0.01 sqrt(1.05e7))
-  // = 1.5e-4 rad/s; the ramps change by 0.042 rad/s per second, so a boundary moves
-  // by about 4 ms per standard error: 50 ms is more than ten of them.
+  // The slope over 301 samples has a standard error of 0.005 / (0.01 sqrt(2.3e6))
+  // = 3.3e-4 rad/s, less after the average; the ramps change by 0.042 rad/s per
+  // second, so a boundary moves by under 8 ms per standard error: 50 ms is six of them.
   expectThreePhases(segmentPhases(s.t, s.psi), 0.5, 0.05);
 }
 

@@ -34,9 +34,10 @@ Trial makeTrial(bool precessing) {
 TEST(TrialAnalyzer, RoseAndHelixMeasuredOverTheSteadyPhase) {
   const TrialFeatures f = analyzeTrial(makeTrial(true).samples());
   ASSERT_TRUE(f.phases.found) << f.phases.reason;
-  // Corners in the rate, smoothed over 5 s: the band edge is crossed within half the window.
-  EXPECT_NEAR(f.phases.steady.start, 10.0, 2.5);
-  EXPECT_NEAR(f.phases.steady.end, 30.0, 2.5);
+  // Steps in the rate, smoothed over 3 s + 3 s: the band edge (68 % of the step) is crossed
+  // within half the filter's support (3 s) of the step.
+  EXPECT_NEAR(f.phases.steady.start, 10.0, 3.0);
+  EXPECT_NEAR(f.phases.steady.end, 30.0, 3.0);
   EXPECT_NEAR(f.phases.steadyRateMedian, 0.3, 1e-6);
   EXPECT_TRUE(f.roseNote.empty()) << f.roseNote;
   EXPECT_DOUBLE_EQ(f.roseWindow.start, f.phases.steady.start);
