@@ -33,3 +33,4 @@
 #include "engine/analysis/Statistics.h"
 #include "engine/analysis/TrialAnalyzer.h"
 #include "engine/analysis/UniformSeries.h"
+#include "engine/analysis/Wording.h"

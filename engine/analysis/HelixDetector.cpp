@@ -4,24 +4,17 @@
 #include <cmath>
 #include <complex>
 #include <numbers>
-#include <sstream>
 
 #include "engine/analysis/CircleFit.h"
 #include "engine/analysis/DominantTone.h"
 #include "engine/analysis/Filters.h"
+#include "engine/analysis/Wording.h"
 
 namespace hemiroll::analysis {
 
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-
-std::string number(double v) {
-  std::ostringstream out;
-  out.precision(3);
-  out << v;
-  return out.str();
-}
 
 std::vector<double> headings(const std::vector<double>& vx, const std::vector<double>& vy) {
   std::vector<double> a(vx.size());
@@ -61,11 +54,11 @@ void measureArc(const std::vector<double>& lx, const std::vector<double>& ly, do
                                         : 0.0;
   const double sagitta = arc.length * arc.length * std::abs(arc.curvature) / 8.0;
   if (!(std::abs(arc.curvature) > 3.0 * arc.curvatureError)) {
-    arc.reason = "not curved: the trace is straight within its scatter (curvature " + number(arc.curvature) +
-                 " 1/m, standard error " + number(arc.curvatureError) + " 1/m)";
+    arc.reason = "not curved: the trace is straight within its scatter (curvature " + shortNumber(arc.curvature) +
+                 " 1/m, standard error " + shortNumber(arc.curvatureError) + " 1/m)";
   } else if (!(fit.rmsResidual < 0.5 * sagitta)) {
-    arc.reason = "not an arc: the trace strays " + number(fit.rmsResidual) + " m (rms) from the best circle, more than " +
-                 "half its bend (" + number(sagitta) + " m)";
+    arc.reason = "not an arc: the trace strays " + shortNumber(fit.rmsResidual) + " m (rms) from the best circle, more than " +
+                 "half its bend (" + shortNumber(sagitta) + " m)";
   } else {
     arc.found = true;
   }
@@ -100,7 +93,7 @@ HelixFeatures detectHelix(std::span<const double> time, std::span<const double> 
   // nearest to it), without the ends where the window is not full.
   const auto h = static_cast<std::size_t>(std::max(0L, std::lround(0.5 * (period / s.dt - 1.0))));
   if (s.size() < 2 * h + 8) {
-    arc.reason = "no arc: " + number(s.duration()) + " s is too short for the low-pass window of " + number(period) + " s";
+    arc.reason = "no arc: " + shortNumber(s.duration()) + " s is too short for the low-pass window of " + shortNumber(period) + " s";
   } else {
     const std::vector<double> ax = movingAverage(s.channels[0], h), ay = movingAverage(s.channels[1], h);
     arc.x.assign(ax.begin() + static_cast<std::ptrdiff_t>(h), ax.end() - static_cast<std::ptrdiff_t>(h));
@@ -111,8 +104,8 @@ HelixFeatures detectHelix(std::span<const double> time, std::span<const double> 
 
   if (!periodic) {
     loops.reason = tone.found ? "no loops: the trace's velocity has no clear period (its strongest tone holds " +
-                                    number(100.0 * tone.share) + " % of its variation, needs " +
-                                    number(100.0 * def.minShare) + " %)"
+                                    shortNumber(100.0 * tone.share) + " % of its variation, needs " +
+                                    shortNumber(100.0 * def.minShare) + " %)"
                               : "no loops: the trace's velocity has no periodic part (it moves uniformly, turns "
                                 "slowly or stands still)";
     return out;
@@ -168,7 +161,7 @@ HelixFeatures detectHelix(std::span<const double> time, std::span<const double> 
   const double variation = loops.spacingTime.spread / loops.spacingTime.value;
   if (!(variation <= def.maxSpacingVariation)) {
     loops.reason = "no helix: " + std::to_string(loops.count) + " loops, but their spacing varies by " +
-                   number(100.0 * variation) + " % (at most " + number(100.0 * def.maxSpacingVariation) + " %)";
+                   shortNumber(100.0 * variation) + " % (at most " + shortNumber(100.0 * def.maxSpacingVariation) + " %)";
     return out;
   }
   loops.found = true;

@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
-#include <sstream>
 
 #include "engine/analysis/Filters.h"
 #include "engine/analysis/Statistics.h"
 #include "engine/analysis/UniformSeries.h"
+#include "engine/analysis/Wording.h"
 
 namespace hemiroll::analysis {
 
@@ -17,13 +17,6 @@ struct Run {
   std::size_t first = 0, last = 0;  // inclusive
   std::size_t length() const { return last - first + 1; }
 };
-
-std::string number(double v) {
-  std::ostringstream out;
-  out.precision(3);
-  out << v;
-  return out.str();
-}
 
 // The longest interval whose values all lie within +-(rel |mid| + abs) of
 // their mid-range mid. Growing an interval widens its range at least as fast
@@ -97,13 +90,13 @@ Phases segmentPhases(std::span<const double> time, std::span<const double> psi, 
   const double duration = series.dt * static_cast<double>(run.length() - 1);
   out.steadyRateMedian = m;
   if (std::abs(m) < def.minRate) {
-    out.reason = "no steady precession: the longest steady stretch turns at " + number(m) + " rad/s (below " +
-                 number(def.minRate) + " rad/s)";
+    out.reason = "no steady precession: the longest steady stretch turns at " + shortNumber(m) + " rad/s (below " +
+                 shortNumber(def.minRate) + " rad/s)";
     return out;
   }
   if (duration < def.minDuration) {
-    out.reason = "no steady precession: the rate stays within " + number(100.0 * def.relativeBand) +
-                 "% of its median for only " + number(duration) + " s (needs " + number(def.minDuration) + " s)";
+    out.reason = "no steady precession: the rate stays within " + shortNumber(100.0 * def.relativeBand) +
+                 "% of its median for only " + shortNumber(duration) + " s (needs " + shortNumber(def.minDuration) + " s)";
     return out;
   }
   out.found = true;

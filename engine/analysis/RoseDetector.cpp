@@ -4,25 +4,18 @@
 #include <cmath>
 #include <complex>
 #include <numbers>
-#include <sstream>
 
 #include "engine/analysis/CircleFit.h"
 #include "engine/analysis/DominantTone.h"
 #include "engine/analysis/Extrema.h"
 #include "engine/analysis/Filters.h"
+#include "engine/analysis/Wording.h"
 
 namespace hemiroll::analysis {
 
 namespace {
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
-
-std::string number(double v) {
-  std::ostringstream out;
-  out.precision(3);
-  out << v;
-  return out.str();
-}
 
 double at(const std::vector<double>& v, double position) {
   const auto i = static_cast<std::size_t>(std::clamp(std::floor(position), 0.0, static_cast<double>(v.size() - 1)));
@@ -134,8 +127,8 @@ RoseFeatures detectRose(std::span<const double> time, std::span<const double> x,
   const double rhoMedian = median(path.rho);
   const double modulation = (quantile(path.rho, 0.95) - quantile(path.rho, 0.05)) / rhoMedian;
   if (!(modulation >= def.minModulation)) {
-    out.reason = "no rose: the distance from the centre varies by only " + number(100.0 * modulation) +
-                 " % (a circle or a still point has no leaves; needs " + number(100.0 * def.minModulation) + " %)";
+    out.reason = "no rose: the distance from the centre varies by only " + shortNumber(100.0 * modulation) +
+                 " % (a circle or a still point has no leaves; needs " + shortNumber(100.0 * def.minModulation) + " %)";
     return out;
   }
   std::vector<std::complex<double>> rhoSignal(path.rho.begin(), path.rho.end());
@@ -145,7 +138,7 @@ RoseFeatures detectRose(std::span<const double> time, std::span<const double> x,
   out.toneShare = tone.share;
   if (!tone.found || tone.share < def.minShare) {
     out.reason = "no rose: the distance from the centre has no clear period (its strongest tone holds " +
-                 number(100.0 * tone.share) + " % of its variation, needs " + number(100.0 * def.minShare) + " %)";
+                 shortNumber(100.0 * tone.share) + " % of its variation, needs " + shortNumber(100.0 * def.minShare) + " %)";
     return out;
   }
 
@@ -175,8 +168,8 @@ RoseFeatures detectRose(std::span<const double> time, std::span<const double> x,
   out.leavesPerCycleSpread = standardDeviation(perLeaf);
   out.cycles = runAngle / kTwoPi;
   if (out.leavesPerCycle < def.minLeavesPerCycle) {
-    out.reason = "no rose: the leaves do not go round the centre (" + number(out.leavesPerCycle) +
-                 " leaves per revolution, needs " + number(def.minLeavesPerCycle) + ")";
+    out.reason = "no rose: the leaves do not go round the centre (" + shortNumber(out.leavesPerCycle) +
+                 " leaves per revolution, needs " + shortNumber(def.minLeavesPerCycle) + ")";
     return out;
   }
   out.found = true;

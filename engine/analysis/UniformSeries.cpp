@@ -2,22 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 #include "engine/analysis/Statistics.h"
+#include "engine/analysis/Wording.h"
 
 namespace hemiroll::analysis {
-
-namespace {
-
-std::string seconds(double s) {
-  std::ostringstream out;
-  out.precision(3);
-  out << s << " s";
-  return out.str();
-}
-
-}  // namespace
 
 UniformSeries resampleUniform(std::span<const double> time, std::span<const std::span<const double>> channels,
                               const ResampleDef& def) {
@@ -57,7 +46,7 @@ UniformSeries resampleUniform(std::span<const double> time, std::span<const std:
   }
   const std::size_t count = bestLast - bestFirst + 1;
   if (count < minSamples) {
-    out.problem = "the longest stretch without a gap over " + seconds(def.maxGap) + " has only " +
+    out.problem = "the longest stretch without a gap over " + shortNumber(def.maxGap) + " s" + " has only " +
                   std::to_string(count) + " samples (needs " + std::to_string(def.minSamples) + ")";
     return out;
   }
@@ -70,8 +59,8 @@ UniformSeries resampleUniform(std::span<const double> time, std::span<const std:
   // The small allowance keeps the last native sample when span / dt is whole up to round-off.
   const auto n = static_cast<std::size_t>(std::floor(span / out.dt * (1.0 + 1e-12))) + 1;
   if (n < minSamples) {
-    out.problem = "only " + seconds(span) + " of usable data (" + std::to_string(n) + " samples at " +
-                  seconds(out.dt) + ")";
+    out.problem = "only " + shortNumber(span) + " s" + " of usable data (" + std::to_string(n) + " samples at " +
+                  shortNumber(out.dt) + " s" + ")";
     return out;
   }
   out.channels.assign(channels.size(), std::vector<double>(n));

@@ -40,15 +40,23 @@ std::vector<report::Band> phaseBands(const analysis::Phases& p) {
           {p.deceleration.start, p.deceleration.end, "deceleration", "#9467bd", 0.12}};
 }
 
+// A path on a plane in cm with equal axes, drawn faint in full.
+report::LinePlotDef planarPlot(std::string title, std::string xLabel, std::string yLabel, std::string pathLabel,
+                               const std::vector<double>& x, const std::vector<double>& y) {
+  report::LinePlotDef plot;
+  plot.title = std::move(title);
+  plot.x = {std::move(xLabel), kCm};
+  plot.y = {std::move(yLabel), kCm};
+  plot.equalAspect = true;
+  plot.series.push_back({std::move(pathLabel), x, y, kFaint, 1.0});
+  return plot;
+}
+
 }  // namespace
 
 report::LinePlotDef contactTracePlot(const TrialData& trial, const analysis::TrialFeatures& f) {
-  report::LinePlotDef plot;
-  plot.title = "contact point on the plane";
-  plot.x = {"u_a [cm]", kCm};
-  plot.y = {"v_a [cm]", kCm};
-  plot.equalAspect = true;
-  plot.series.push_back({"trace", trial.contactX, trial.contactY, kFaint, 1.0});
+  report::LinePlotDef plot =
+      planarPlot("contact point on the plane", "u_a [cm]", "v_a [cm]", "trace", trial.contactX, trial.contactY);
   const analysis::HelixFeatures& h = f.helix;
   plot.series.push_back(within(trial.time, trial.contactX, trial.contactY, f.helixWindow, "analysed window", "#1f77b4"));
   if (!h.arc.x.empty()) plot.series.push_back({"low-passed", h.arc.x, h.arc.y, "#d62728", 2.0});
@@ -67,12 +75,7 @@ report::LinePlotDef contactTracePlot(const TrialData& trial, const analysis::Tri
 }
 
 report::LinePlotDef massPointPlot(const TrialData& trial, const analysis::TrialFeatures& f) {
-  report::LinePlotDef plot;
-  plot.title = "mass point on the face";
-  plot.x = {"x_p [cm]", kCm};
-  plot.y = {"y_p [cm]", kCm};
-  plot.equalAspect = true;
-  plot.series.push_back({"path", trial.massX, trial.massY, kFaint, 1.0});
+  report::LinePlotDef plot = planarPlot("mass point on the face", "x_p [cm]", "y_p [cm]", "path", trial.massX, trial.massY);
   const analysis::RoseFeatures& r = f.rose;
   if (r.found) {
     plot.series.push_back(within(trial.time, trial.massX, trial.massY, r.span,

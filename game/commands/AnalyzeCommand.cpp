@@ -1,11 +1,8 @@
 #include "game/commands/AnalyzeCommand.h"
 
-#include <filesystem>
 #include <iostream>
-#include <system_error>
 #include <utility>
 
-#include "engine/record/DurableFile.h"
 #include "engine/record/RecordError.h"
 #include "game/analysis/AnalysisInputError.h"
 #include "game/analysis/AnalysisOutput.h"

@@ -22,7 +22,6 @@ namespace hemiroll::test {
 namespace {
 
 using ::testing::HasSubstr;
-using ::testing::Not;
 namespace fs = std::filesystem;
 
 const std::string kBinary = HEMIROLL_BINARY;
@@ -30,12 +29,7 @@ const std::string kSource = HEMIROLL_SOURCE_DIR;
 
 ProcessResult hemiroll(const std::vector<std::string>& args) { return runProcess(kBinary, args); }
 
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), {}};
-}
-
-nlohmann::json jsonOf(const fs::path& path) { return nlohmann::json::parse(slurp(path)); }
+nlohmann::json jsonOf(const fs::path& path) { return nlohmann::json::parse(TempDirectory::read(path)); }
 
 // The largest distance of the recorded mass point from the curve the bot
 // draws (eqs. 49-50 with the paper's values) over [from, to].
@@ -84,12 +78,12 @@ TEST(AnalyzeCommand, TheRoseBotsRecordingHasNineLeavesOfTheCurvesRadii) {
   EXPECT_GT(rose["span_duration_s"].get<double>(), 35.0 - 1.0 - 2 * 2.23 - 2.23);
 
   for (const char* suffix : {".overview.svg", ".contact.svg", ".mass_point.svg", ".psi.svg", ".channels.svg"}) {
-    const std::string svg = slurp(out / (id + suffix));
+    const std::string svg = TempDirectory::read(out / (id + suffix));
     EXPECT_EQ(xmlProblem(svg), "") << suffix;
     EXPECT_EQ(svg.find("nan"), std::string::npos) << suffix;
   }
-  EXPECT_THAT(slurp(out / "analysis.csv"), HasSubstr(id));
-  EXPECT_EQ(slurp(out / "analysis.md"), r.out) << "the markdown table goes to stdout and into DIR";
+  EXPECT_THAT(TempDirectory::read(out / "analysis.csv"), HasSubstr(id));
+  EXPECT_EQ(TempDirectory::read(out / "analysis.md"), r.out) << "the markdown table goes to stdout and into DIR";
   EXPECT_THAT(r.out, HasSubstr("| " + id + " |"));
 }
 

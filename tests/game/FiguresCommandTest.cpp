@@ -21,16 +21,10 @@ namespace hemiroll::test {
 namespace {
 
 using ::testing::HasSubstr;
-using ::testing::Not;
 namespace fs = std::filesystem;
 
 const std::string kBinary = HEMIROLL_BINARY;
 const std::string kSource = HEMIROLL_SOURCE_DIR;
-
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), {}};
-}
 
 TEST(FiguresCommand, PaperFiguresAndTheirFeatures) {
   const TempDirectory dir;
@@ -38,12 +32,12 @@ TEST(FiguresCommand, PaperFiguresAndTheirFeatures) {
       kBinary, {"figures", "--out", dir.path().string(), "--scenario", kSource + "/levels/scenarios/rose_paper.lua"});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   for (const char* name : {"fig09_mass_point_rose.svg", "fig10_contact_trajectory.svg", "fig11_precession_angle.svg"}) {
-    const std::string svg = slurp(dir.path() / name);
+    const std::string svg = TempDirectory::read(dir.path() / name);
     ASSERT_FALSE(svg.empty()) << name;
     EXPECT_EQ(xmlProblem(svg), "") << name;
     EXPECT_EQ(svg.find("nan"), std::string::npos) << name;
   }
-  const nlohmann::json j = nlohmann::json::parse(slurp(dir.path() / "figures_features.json"));
+  const nlohmann::json j = nlohmann::json::parse(TempDirectory::read(dir.path() / "figures_features.json"));
   EXPECT_EQ(j["run"]["k"], 8.0);
   EXPECT_EQ(j["run"]["time_step_s"], 0.001);
   EXPECT_EQ(j["samples"], 35001);  // 35 s at 1 ms, the paper's run
@@ -54,7 +48,7 @@ TEST(FiguresCommand, PaperFiguresAndTheirFeatures) {
   // of r2 (RoseDetector.h) separates the radii from r2 and r1 + r2; 0.3 %.
   EXPECT_NEAR(rose["leaf_radius_m"].get<double>(), 0.008, 0.003 * 0.008);
   EXPECT_NEAR(rose["outer_radius_m"].get<double>(), 0.023, 0.003 * 0.008);
-  EXPECT_THAT(slurp(dir.path() / "figures_features.md"), HasSubstr("| leaves per closed cycle (mass point) | k + 1 = 9"));
+  EXPECT_THAT(TempDirectory::read(dir.path() / "figures_features.md"), HasSubstr("| leaves per closed cycle (mass point) | k + 1 = 9"));
   EXPECT_THAT(r.out, HasSubstr("| 9 (9.000"));
 }
 

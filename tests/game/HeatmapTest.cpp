@@ -14,13 +14,6 @@ namespace hemiroll::report {
 namespace {
 
 using ::testing::HasSubstr;
-using ::testing::Not;
-
-std::size_t count(const std::string& text, const std::string& what) {
-  std::size_t n = 0;
-  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
-  return n;
-}
 
 HeatmapDef sweep() {
   HeatmapDef def;
@@ -44,9 +37,9 @@ TEST(Heatmap, CellsColouredFromLowToHighWithAColourBar) {
   // Viridis ends: the lowest value (8, two cells) dark purple, the highest
   // (10.5, one cell) yellow; the colour bar's 64 steps sit half a step inside
   // the ends, so they add neither colour.
-  EXPECT_EQ(count(svg, "fill=\"#440154\""), 2u);
-  EXPECT_EQ(count(svg, "fill=\"#fde725\""), 1u);
-  EXPECT_EQ(count(svg, "fill=\"#dddddd\""), 2u);  // the missing cell and its key
+  EXPECT_EQ(test::occurrences(svg, "fill=\"#440154\""), 2u);
+  EXPECT_EQ(test::occurrences(svg, "fill=\"#fde725\""), 1u);
+  EXPECT_EQ(test::occurrences(svg, "fill=\"#dddddd\""), 2u);  // the missing cell and its key
   EXPECT_THAT(svg, HasSubstr(">tipped over</text>"));
   EXPECT_THAT(svg, HasSubstr(">leaves</text>"));
   EXPECT_THAT(svg, HasSubstr(">Omega [rad/s]</text>"));

@@ -15,13 +15,6 @@ namespace hemiroll::report {
 namespace {
 
 using ::testing::HasSubstr;
-using ::testing::Not;
-
-std::size_t count(const std::string& text, const std::string& what) {
-  std::size_t n = 0;
-  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
-  return n;
-}
 
 TEST(LinePlot, ALineBreaksAtNaNAndNeverWritesIt) {
   LinePlotDef def;
@@ -39,7 +32,7 @@ TEST(LinePlot, ALineBreaksAtNaNAndNeverWritesIt) {
   const std::string svg = renderLinePlot(def);
   EXPECT_EQ(test::xmlProblem(svg), "") << svg;
   EXPECT_EQ(svg.find("nan"), std::string::npos);
-  EXPECT_EQ(count(svg, "<polyline"), 2u);  // before and after the NaN
+  EXPECT_EQ(test::occurrences(svg, "<polyline"), 2u);  // before and after the NaN
   EXPECT_THAT(svg, HasSubstr(">steady</text>"));
   EXPECT_THAT(svg, HasSubstr(">t [s]</text>"));
   EXPECT_THAT(svg, HasSubstr(">psi</text>"));  // title and legend

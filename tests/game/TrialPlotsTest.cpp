@@ -15,7 +15,6 @@ namespace hemiroll::game {
 namespace {
 
 using ::testing::HasSubstr;
-using ::testing::Not;
 
 TEST(TrialPlots, OverviewOfARoseWithNaNSamples) {
   TrialData t;

@@ -16,4 +16,10 @@ std::string xmlProblem(const std::string& text) {
   return problem;
 }
 
+std::size_t occurrences(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
 }  // namespace hemiroll::test
