@@ -6,7 +6,9 @@
 #include <string_view>
 #include <vector>
 
+#include "game/commands/AnalyzeCommand.h"
 #include "game/commands/ExitCode.h"
+#include "game/commands/FiguresCommand.h"
 #include "game/commands/PlayCommand.h"
 #include "game/commands/RunCommand.h"
 #include "game/commands/ScreenshotCommand.h"
@@ -29,6 +31,8 @@ constexpr CommandEntry kCommands[] = {
     {"session", "run a research protocol for a participant (bots headless; people in the window)",
      hemiroll::game::runSessionCommand},
     {"screenshot", "render one frame of a level offscreen and write it as a PNG", hemiroll::game::runScreenshotCommand},
+    {"analyze", "measure phases, rose and helix in recorded trials; tables and SVG plots", hemiroll::game::runAnalyzeCommand},
+    {"figures", "regenerate the paper's Figs. 9-11 from the simulator, with their features", hemiroll::game::runFiguresCommand},
     {"version", "print the version", hemiroll::game::runVersionCommand},
 };
 

@@ -14,6 +14,7 @@ packages=(
   libepoxy-dev libassimp-dev libstb-dev
   xvfb xauth libgl1-mesa-dri libglx-mesa0 libegl-mesa0
   libimgui-dev libsqlite3-dev
+  libexpat1-dev
 )
 
 missing=()

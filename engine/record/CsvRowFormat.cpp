@@ -90,6 +90,22 @@ void appendDouble(double value, std::string& out) {
   out.append(buffer, r.ptr);
 }
 
+std::string csvField(const std::string& field) {
+  if (field.find_first_of(",\"\r\n") == std::string::npos) return field;
+  std::string out = "\"";
+  for (const char c : field) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
+std::string csvLine(const std::vector<std::string>& fields) {
+  std::string out;
+  for (std::size_t i = 0; i < fields.size(); ++i) {
+    if (i > 0) out += ',';
+    out += csvField(fields[i]);
+  }
+  return out + "\n";
+}
+
 bool parseDouble(std::string_view text, double& value) {
   if (text.empty()) return false;
   const auto r = std::from_chars(text.data(), text.data() + text.size(), value);

@@ -32,6 +32,11 @@ class CsvRowFormat {
   static std::string parse(std::string_view line, haptics::RecordRow& row);
 };
 
+// RFC 4180: a field holding a comma, a quote or a line break is quoted,
+// its quotes doubled; csvLine joins fields with commas and ends the line.
+std::string csvField(const std::string& field);
+std::string csvLine(const std::vector<std::string>& fields);
+
 // Shortest round-trip text of a double (std::to_chars), appended.
 void appendDouble(double value, std::string& out);
 // Exactly one double filling the whole text; false otherwise.

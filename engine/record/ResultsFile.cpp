@@ -10,24 +10,6 @@ namespace hemiroll::record {
 
 namespace {
 
-// RFC 4180: quote a field holding a comma, a quote or a line break, and
-// double its quotes.
-std::string quoted(const std::string& field) {
-  if (field.find_first_of(",\"\r\n") == std::string::npos) return field;
-  std::string out = "\"";
-  for (const char c : field) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return out + "\"";
-}
-
-std::string line(const std::vector<std::string>& fields) {
-  std::string out;
-  for (std::size_t i = 0; i < fields.size(); ++i) {
-    if (i > 0) out += ',';
-    out += quoted(fields[i]);
-  }
-  return out + "\n";
-}
-
 std::string number(double v) {
   std::string s;
   appendDouble(v, s);
@@ -101,7 +83,7 @@ std::vector<std::string> ResultsFile::columns(const TrialResult& r) {
 }
 
 void ResultsFile::append(const TrialResult& r) const {
-  const std::string header = line(columns(r));
+  const std::string header = csvLine(columns(r));
   std::error_code ec;
   const bool fresh = !std::filesystem::exists(path_, ec) || std::filesystem::file_size(path_, ec) == 0;
   if (!fresh) {
@@ -117,7 +99,7 @@ void ResultsFile::append(const TrialResult& r) const {
                                      number(r.score), std::to_string(r.rows), std::to_string(r.droppedRows),
                                      r.startTime};
   for (const auto& [key, value] : r.extra) fields.push_back(value);
-  appendDurably(path_, (fresh ? header : std::string()) + line(fields));
+  appendDurably(path_, (fresh ? header : std::string()) + csvLine(fields));
 }
 
 }  // namespace hemiroll::record

@@ -17,6 +17,8 @@ class TempDirectory {
   const std::filesystem::path& path() const { return path_; }
   // Writes `content` (bytes as they are) to `name` inside; returns the full path.
   std::string write(const std::string& name, std::string_view content) const;
+  // A file's bytes ("" when it cannot be read): outputs of the program under test.
+  static std::string read(const std::filesystem::path& file);
 
  private:
   std::filesystem::path path_;

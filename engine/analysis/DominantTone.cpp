@@ -1,0 +1,94 @@
+#include "engine/analysis/DominantTone.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+
+namespace hemiroll::analysis {
+
+namespace {
+
+// |sum_n w_n z_n exp(-2 pi i f n dt)|^2 by a rotating phasor (renormalised
+// every 256 steps so that its modulus stays 1 to round-off).
+double power(std::span<const std::complex<double>> tapered, double f, double dt) {
+  const double step = -2.0 * std::numbers::pi * f * dt;
+  const std::complex<double> rotate(std::cos(step), std::sin(step));
+  std::complex<double> phasor(1.0, 0.0), sum(0.0, 0.0);
+  for (std::size_t n = 0; n < tapered.size(); ++n) {
+    sum += tapered[n] * phasor;
+    phasor *= rotate;
+    if ((n & 255u) == 255u) phasor /= std::abs(phasor);
+  }
+  return std::norm(sum);
+}
+
+}  // namespace
+
+Tone dominantTone(std::span<const std::complex<double>> signal, double dt, const ToneSearch& search) {
+  Tone tone;
+  const std::size_t n = signal.size();
+  if (n < 8 || !(dt > 0.0)) return tone;
+  const double duration = dt * static_cast<double>(n);
+  const double fMax = std::min(search.maxFrequency, 0.5 / dt);
+  const double fMin = std::max(search.minFrequency, 0.0);
+  const double df = 1.0 / (duration * std::max(search.oversampling, 1));
+  if (!(fMax > fMin + 2.0 * df)) return tone;
+
+  std::complex<double> sumZ(0.0, 0.0);
+  for (const auto& z : signal) sumZ += z;
+  const std::complex<double> meanZ = sumZ / static_cast<double>(n);
+  std::vector<std::complex<double>> tapered(n);
+  double taperSum = 0.0, variance = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double w = 0.5 - 0.5 * std::cos(2.0 * std::numbers::pi * (static_cast<double>(i) + 0.5) / static_cast<double>(n));
+    tapered[i] = w * (signal[i] - meanZ);
+    taperSum += w;
+    variance += std::norm(signal[i] - meanZ);
+  }
+  // A constant signal (a still point, a straight line's velocity) has no
+  // tone: its variance is round-off of the mean.
+  const double roundOff = 1e-24 * (std::norm(meanZ) + 1e-300) * static_cast<double>(n);
+  if (!(variance > roundOff) || !std::isfinite(variance)) return tone;
+
+  // Grid: +fMin .. +fMax, and the same negated when both signs are searched.
+  std::vector<double> freqs, powers;
+  const auto steps = static_cast<std::size_t>(std::floor((fMax - fMin) / df));
+  for (std::size_t k = 0; k <= steps; ++k) {
+    const double f = fMin + static_cast<double>(k) * df;
+    freqs.push_back(f);
+    if (search.bothSigns && f > 0.0) freqs.push_back(-f);
+  }
+  std::sort(freqs.begin(), freqs.end());
+  powers.reserve(freqs.size());
+  for (double f : freqs) powers.push_back(power(tapered, f, dt));
+  // The strongest interior local maximum (neighbours on the same grid, both lower).
+  std::size_t best = freqs.size();
+  for (std::size_t i = 1; i + 1 < freqs.size(); ++i) {
+    const bool neighbours = std::abs(freqs[i + 1] - freqs[i - 1] - 2.0 * df) < 1e-9 * df;
+    if (neighbours && powers[i] > powers[i - 1] && powers[i] >= powers[i + 1] &&
+        (best == freqs.size() || powers[i] > powers[best]))
+      best = i;
+  }
+  if (best == freqs.size()) return tone;
+  double f = freqs[best], peak = powers[best];
+  const double a = powers[best - 1], b = powers[best], c = powers[best + 1];
+  const double den = a - 2.0 * b + c;
+  if (den < 0.0) {
+    const double shift = std::clamp(0.5 * (a - c) / den, -0.5, 0.5);
+    f += shift * df;
+    peak = std::max(peak, power(tapered, f, dt));
+  }
+  tone.found = true;
+  tone.frequency = f;
+  // A real signal's cosine splits into +f and -f: its amplitude is twice the
+  // exponential's and it holds a share of A^2 / 2 of the power.
+  const double exponential = std::sqrt(peak) / taperSum;
+  const double meanPower = variance / static_cast<double>(n);
+  tone.amplitude = search.bothSigns ? exponential : 2.0 * exponential;
+  tone.share = std::min(1.0, (search.bothSigns ? 1.0 : 2.0) * exponential * exponential / meanPower);
+  return tone;
+}
+
+}  // namespace hemiroll::analysis

@@ -1,0 +1,63 @@
+#include "engine/analysis/Filters.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace hemiroll::analysis {
+
+std::size_t halfWidthFor(double duration, double dt) {
+  if (!(duration > 0.0) || !(dt > 0.0)) return 0;
+  return static_cast<std::size_t>(std::lround(0.5 * duration / dt));
+}
+
+std::vector<double> movingAverage(std::span<const double> values, std::size_t halfWidth) {
+  const std::size_t n = values.size();
+  std::vector<double> out(n);
+  // Prefix sums make every window O(1); the values are O(1) physical
+  // quantities, so the cancellation in the difference is harmless.
+  std::vector<double> prefix(n + 1, 0.0);
+  for (std::size_t i = 0; i < n; ++i) prefix[i + 1] = prefix[i] + values[i];
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t h = std::min({halfWidth, i, n - 1 - i});
+    out[i] = (prefix[i + h + 1] - prefix[i - h]) / static_cast<double>(2 * h + 1);
+  }
+  return out;
+}
+
+std::vector<double> localSlope(std::span<const double> values, double dt, std::size_t halfWidth) {
+  const std::size_t n = values.size();
+  std::vector<double> out(n, 0.0);
+  if (n < 2) return out;
+  halfWidth = std::max<std::size_t>(halfWidth, 1);
+  for (std::size_t i = 0; i < n; ++i) {
+    std::size_t h = std::min({halfWidth, i, n - 1 - i});
+    if (h == 0) {
+      // An end sample: the one-sided difference to its neighbour.
+      out[i] = i == 0 ? (values[1] - values[0]) / dt : (values[n - 1] - values[n - 2]) / dt;
+      continue;
+    }
+    double num = 0.0, den = 0.0;
+    for (std::size_t k = 1; k <= h; ++k) {
+      const double kk = static_cast<double>(k);
+      num += kk * (values[i + k] - values[i - k]);
+      den += 2.0 * kk * kk;
+    }
+    out[i] = num / (den * dt);
+  }
+  return out;
+}
+
+std::vector<double> unwrapAngles(std::span<const double> angles) {
+  std::vector<double> out(angles.begin(), angles.end());
+  constexpr double kTwoPi = 2.0 * std::numbers::pi;
+  double offset = 0.0;
+  for (std::size_t i = 1; i < out.size(); ++i) {
+    const double step = angles[i] - angles[i - 1];
+    offset -= kTwoPi * std::round(step / kTwoPi);
+    out[i] = angles[i] + offset;
+  }
+  return out;
+}
+
+}  // namespace hemiroll::analysis

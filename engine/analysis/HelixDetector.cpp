@@ -1,0 +1,171 @@
+#include "engine/analysis/HelixDetector.h"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <numbers>
+
+#include "engine/analysis/CircleFit.h"
+#include "engine/analysis/DominantTone.h"
+#include "engine/analysis/Filters.h"
+#include "engine/analysis/Wording.h"
+
+namespace hemiroll::analysis {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+std::vector<double> headings(const std::vector<double>& vx, const std::vector<double>& vy) {
+  std::vector<double> a(vx.size());
+  for (std::size_t i = 0; i < a.size(); ++i) a[i] = std::atan2(vy[i], vx[i]);
+  return unwrapAngles(a);
+}
+
+// The arc through the low-passed trace lx, ly (already cut to full windows).
+void measureArc(const std::vector<double>& lx, const std::vector<double>& ly, double dt, double period,
+                ArcFeatures& arc) {
+  const std::size_t n = lx.size();
+  for (std::size_t i = 1; i < n; ++i) arc.length += std::hypot(lx[i] - lx[i - 1], ly[i] - ly[i - 1]);
+  const double duration = dt * static_cast<double>(n - 1);
+  arc.driftSpeed = arc.length / duration;
+  const CircleFit fit = fitCircle(lx, ly);
+  if (!fit.ok) {
+    arc.reason = "no arc: the low-passed trace does not move";
+    return;
+  }
+  arc.rmsResidual = fit.rmsResidual;
+  if (fit.curvature > 0.0) {
+    double turn = 0.0;  // > 0: the trace goes counter-clockwise about the centre
+    std::vector<double> around(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      around[i] = std::atan2(ly[i] - fit.centreY, lx[i] - fit.centreX);
+      if (i > 0) turn += (lx[i] - lx[i - 1]) * (fit.centreY - ly[i - 1]) - (ly[i] - ly[i - 1]) * (fit.centreX - lx[i - 1]);
+    }
+    const std::vector<double> unwrapped = unwrapAngles(around);
+    arc.curvature = turn >= 0.0 ? fit.curvature : -fit.curvature;
+    arc.radius = fit.radius;
+    arc.centreX = fit.centreX, arc.centreY = fit.centreY;
+    arc.sweptAngle = unwrapped.back() - unwrapped.front();
+  }
+  const double independent = duration / period;
+  arc.curvatureError = arc.length > 0.0 ? fit.rmsResidual / (arc.length * arc.length) *
+                                              std::sqrt(720.0 / (independent + 4.0))
+                                        : 0.0;
+  const double sagitta = arc.length * arc.length * std::abs(arc.curvature) / 8.0;
+  if (!(std::abs(arc.curvature) > 3.0 * arc.curvatureError)) {
+    arc.reason = "not curved: the trace is straight within its scatter (curvature " + shortNumber(arc.curvature) +
+                 " 1/m, standard error " + shortNumber(arc.curvatureError) + " 1/m)";
+  } else if (!(fit.rmsResidual < 0.5 * sagitta)) {
+    arc.reason = "not an arc: the trace strays " + shortNumber(fit.rmsResidual) + " m (rms) from the best circle, more than " +
+                 "half its bend (" + shortNumber(sagitta) + " m)";
+  } else {
+    arc.found = true;
+  }
+}
+
+}  // namespace
+
+HelixFeatures detectHelix(std::span<const double> time, std::span<const double> x, std::span<const double> y,
+                          const HelixDef& def) {
+  HelixFeatures out;
+  ArcFeatures& arc = out.arc;
+  LoopFeatures& loops = out.loops;
+  const std::span<const double> channels[] = {x, y};
+  const UniformSeries s = resampleUniform(time, channels, def.sampling);
+  if (!s.ok()) {
+    arc.reason = "no arc: " + s.problem;
+    loops.reason = "no loops: " + s.problem;
+    return out;
+  }
+  const std::size_t light = halfWidthFor(def.lightSmoothing, s.dt);
+  const std::vector<double> sx = movingAverage(s.channels[0], light), sy = movingAverage(s.channels[1], light);
+  const std::vector<double> vx = localSlope(sx, s.dt, 1), vy = localSlope(sy, s.dt, 1);
+  std::vector<std::complex<double>> velocity(vx.size());
+  for (std::size_t i = 0; i < vx.size(); ++i) velocity[i] = {vx[i], vy[i]};
+  const Tone tone = dominantTone(velocity, s.dt, {.minFrequency = 3.0 / s.duration(), .maxFrequency = def.maxLoopFrequency});
+  loops.frequency = tone.frequency;
+  loops.toneShare = tone.share;
+  const bool periodic = tone.found && tone.share >= def.minShare;
+  const double period = periodic ? 1.0 / std::abs(tone.frequency) : def.fallbackWindow;
+
+  // The arc: a moving average over one loop period (an odd number of samples
+  // nearest to it), without the ends where the window is not full.
+  const auto h = static_cast<std::size_t>(std::max(0L, std::lround(0.5 * (period / s.dt - 1.0))));
+  if (s.size() < 2 * h + 8) {
+    arc.reason = "no arc: " + shortNumber(s.duration()) + " s is too short for the low-pass window of " + shortNumber(period) + " s";
+  } else {
+    const std::vector<double> ax = movingAverage(s.channels[0], h), ay = movingAverage(s.channels[1], h);
+    arc.x.assign(ax.begin() + static_cast<std::ptrdiff_t>(h), ax.end() - static_cast<std::ptrdiff_t>(h));
+    arc.y.assign(ay.begin() + static_cast<std::ptrdiff_t>(h), ay.end() - static_cast<std::ptrdiff_t>(h));
+    arc.span = {s.time(h), s.time(s.size() - 1 - h)};
+    measureArc(arc.x, arc.y, s.dt, period, arc);
+  }
+
+  if (!periodic) {
+    loops.reason = tone.found ? "no loops: the trace's velocity has no clear period (its strongest tone holds " +
+                                    shortNumber(100.0 * tone.share) + " % of its variation, needs " +
+                                    shortNumber(100.0 * def.minShare) + " %)"
+                              : "no loops: the trace's velocity has no periodic part (it moves uniformly, turns "
+                                "slowly or stands still)";
+    return out;
+  }
+  if (arc.x.size() < 2) {
+    loops.reason = "no loops: " + arc.reason.substr(arc.reason.find(':') + 2);
+    return out;
+  }
+  // Direction of travel relative to the arc's tangent (held constant over the cut ends).
+  const std::vector<double> tx = localSlope(arc.x, s.dt, 1), ty = localSlope(arc.y, s.dt, 1);
+  const std::vector<double> tangent = headings(tx, ty), travel = headings(vx, vy);
+  std::vector<double> relative(travel.size());
+  for (std::size_t i = 0; i < relative.size(); ++i) {
+    const std::size_t k = std::min(i < h ? 0 : i - h, tangent.size() - 1);
+    relative[i] = travel[i] - tangent[k];
+  }
+  relative = unwrapAngles(relative);
+  const double shift = -2.0 * kPi * std::round(relative.front() / (2.0 * kPi));
+  for (double& r : relative) r += shift;
+  const double start = relative.front();
+  loops.sense = tone.frequency >= 0.0 ? 1 : -1;
+  const double sense = loops.sense;
+  // The first odd multiple of pi beyond the start, in the loops' sense.
+  double target = sense * kPi * (2.0 * std::floor((sense * start / kPi + 1.0) / 2.0) + 1.0);
+  std::vector<double> arcLength(arc.x.size(), 0.0);
+  for (std::size_t i = 1; i < arc.x.size(); ++i)
+    arcLength[i] = arcLength[i - 1] + std::hypot(arc.x[i] - arc.x[i - 1], arc.y[i] - arc.y[i - 1]);
+  std::vector<double> along;
+  for (std::size_t i = 1; i < relative.size(); ++i) {
+    if (sense * (relative[i] - target) < 0.0) continue;
+    const double w = (target - relative[i - 1]) / (relative[i] - relative[i - 1]);
+    const double position = static_cast<double>(i - 1) + std::clamp(w, 0.0, 1.0);
+    loops.times.push_back(s.t0 + position * s.dt);
+    const auto j = static_cast<std::size_t>(position);
+    loops.x.push_back(sx[j]), loops.y.push_back(sy[j]);
+    const double k = std::clamp(position - static_cast<double>(h), 0.0, static_cast<double>(arcLength.size() - 1));
+    along.push_back(arcLength[static_cast<std::size_t>(std::lround(k))]);
+    target += sense * 2.0 * kPi;
+  }
+  loops.count = static_cast<int>(loops.times.size());
+  std::vector<double> dtLoops, dsLoops;
+  for (std::size_t i = 1; i < loops.times.size(); ++i) {
+    dtLoops.push_back(loops.times[i] - loops.times[i - 1]);
+    dsLoops.push_back(along[i] - along[i - 1]);
+  }
+  loops.spacingTime = summarize(dtLoops);
+  loops.spacingArc = summarize(dsLoops);
+  if (loops.count < def.minLoops) {
+    loops.reason = "no loops: the direction of travel turns full circle only " + std::to_string(loops.count) +
+                   " times (a wiggle, not a loop; needs " + std::to_string(def.minLoops) + ")";
+    return out;
+  }
+  const double variation = loops.spacingTime.spread / loops.spacingTime.value;
+  if (!(variation <= def.maxSpacingVariation)) {
+    loops.reason = "no helix: " + std::to_string(loops.count) + " loops, but their spacing varies by " +
+                   shortNumber(100.0 * variation) + " % (at most " + shortNumber(100.0 * def.maxSpacingVariation) + " %)";
+    return out;
+  }
+  loops.found = true;
+  return out;
+}
+
+}  // namespace hemiroll::analysis

@@ -1,0 +1,71 @@
+#include "engine/analysis/TrialAnalyzer.h"
+
+#include <algorithm>
+#include <utility>
+#include <vector>
+
+namespace hemiroll::analysis {
+
+namespace {
+
+// The rows whose time lies in [from, to].
+std::pair<std::size_t, std::size_t> rowsWithin(std::span<const double> time, double from, double to) {
+  std::size_t first = time.size(), last = 0;
+  for (std::size_t i = 0; i < time.size(); ++i) {
+    if (time[i] >= from && time[i] <= to) {
+      first = std::min(first, i);
+      last = i + 1;
+    }
+  }
+  return first < last ? std::pair{first, last} : std::pair{std::size_t{0}, std::size_t{0}};
+}
+
+}  // namespace
+
+TrialFeatures analyzeTrial(const TrialSamples& s, const TrialAnalysisDef& def) {
+  TrialFeatures out;
+  out.phases = segmentPhases(s.time, s.psi, def.phases);
+  auto over = [&](std::size_t first, std::size_t last) {
+    return [=](std::span<const double> column) {
+      return column.size() >= last ? column.subspan(first, last - first) : std::span<const double>();
+    };
+  };
+  const auto whole = over(0, s.time.size());
+  auto rose = [&](auto part) { return detectRose(part(s.time), part(s.massX), part(s.massY), def.rose); };
+  auto helix = [&](auto part) { return detectHelix(part(s.time), part(s.contactX), part(s.contactY), def.helix); };
+
+  out.roseWindow = out.helixWindow = out.phases.trial;
+  if (!out.phases.found) {
+    out.roseNote = out.helixNote = "no steady precession phase: looked for over the whole trial";
+    out.rose = rose(whole);
+    out.helix = helix(whole);
+  } else {
+    const auto [first, last] = rowsWithin(s.time, out.phases.steady.start, out.phases.steady.end);
+    const auto steady = over(first, last);
+    out.rose = rose(steady);
+    out.roseWindow = out.phases.steady;
+    if (!out.rose.found) {
+      out.roseNote = "not in the steady phase (" + out.rose.reason + "): looked for over the whole trial";
+      out.rose = rose(whole);
+      out.roseWindow = out.phases.trial;
+    }
+    out.helix = helix(steady);
+    out.helixWindow = out.phases.steady;
+    if (!out.helix.arc.found || !out.helix.loops.found) {
+      const std::string why = !out.helix.loops.found ? out.helix.loops.reason : out.helix.arc.reason;
+      HelixFeatures wholeTrial = helix(whole);
+      // Kept only where the whole trial shows more (the loops, or at least the arc).
+      if ((wholeTrial.loops.found && !out.helix.loops.found) || (wholeTrial.arc.found && !out.helix.arc.found)) {
+        out.helix = std::move(wholeTrial);
+        out.helixWindow = out.phases.trial;
+        out.helixNote = "not in the steady phase (" + why + "): looked for over the whole trial";
+      }
+    }
+  }
+  const bool sameWindow = out.roseWindow.start == out.helixWindow.start && out.roseWindow.end == out.helixWindow.end;
+  if (sameWindow && out.rose.found && out.helix.loops.found && out.helix.loops.spacingTime.value > 0.0)
+    out.loopsPerLeaf = out.rose.leafPeriod.value / out.helix.loops.spacingTime.value;
+  return out;
+}
+
+}  // namespace hemiroll::analysis

@@ -1,0 +1,17 @@
+#pragma once
+// A trial's features as JSON (nlohmann-json): SI keys with unit suffixes,
+// as engine/record writes them. A feature not found carries "found": false
+// and its "reason" instead of numbers, so no reader mistakes a 0 for a
+// measurement. Keys: docs/ANALYSIS.md.
+
+#include <string>
+
+#include "engine/analysis/TrialAnalyzer.h"
+#include "game/analysis/TrialData.h"
+
+namespace hemiroll::game {
+
+// Pretty-printed, with a final newline.
+std::string featuresJson(const TrialData& trial, const analysis::TrialFeatures& features);
+
+}  // namespace hemiroll::game
