@@ -5,19 +5,17 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
-#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
-#include <thread>
 
 #include "engine/script/LevelLoader.h"
 #include "game/app/App.h"
 #include "game/play/GhostFile.h"
-#include "game/play/PlaySession.h"
 #include "game/play/ReplayCapture.h"
 #include "game/screens/PlayScreen.h"
 #include "game/screens/ResultsScreen.h"
+#include "tests/screens/support/StrokedTrial.h"
 #include "tests/support/TempDirectory.h"
 
 namespace hemiroll::game {
@@ -37,24 +35,7 @@ std::string bytesOf(const std::filesystem::path& file) {
 
 // A logged mouse trial of ~1 s with strokes, as the play screen keeps one.
 void playAndLog(const std::filesystem::path& file) {
-  script::LoadedLevel level = script::LevelLoader().loadFile(kLevel);
-  PlaySessionDef def;
-  def.replayFile = file;
-  def.levelHash = levelFileHash(kLevel);
-  PlaySession session(level, def);
-  session.start();
-  session.click();
-  const auto start = std::chrono::steady_clock::now();
-  double lastX = 0.0;
-  while (std::chrono::steady_clock::now() - start < 1000ms) {
-    const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    session.pointerMotion(10.0 * std::sin(3.0 * t) - lastX, 0.0);
-    lastX = 10.0 * std::sin(3.0 * t);
-    session.frame();
-    std::this_thread::sleep_for(10ms);
-  }
-  session.finish();
-  ASSERT_EQ(session.replayError(), "");
+  ASSERT_EQ(test::playStrokedTrial({kLevel, file, 1000ms, 10.0}).replayError, "");
 }
 
 class GhostRaceTest : public ::testing::Test {

@@ -16,6 +16,7 @@
 #include "engine/script/LevelLoader.h"
 #include "game/play/ReplayCapture.h"
 #include "game/view/RenderSceneBuilder.h"
+#include "tests/screens/support/StrokedTrial.h"
 #include "tests/support/ChildProcess.h"
 #include "tests/support/TempDirectory.h"
 
@@ -223,36 +224,20 @@ TEST(PlaySessionTest, ATrialsReplayRepeatsItExactly) {
   test::TempDirectory dir;
   const std::string levelPath = HEMIROLL_SOURCE_DIR "/levels/tutorial_01_tilt_and_return.lua";
   script::LoadedLevel level = script::LevelLoader().loadFile(levelPath);
-  PlaySessionDef def;
-  def.replayFile = dir.path() / "t.hrr";
-  def.levelHash = levelFileHash(levelPath);
-  PlaySession session(level, def);
-  session.start();
-  session.click();
-  const auto start = std::chrono::steady_clock::now();
-  double lastX = 0.0;
-  while (std::chrono::steady_clock::now() - start < 800ms) {
-    const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    session.pointerMotion(8.0 * std::sin(4.0 * t) - lastX, 0.0);
-    lastX = 8.0 * std::sin(4.0 * t);
-    session.frame();
-    std::this_thread::sleep_for(10ms);
-  }
-  session.pause();  // a command in the log
-  std::this_thread::sleep_for(50ms);
-  session.finish();
-  ASSERT_EQ(session.replayError(), "");
-  ASSERT_EQ(session.replayFile(), def.replayFile);
+  test::StrokedTrialDef def{levelPath, dir.path() / "t.hrr"};
+  def.pauseAtTheEnd = true;  // a command in the log
+  const test::StrokedTrial played = test::playStrokedTrial(def);
+  ASSERT_EQ(played.replayError, "");
 
   const record::ReplayLog log = record::ReplayReader::load(def.replayFile);
-  EXPECT_EQ(log.header.levelHash, def.levelHash);
-  EXPECT_EQ(log.inputs.size(), session.snapshot().tick);
+  EXPECT_EQ(log.header.levelHash, levelFileHash(levelPath));
+  EXPECT_EQ(log.inputs.size(), played.last.tick);
   haptics::ReplayDevice device(log.inputs, haptics::MouseDeviceDef{}.spec);
   haptics::ServoLoop loop(HeadlessTrial::loopDefFor(level.def), device);
   record::ReplayRunner::run(loop, log);
   for (std::size_t i = 0; i < 12; ++i)
-    EXPECT_EQ(loop.state()[static_cast<int>(i)], session.snapshot().state[i]) << "slot " << i;  // bit for bit
-  EXPECT_NE(session.snapshot().state[physics::force_slot::u_o], 0.0);  // the mouse did move it
+    EXPECT_EQ(loop.state()[static_cast<int>(i)], played.last.state[i]) << "slot " << i;  // bit for bit
+  EXPECT_NE(played.last.state[physics::force_slot::u_o], 0.0);  // the mouse did move it
 }
 
 }  // namespace

@@ -4,13 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
-#include <cmath>
 #include <fstream>
-#include <thread>
 
 #include "engine/script/LevelLoader.h"
-#include "game/play/PlaySession.h"
 #include "game/play/ReplayCapture.h"
+#include "tests/screens/support/StrokedTrial.h"
 #include "tests/support/TempDirectory.h"
 
 namespace hemiroll::game {
@@ -21,35 +19,13 @@ using ::testing::HasSubstr;
 
 const std::string kLevel = HEMIROLL_SOURCE_DIR "/levels/tutorial_01_tilt_and_return.lua";
 
-// A real-time mouse trial of ~0.6 s with strokes, logged for replay; its
-// last state is what the replay must reach.
-haptics::ServoSnapshot playAndLog(const std::filesystem::path& file) {
-  script::LoadedLevel level = script::LevelLoader().loadFile(kLevel);
-  PlaySessionDef def;
-  def.replayFile = file;
-  def.levelHash = levelFileHash(kLevel);
-  PlaySession session(level, def);
-  session.start();
-  session.click();
-  const auto start = std::chrono::steady_clock::now();
-  double lastX = 0.0;
-  while (std::chrono::steady_clock::now() - start < 600ms) {
-    const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    session.pointerMotion(8.0 * std::sin(4.0 * t) - lastX, 0.0);
-    lastX = 8.0 * std::sin(4.0 * t);
-    session.frame();
-    std::this_thread::sleep_for(10ms);
-  }
-  session.finish();
-  EXPECT_EQ(session.replayError(), "");
-  return session.snapshot();
-}
-
 class ReplayPlayerTest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     dir_ = new test::TempDirectory;
-    played_ = playAndLog(dir_->path() / "t.hrr");
+    const test::StrokedTrial trial = test::playStrokedTrial({kLevel, dir_->path() / "t.hrr", 600ms});
+    EXPECT_EQ(trial.replayError, "");
+    played_ = trial.last;
   }
   static void TearDownTestSuite() { delete dir_; }
   static test::TempDirectory* dir_;
