@@ -52,6 +52,7 @@ class PlayHud {
   // The ghost's line ("" = none): whose run it is, and how it is going.
   void setGhost(std::string line) { ghost_ = std::move(line); }
   const std::string& ghost() const { return ghost_; }
+  const std::string& title() const { return level_; }  // the level's name, or "trial k of N: name"
 
   // The level's score function on the summary so far (none: no score function).
   void setScore(std::optional<double> score) { score_ = score; }

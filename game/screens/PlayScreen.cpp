@@ -95,7 +95,12 @@ void PlayScreen::begin() {
   hud_.reset();
   const physics::CouplingDef coupling =
       research_ != nullptr ? level_.def.coupling : couplingFor(app_.settings(), level_.def.coupling);
-  hud_.setLabels(level_.def.name, app_.settings().device,
+  // In a research session the player sees where they are in the plan.
+  const std::string title = research_ == nullptr
+                                ? level_.def.name
+                                : "trial " + std::to_string(research_->nextTrial().index) + " of " +
+                                      std::to_string(research_->trialCount()) + ": " + level_.def.name;
+  hud_.setLabels(title, app_.settings().device,
                  coupling.visualOnly ? "visual only" : physics::forceMethodName(coupling.method), mouse,
                  level_.def.params.radius);
   trace_.clear();

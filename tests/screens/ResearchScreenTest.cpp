@@ -20,6 +20,7 @@
 #include "game/app/App.h"
 #include "game/app/ScriptedMouse.h"
 #include "game/research/SessionManifest.h"
+#include "game/screens/PlayScreen.h"
 #include "game/screens/ResearchScreen.h"
 #include "game/screens/SessionScreen.h"
 #include "tests/support/TempDirectory.h"
@@ -132,6 +133,9 @@ TEST(ResearchScreenTest, AProtocolRunsFromTheResearchScreenIntoItsSessionFolder)
   // Trial 2: paused and quit, which ends it as a failure that is recorded too.
   app.inject(key(platform::Key::Enter));
   ASSERT_TRUE(playUntil(app, "play", 2.0));
+  const auto* play = dynamic_cast<const PlayScreen*>(app.screens().top());
+  ASSERT_NE(play, nullptr);
+  EXPECT_THAT(play->hud().title(), HasSubstr("trial 2 of 2: "));  // where the player is in the plan
   frames(app, 20);
   app.inject(key(platform::Key::Escape));
   ASSERT_TRUE(playUntil(app, "pause", 2.0));
