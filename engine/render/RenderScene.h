@@ -26,7 +26,7 @@ using Mat3d = std::array<double, 9>;  // row-major
 
 enum class CameraMode : std::uint8_t {
   Follow,  // behind and above the hemisphere, fixed heading (no motion sickness from spin)
-  Orbit,   // around the hemisphere by yaw/pitch (the player drags it)
+  Orbit,   // around the hemisphere by yaw/pitch (the game turns it with the arrow keys)
   Top,     // straight down: the plane as a map, for targets and the trace
 };
 

@@ -26,6 +26,8 @@ struct Settings {
   bool vsync = true;
   render::CameraMode camera = render::CameraMode::Follow;
   double zoom = 1.0;
+  double orbitYaw = -0.6;      // the orbit camera's heading of the eye [rad] (arrow keys turn it)
+  double orbitPitch = 0.55;    // and its elevation [rad], in [0.05, 1.5]
   bool ghost = true;           // race against your best run of a level (its replay, translucent)
   // Research session (ResearchScreen): who plays, and which session of theirs.
   std::string participant = "player";

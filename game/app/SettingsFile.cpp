@@ -141,6 +141,8 @@ LoadedSettings loadSettings(const std::filesystem::path& file) {
   s.camera = static_cast<render::CameraMode>(camera);
   r.number("zoom", s.zoom, 0.25, 8.0, "a zoom in 0.25..8");
   r.boolean("ghost", s.ghost);
+  r.number("orbit_yaw_rad", s.orbitYaw, -1e3, 1e3, "an angle in radians");
+  r.number("orbit_pitch_rad", s.orbitPitch, 0.05, 1.5, "an elevation in 0.05..1.5 rad");
   r.identifier("participant", s.participant);
   return out;
 }
@@ -161,6 +163,8 @@ std::string settingsJson(const Settings& s) {
   json["camera"] = kCameras[static_cast<int>(s.camera)];
   json["zoom"] = s.zoom;
   json["ghost"] = s.ghost;
+  json["orbit_yaw_rad"] = s.orbitYaw;
+  json["orbit_pitch_rad"] = s.orbitPitch;
   json["participant"] = s.participant;
   return json.dump(2) + "\n";
 }

@@ -5,7 +5,8 @@
 //   {"version": 1, "device": "mouse", "udp_port": 47110, "joystick_index": 0,
 //    "override_coupling": false, "method": "M3", "stiffness_N_per_m": 250,
 //    "damping_N_s_per_m": 10, "alpha": 2, "volume": 0.6, "vsync": true,
-//    "camera": "follow", "zoom": 1, "ghost": true, "participant": "player"}
+//    "camera": "follow", "zoom": 1, "ghost": true, "orbit_yaw_rad": -0.6,
+//    "orbit_pitch_rad": 0.55, "participant": "player"}
 // Reading never fails the game: a missing file gives the defaults; a key
 // with a bad value keeps its default and says so; a file that is not JSON is
 // moved aside (never deleted) and the defaults are used. Writing replaces the

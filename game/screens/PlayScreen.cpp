@@ -174,6 +174,7 @@ void PlayScreen::input(const platform::InputEvent& e) {
       // Take hold from the keyboard, as the paper's subjects did (Sec. 4):
       // the hand stays on the device.
       if (e.key == platform::Key::Space && !e.repeat) session_->click();
+      turnOrbitCamera(e.key);
       if (e.key == platform::Key::Tab && !e.repeat) {
         auto& camera = app_.settings().camera;
         camera = camera == render::CameraMode::Follow ? render::CameraMode::Top
@@ -184,6 +185,18 @@ void PlayScreen::input(const platform::InputEvent& e) {
       break;
     default: break;
   }
+}
+
+// The orbit camera turns with the arrow keys (held keys repeat): the mouse
+// is the proxy's, so it cannot drag the view. Strokes turn with it.
+void PlayScreen::turnOrbitCamera(platform::Key key) {
+  Settings& s = app_.settings();
+  if (s.camera != render::CameraMode::Orbit) return;
+  constexpr double kYawStep = 0.1, kPitchStep = 0.05;  // [rad] per key press or repeat
+  if (key == platform::Key::Left) s.orbitYaw -= kYawStep;
+  else if (key == platform::Key::Right) s.orbitYaw += kYawStep;
+  else if (key == platform::Key::Up) s.orbitPitch = std::min(1.5, s.orbitPitch + kPitchStep);
+  else if (key == platform::Key::Down) s.orbitPitch = std::max(0.05, s.orbitPitch - kPitchStep);
 }
 
 void PlayScreen::update(double dt) {
@@ -222,6 +235,8 @@ void PlayScreen::update(double dt) {
   }
   scene_.camera.mode = app_.settings().camera;
   scene_.camera.zoom = app_.settings().zoom;
+  scene_.camera.yaw = app_.settings().orbitYaw;
+  scene_.camera.pitch = app_.settings().orbitPitch;
   session_->setScreenYaw(render::screenRightHeading(scene_.camera));
 
   // Sounds: clicks on taking hold and letting go; the tone while held.

@@ -5,7 +5,7 @@
 // Mouse: the proxy starts on the mass point and moves by the mouse's strokes
 // (captured pointer, the proxy drawn as the cursor: PointerMapping.h says
 // why), left click = take hold (engages near the mass point), right click =
-// let go, wheel = proxy height. With the ghost on (settings), the player's
+// let go, wheel = proxy height; the arrow keys turn the orbit camera. With the ghost on (settings), the player's
 // best run of the level (its replay) is played in step with this one, by
 // simulated time, and drawn translucent beside it. Keys: Escape pauses
 // (as does the window losing focus), Tab changes the camera. When the judge
@@ -71,6 +71,7 @@ class PlayScreen final : public Screen {
  private:
   void begin();
   void loadGhost();
+  void turnOrbitCamera(platform::Key key);
   void beginSessionTrial(PlaySessionDef& def);
   void endSessionTrial(SessionTrialEnd end);
   void back();

@@ -63,7 +63,7 @@ void SettingsScreen::paint() {
   ImGui::Separator();
   ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1), "Keys");
   ImGui::TextDisabled("left click: take hold   right click: let go   wheel: proxy height");
-  ImGui::TextDisabled("Esc: pause   Tab: camera   Enter: confirm");
+  ImGui::TextDisabled("Space: take hold   Esc: pause   Tab: camera   arrows: turn the orbit camera");
 
   ImGui::Separator();
   ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1), "Audio");

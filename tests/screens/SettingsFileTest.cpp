@@ -35,6 +35,8 @@ TEST(SettingsFileTest, EveryFieldRoundTrips) {
   s.camera = render::CameraMode::Top;
   s.zoom = 1.75;
   s.ghost = false;
+  s.orbitYaw = 2.25;
+  s.orbitPitch = 1.25;
   s.participant = "P-07";
   const auto file = dir.path() / "nested" / "settings.json";
   ASSERT_EQ(saveSettings(file, s), "");
