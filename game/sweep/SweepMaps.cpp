@@ -114,7 +114,7 @@ SweepData loadSweep(const fs::path& dir) {
   return data;
 }
 
-report::HeatmapDef sweepHeatmap(const SweepData& data, const MapRequest& request) {
+report::HeatmapDef sweepHeatmap(const SweepData& data, const MapRequest& request, bool compact) {
   const script::SweepDef& spec = data.spec;
   const SweepMetric& metric = *request.metric;
   const std::size_t ax = axisIndex(spec, request.x), ay = axisIndex(spec, request.y);
@@ -148,13 +148,12 @@ report::HeatmapDef sweepHeatmap(const SweepData& data, const MapRequest& request
   map.colourBarLabel = metric.unit;
   map.valueScale = metric.scale;
   map.map = metric.map;
-  bool anyAll = false, anySome = false;
+  std::string shown;  // the marks that appear, for the note
   for (const Cell& c : cells) {
     map.values.push_back(aggregateValues(c.values, aggregate, metric));
     const bool all = c.stopped == c.points && c.points > 0;
-    anyAll = anyAll || all;
-    anySome = anySome || (c.stopped > 0 && !all);
     map.marks.push_back(all ? std::string(1, c.allStoppedBy) : c.stopped > 0 ? "t" : "");
+    if (!map.marks.back().empty() && shown.find(map.marks.back()) == std::string::npos) shown += map.marks.back();
   }
   if (metric.share) map.min = 0.0, map.max = 1.0;
   if (metric.map == report::ColourMap::Diverging) {  // centred on 0
@@ -165,12 +164,14 @@ report::HeatmapDef sweepHeatmap(const SweepData& data, const MapRequest& request
   }
   const std::size_t perCell = static_cast<std::size_t>(grid.size()) / (nx * ny);
   map.title = metric.title;
-  if (perCell > 1)
+  if (perCell > 1 && compact) map.title += std::string(" (") + aggregateName(aggregate) + ")";
+  if (perCell > 1 && !compact)
     map.title += std::string(", ") + aggregateName(aggregate) + " over " + otherAxes(spec, ax, ay) + " (" +
                  std::to_string(perCell) + " points/cell)";
   map.missingNote = "no value";
-  if (anyAll) map.missingNote += "; T: tipped over, F: left the face";
-  if (anySome) map.missingNote += "; t: some runs stopped";
+  for (const auto& [mark, meaning] : {std::pair{'T', "tipped over"}, std::pair{'F', "left the face"},
+                                      std::pair{'X', "stopped (non-finite or mixed)"}, std::pair{'t', "some stopped"}})
+    if (shown.find(mark) != std::string::npos) map.missingNote += std::string("; ") + mark + ": " + meaning;
   map.annotate = nx * ny <= 64;
   return map;
 }
@@ -189,13 +190,14 @@ std::vector<std::pair<std::string, std::string>> sweepMapSheets(const SweepData&
     for (std::size_t b = a + 1; b < axes.size(); ++b) {
       const char* x = script::sweepParamInfo(axes[a].param).name;
       const char* y = script::sweepParamInfo(axes[b].param).name;
-      const std::string title = fs::path(data.manifest.specFile).filename().string() + ": " + x + " x " + y + ", " +
-                                std::to_string(data.rows.size()) + " points from " +
-                                (data.spec.start == script::SweepStart::Rest ? "rest" : "the static tilt") + ", " +
-                                data.manifest.specHash;
-      report::PlotSheet sheet(3, 480.0, 360.0, title);
+      const long long perCell = static_cast<long long>(data.rows.size() / (axes[a].values.size() * axes[b].values.size()));
+      std::string title = fs::path(data.manifest.specFile).filename().string() + ": " + x + " x " + y + ", " +
+                          std::to_string(data.rows.size()) + " points from " +
+                          (data.spec.start == script::SweepStart::Rest ? "rest" : "the static tilt");
+      if (perCell > 1) title += "; each cell aggregates " + std::to_string(perCell) + " over " + otherAxes(data.spec, a, b);
+      report::PlotSheet sheet(3, 480.0, 360.0, title + " (" + data.manifest.specHash + ")");
       for (const char* name : sheetMetrics())
-        sheet.add(sweepHeatmap(data, {axes[a].param, axes[b].param, findSweepMetric(name), std::nullopt}));
+        sheet.add(sweepHeatmap(data, {axes[a].param, axes[b].param, findSweepMetric(name), std::nullopt}, true));
       sheets.emplace_back(std::string("map-") + x + "-" + y + ".svg", sheet.svg());
     }
   }

@@ -39,8 +39,10 @@ struct MapRequest {
 };
 
 // Throws SweepError (bad input) when x or y is not an axis of the sweep, or
-// they are the same.
-report::HeatmapDef sweepHeatmap(const SweepData& data, const MapRequest& request);
+// they are the same. The title names the metric, and when a cell holds more
+// than one point, the aggregate, the axes it runs over and the points per
+// cell; `compact` keeps only the aggregate's name (a sheet's title says the rest).
+report::HeatmapDef sweepHeatmap(const SweepData& data, const MapRequest& request, bool compact = false);
 
 // The metrics drawn on each automatic sheet.
 const std::vector<const char*>& sheetMetrics();

@@ -20,7 +20,7 @@ std::optional<Aggregate> parseAggregate(std::string_view name);
 
 struct SweepMetric {
   const char* name;              // the CSV column, or "stopped"
-  const char* title;             // what it is, for the plot title
+  const char* title;             // what it is, short: the plot title (a sheet's panels are narrow)
   const char* unit;              // colour bar label, with the displayed unit
   double scale = 1.0;            // displayed = value * scale
   report::ColourMap map = report::ColourMap::Viridis;  // Diverging: signed, centred on 0
