@@ -46,7 +46,7 @@ const char* sweepStartName(SweepStart start);
 struct SweepAxis {
   SweepParam param = SweepParam::k;
   std::vector<double> values;  // in the file's order (a range: from first to last)
-  bool log = false;            // a range spaced geometrically (maps use log10 for it)
+  bool log = false;            // a range spaced geometrically, or values to show so: maps use log10
 };
 
 // How each point's run is judged (docs/SWEEP.md, "Metrics"). The first

@@ -165,7 +165,7 @@ void readRange(const LuaTableReader& range, SweepAxis& axis) {
 }
 
 SweepAxis readAxis(const LuaTableReader& table, const std::vector<SweepAxis>& earlier) {
-  rejectUnknownLevelKeys(table, {"param", "values", "range"});
+  rejectUnknownLevelKeys(table, {"param", "values", "range", "log"});
   const auto name = table.string("param");
   if (!name) table.fail("param", "missing; name the parameter the axis varies (R, m_s, m_p, g, r1, r2, k or Omega)");
   const auto param = findSweepParam(*name);
@@ -183,10 +183,16 @@ SweepAxis readAxis(const LuaTableReader& table, const std::vector<SweepAxis>& ea
   const bool hasValues = table.typeOf("values") != LUA_TNIL, hasRange = table.typeOf("range") != LUA_TNIL;
   if (hasValues == hasRange)
     table.fail(hasValues ? "range" : "", "give either values = { ... } or range = { from = .., to = .., count = .. }");
-  if (hasValues)
+  if (hasValues) {
     readValues(*table.table("values"), axis);
-  else
+    // Listed values spaced by factors (masses) are shown on a log scale.
+    axis.log = readBool(table, "log").value_or(false);
+    if (axis.log && std::any_of(axis.values.begin(), axis.values.end(), [&](double v) { return !(v * axis.values[0] > 0.0); }))
+      table.fail("log", "a log axis needs values of one sign, none 0");
+  } else {
+    if (table.typeOf("log") != LUA_TNIL) table.fail("log", "a range says log inside: range = { ..., log = true }");
     readRange(*table.table("range"), axis);
+  }
   return axis;
 }
 

@@ -94,6 +94,16 @@ TEST(SweepLoader, ReadsEveryField) {
   EXPECT_EQ(d.pointCount(), 27);
 }
 
+TEST(SweepLoader, ListedValuesMayBeShownOnALogScale) {
+  const SweepDef d = load("return { axes = { { param = 'm_p', values = { 0.5, 1, 2 }, log = true } } }");
+  EXPECT_TRUE(d.axes[0].log);
+  EXPECT_EQ(d.axes[0].values[1], 1.0);
+  EXPECT_THAT(errorOf("return { axes = {\n { param = 'k', values = { -1, 2 }, log = true } } }"),
+              HasSubstr("s.lua:2: axes[1].log: a log axis needs values of one sign, none 0"));
+  EXPECT_THAT(errorOf("return { axes = {\n { param = 'k', range = { from = 1, to = 2, count = 2 }, log = true } } }"),
+              HasSubstr("s.lua:2: axes[1].log: a range says log inside"));
+}
+
 TEST(SweepLoader, ANegativeLogRangeIsGeometricInItsMagnitude) {
   const SweepDef d = load("return { axes = { { param = 'Omega', range = { from = -1, to = -0.01, count = 3, log = true } } } }");
   EXPECT_EQ(d.axes[0].values[0], -1.0);
