@@ -43,17 +43,22 @@ void checkValue(const LuaTableReader& table, const std::string& key, SweepParam 
     table.fail(key, problem);
 }
 
+// The base values of the listed parameters, each checked as an axis value is.
+void readBaseValues(const LuaTableReader& table, std::initializer_list<const char*> keys, SweepDef& def) {
+  for (const char* key : keys) {
+    const SweepParam param = *findSweepParam(key);
+    if (const auto v = table.number(key)) {
+      checkValue(table, key, param, *v);
+      setSweepParam(param, *v, def.params, def.rose);
+    }
+  }
+}
+
 void readParams(const LuaTableReader& top, SweepDef& def) {
   const auto table = top.table("params");
   if (!table) return;  // the paper's values
   rejectUnknownLevelKeys(*table, {"R", "m_s", "m_p", "g"});
-  for (const char* key : {"R", "m_s", "m_p", "g"}) {
-    const SweepParam param = *findSweepParam(key);
-    if (const auto v = table->number(key)) {
-      checkValue(*table, key, param, *v);
-      setSweepParam(param, *v, def.params, def.rose);
-    }
-  }
+  readBaseValues(*table, {"R", "m_s", "m_p", "g"}, def);
 }
 
 void readDrive(const LuaTableReader& top, SweepDef& def) {
@@ -62,13 +67,7 @@ void readDrive(const LuaTableReader& top, SweepDef& def) {
   rejectUnknownLevelKeys(*table, {"kind", "r1", "r2", "k", "Omega"});
   if (const auto kind = table->string("kind"); kind && *kind != "rose")
     table->fail("kind", "a sweep runs the rose drive only; leave kind out or write \"rose\", got '" + *kind + "'");
-  for (const char* key : {"r1", "r2", "k", "Omega"}) {
-    const SweepParam param = *findSweepParam(key);
-    if (const auto v = table->number(key)) {
-      checkValue(*table, key, param, *v);
-      setSweepParam(param, *v, def.params, def.rose);
-    }
-  }
+  readBaseValues(*table, {"r1", "r2", "k", "Omega"}, def);
 }
 
 void readAnalysis(const LuaTableReader& top, SweepDef& def) {

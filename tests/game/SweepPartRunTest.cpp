@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <functional>
 
 #include "game/sweep/SweepError.h"
 #include "game/sweep/SweepManifest.h"
@@ -49,22 +50,32 @@ TEST(SweepPartRun, TheCsvDoesNotDependOnTheThreadCount) {
   EXPECT_EQ(one, TempDirectory::read(dir.path() / "three" / "sweep.csv"));
 }
 
-// A crash leaves the manifest saying incomplete and the partial CSV with
-// some whole rows and a cut one: the rerun keeps the whole ones.
-TEST(SweepPartRun, ARerunAfterACrashKeepsTheWholeRows) {
-  const TempDirectory dir;
+// What a crash leaves of a finished run of the tiny sweep in dir/out: the
+// manifest saying incomplete, no CSV, and `partial` as the partial file.
+// Returns the finished CSV.
+std::string crashed(const TempDirectory& dir, const std::function<std::string(const std::string&)>& partial) {
   const fs::path out = dir.path() / "out";
   test::runSweepInto(test::kTinySweep, out);
   const std::string complete = TempDirectory::read(out / "sweep.csv");
   SweepManifest m = readManifest(out / "sweep.json");
-  // Header + points 0..3 whole + half of point 4.
-  std::size_t at = 0;
-  for (int line = 0; line < 5; ++line) at = complete.find('\n', at) + 1;
-  const std::size_t half = at + (complete.find('\n', at) - at) / 2;
-  dir.write("out/sweep.csv.partial", complete.substr(0, half));
-  fs::remove(out / "sweep.csv");
   m.complete = false;
   dir.write("out/sweep.json", manifestJson(m));
+  fs::remove(out / "sweep.csv");
+  dir.write("out/sweep.csv.partial", partial(complete));
+  return complete;
+}
+
+// The partial CSV with some whole rows and a cut one: the rerun keeps the
+// whole ones.
+TEST(SweepPartRun, ARerunAfterACrashKeepsTheWholeRows) {
+  const TempDirectory dir;
+  const fs::path out = dir.path() / "out";
+  const std::string complete = crashed(dir, [](const std::string& csv) {
+    // Header + points 0..3 whole + half of point 4.
+    std::size_t at = 0;
+    for (int line = 0; line < 5; ++line) at = csv.find('\n', at) + 1;
+    return csv.substr(0, at + (csv.find('\n', at) - at) / 2);
+  });
 
   const SweepPartReport r = test::runSweepInto(test::kTinySweep, out, {}, 2);
   EXPECT_EQ(r.resumed, 4);
@@ -83,13 +94,7 @@ TEST(SweepPartRun, ARerunAfterACrashKeepsTheWholeRows) {
 TEST(SweepPartRun, APartialFileOfOtherRowsIsNotKept) {
   const TempDirectory dir;
   const fs::path out = dir.path() / "out";
-  test::runSweepInto(test::kTinySweep, out);
-  const std::string complete = TempDirectory::read(out / "sweep.csv");
-  SweepManifest m = readManifest(out / "sweep.json");
-  m.complete = false;
-  dir.write("out/sweep.json", manifestJson(m));
-  fs::remove(out / "sweep.csv");
-  dir.write("out/sweep.csv.partial", sweepHeader() + "5,garbage\n");
+  const std::string complete = crashed(dir, [](const std::string&) { return sweepHeader() + "5,garbage\n"; });
   const SweepPartReport r = test::runSweepInto(test::kTinySweep, out);
   EXPECT_EQ(r.resumed, 0);
   EXPECT_EQ(TempDirectory::read(out / "sweep.csv"), complete);
