@@ -19,7 +19,7 @@ struct SweepOptions {
   // run: SPEC.lua; merge: the part folders; map: the sweep's folder.
   std::vector<std::string> inputs;
   std::optional<std::string> out;   // run, merge: the folder; map: the SVG file
-  int threads = 0;                  // run: 0 = every core (std::thread::hardware_concurrency)
+  int threads = 0;                  // run: 0 = every CPU the process may use (OrderedPool::defaultThreads)
   SweepShard shard;                 // run: --shard i/N
   bool maps = true;                 // run (whole sweeps), merge: --maps svg|none
   // map:

@@ -1,5 +1,7 @@
 #include "game/sweep/OrderedPool.h"
 
+#include <sched.h>
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -13,7 +15,13 @@
 
 namespace hemiroll::game {
 
-int OrderedPool::defaultThreads() { return static_cast<int>(std::max(1u, std::thread::hardware_concurrency())); }
+int OrderedPool::defaultThreads() {
+  // The CPUs this process may run on: a cluster's job (Slurm's cgroup, taskset)
+  // gets fewer than the machine has, and more threads than those only queue.
+  cpu_set_t allowed;
+  if (sched_getaffinity(0, sizeof allowed, &allowed) == 0) return std::max(1, CPU_COUNT(&allowed));
+  return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
 
 void OrderedPool::run(std::size_t jobs, const Work& work, const Deliver& deliver, const Tick& tick,
                       double tickInterval) const {

@@ -29,7 +29,8 @@ class OrderedPool {
   void run(std::size_t jobs, const Work& work, const Deliver& deliver, const Tick& tick = {},
            double tickInterval = 0.2) const;
 
-  // std::thread::hardware_concurrency(), at least 1.
+  // The CPUs this process may run on (its affinity mask, which Slurm and
+  // taskset set), else std::thread::hardware_concurrency(); at least 1.
   static int defaultThreads();
 
  private:
