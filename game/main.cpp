@@ -14,6 +14,7 @@
 #include "game/commands/ScreenshotCommand.h"
 #include "game/commands/SessionCommand.h"
 #include "game/commands/SimCommand.h"
+#include "game/commands/SweepCommand.h"
 #include "game/commands/VersionCommand.h"
 
 namespace {
@@ -33,6 +34,7 @@ constexpr CommandEntry kCommands[] = {
     {"screenshot", "render one frame of a level offscreen and write it as a PNG", hemiroll::game::runScreenshotCommand},
     {"analyze", "measure phases, rose and helix in recorded trials; tables and SVG plots", hemiroll::game::runAnalyzeCommand},
     {"figures", "regenerate the paper's Figs. 9-11 from the simulator, with their features", hemiroll::game::runFiguresCommand},
+    {"sweep", "sweep the rose drive over a grid of parameters; shards, merge, heatmaps", hemiroll::game::runSweepCommand},
     {"version", "print the version", hemiroll::game::runVersionCommand},
 };
 

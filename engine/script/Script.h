@@ -19,7 +19,9 @@
 // Research protocols (docs/PROTOCOLS.md): loading a protocol file
 // (ProtocolLoader -> ProtocolDef, errors "file:line:" as for levels, level
 // files checked to exist) and expanding it into a deterministic trial plan
-// (ProtocolPlan); running a session is the game's.
+// (ProtocolPlan); running a session is the game's. Parameter sweeps
+// (docs/SWEEP.md): loading a sweep spec (SweepLoader -> SweepDef, errors
+// "file:line:" as for levels); running one is the game's.
 //
 // What a script can reach: the base functions assert, error, getmetatable,
 // ipairs, next, pairs, pcall, print (to stderr), rawequal, rawlen, select,

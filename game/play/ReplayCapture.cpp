@@ -14,6 +14,10 @@ std::string levelFileHash(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) return "";
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return contentHash(bytes);
+}
+
+std::string contentHash(std::string_view bytes) {
   const std::uint64_t h =
       record::fnv1a(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), record::kFnvOffset);
   char text[32];

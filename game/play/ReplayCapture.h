@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <string_view>
 
 #include "engine/haptics/RecordRow.h"
 #include "engine/haptics/ServoLoop.h"
@@ -20,6 +21,8 @@ namespace hemiroll::game {
 
 // "fnv1a-<16 hex digits>" of the file's bytes; "" when it cannot be read.
 std::string levelFileHash(const std::string& path);
+// "fnv1a-<16 hex digits>" of the bytes (a sweep spec's canonical text).
+std::string contentHash(std::string_view bytes);
 
 class ReplayCapture {
  public:

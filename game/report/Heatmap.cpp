@@ -59,7 +59,9 @@ void drawColourBar(SvgDocument& doc, const Rect& bar, const HeatmapDef& def, dou
 }  // namespace
 
 void drawHeatmap(SvgDocument& doc, const Rect& area, const HeatmapDef& def) {
-  const Rect plotArea{area.x, area.y, std::max(20.0, area.width - 80.0), area.height};
+  // Room on the right for the colour bar, its ticks and its label (inside the area, so
+  // that panels side by side on a sheet do not overlap).
+  const Rect plotArea{area.x, area.y, std::max(20.0, area.width - 92.0), area.height};
   const Rect f = plotFrame(plotArea);
   const std::size_t nx = def.xCentres.size(), ny = def.yCentres.size();
   const bool ok = usable(def.xCentres) && usable(def.yCentres) && def.values.size() == nx * ny;
@@ -88,11 +90,15 @@ void drawHeatmap(SvgDocument& doc, const Rect& area, const HeatmapDef& def) {
       anyMissing = anyMissing || !std::isfinite(v);
       const std::string colour = std::isfinite(v) ? colourAt(def.map, (v - lo) / (hi - lo)) : "#dddddd";
       doc.rect(cell, {.fill = colour});
-      if (def.annotate && std::isfinite(v)) {
-        const bool dark = def.map == ColourMap::Viridis && (v - lo) / (hi - lo) < 0.6;
-        doc.text({cell.x + 0.5 * cell.width, cell.y + 0.5 * cell.height + 4.0}, fixed(v * def.valueScale, def.decimals),
+      // Text on the dark end of viridis is white.
+      const bool dark = std::isfinite(v) && def.map == ColourMap::Viridis && (v - lo) / (hi - lo) < 0.6;
+      const std::string* mark = def.marks.size() == def.values.size() ? &def.marks[iy * nx + ix] : nullptr;
+      const std::string text = mark != nullptr && !mark->empty()          ? *mark
+                               : def.annotate && std::isfinite(v) ? fixed(v * def.valueScale, def.decimals)
+                                                                  : std::string();
+      if (!text.empty())
+        doc.text({cell.x + 0.5 * cell.width, cell.y + 0.5 * cell.height + 4.0}, text,
                  {.size = 10.0, .anchor = Anchor::Middle, .fill = dark ? "#ffffff" : "#222222"});
-      }
     }
   }
   doc.endClip();

@@ -28,6 +28,9 @@ struct HeatmapDef {
   bool annotate = false;                   // write each cell's value in it (small grids)
   int decimals = 2;                        // for annotations
   std::string missingNote = "no value";    // what a grey cell means
+  // Optional short text drawn in a cell whatever its value (a sweep marks
+  // the cells whose runs tipped over "T"); same layout as values, "" = none.
+  std::vector<std::string> marks{};
 };
 
 void drawHeatmap(SvgDocument& doc, const Rect& area, const HeatmapDef& def);

@@ -46,6 +46,23 @@ TEST(Heatmap, CellsColouredFromLowToHighWithAColourBar) {
   EXPECT_THAT(svg, HasSubstr(">10.5</text>"));  // annotation
 }
 
+// A sweep marks cells (T: the run tipped over) whatever their value; a
+// mark takes an annotation's place.
+TEST(Heatmap, MarksAreWrittenInTheirCells) {
+  HeatmapDef def = sweep();
+  def.marks = {"", "", "", "", "T", "t"};
+  const std::string svg = renderHeatmap(def);
+  EXPECT_EQ(test::xmlProblem(svg), "");
+  EXPECT_EQ(test::occurrences(svg, ">T</text>"), 1u);
+  EXPECT_EQ(test::occurrences(svg, ">t</text>"), 1u);
+  // The colour bar's ticks say 9.0 and 10.5 too: count against the unmarked map.
+  const std::string plain = renderHeatmap(sweep());
+  EXPECT_EQ(test::occurrences(svg, ">10.5</text>"), test::occurrences(plain, ">10.5</text>") - 1);  // marked: no annotation
+  EXPECT_EQ(test::occurrences(svg, ">9.0</text>"), test::occurrences(plain, ">9.0</text>"));
+  def.marks.pop_back();  // not one per cell: ignored
+  EXPECT_EQ(test::occurrences(renderHeatmap(def), ">T</text>"), 0u);
+}
+
 TEST(Heatmap, AGridThatDoesNotFitItsValuesIsSaidNotDrawn) {
   HeatmapDef def = sweep();
   def.values.pop_back();

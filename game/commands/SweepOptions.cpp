@@ -1,0 +1,96 @@
+#include "game/commands/SweepOptions.h"
+
+#include <limits>
+
+#include "game/cli/ArgumentReader.h"
+
+namespace hemiroll::game {
+
+const char* sweepUsage() {
+  return "usage: hemiroll sweep SPEC.lua --out DIR [--threads N] [--shard i/N] [--maps svg|none]\n"
+         "       hemiroll sweep merge DIR... --out DIR [--maps svg|none]\n"
+         "       hemiroll sweep map DIR --x PARAM --y PARAM --metric NAME [--aggregate HOW] [--out FILE.svg]\n"
+         "\n"
+         "Sweeps the paper's rose drive (Svinin et al. 2009, Sec. 5) over a grid of\n"
+         "parameters (k, Omega, r1, r2, the masses, ...) given by a spec file, and\n"
+         "measures at each point: tip-over, the steady precession and its spread, the\n"
+         "arc of the contact trace, the drift, the loops (docs/SWEEP.md).\n"
+         "\n"
+         "  --out DIR         run, merge: the output folder (created); a rerun into the\n"
+         "                    same folder keeps the points already done\n"
+         "  --threads N       run: worker threads (default: every CPU this process may\n"
+         "                    use); the CSV does not depend on N\n"
+         "  --shard i/N       run: only the points whose index is i modulo N, into\n"
+         "                    part-i-of-N.csv/.json (for a cluster's job array); join\n"
+         "                    the parts with `hemiroll sweep merge`\n"
+         "  --maps svg|none   run (whole sweeps), merge: draw map-<x>-<y>.svg for every\n"
+         "                    pair of axes (default svg)\n"
+         "  --x, --y PARAM    map: the axes (R, m_s, m_p, g, r1, r2, k, Omega)\n"
+         "  --metric NAME     map: a metric (paper_like, steady_fraction, ...; see\n"
+         "                    docs/SWEEP.md)\n"
+         "  --aggregate HOW   map: median, mean, min, max or best over the other axes\n"
+         "                    (default: the metric's own, named in the title)\n"
+         "  --out FILE.svg    map: where (default DIR/map-<x>-<y>-<metric>.svg)\n"
+         "  --help            print this help\n"
+         "\n"
+         "Progress is drawn on stderr when it is a terminal; the result is one JSON line\n"
+         "on stdout. Exit codes: 0 done (a run that tips over is a result), 1 a file\n"
+         "could not be written or read, 2 bad input.\n";
+}
+
+SweepOptionsResult parseSweepOptions(const std::vector<std::string>& args) {
+  SweepOptionsResult result;
+  SweepOptions& o = result.options;
+  std::vector<std::string> rest = args;
+  if (!rest.empty() && (rest.front() == "merge" || rest.front() == "map")) {
+    o.action = rest.front() == "merge" ? SweepAction::Merge : SweepAction::Map;
+    rest.erase(rest.begin());
+  }
+  const bool run = o.action == SweepAction::Run, merge = o.action == SweepAction::Merge, map = o.action == SweepAction::Map;
+  cli::ArgumentReader reader;
+  reader.flag("--help", [&] { o.help = true; }).flag("-h", [&] { o.help = true; });
+  reader.positional(run ? "sweep spec" : merge ? "part folder" : "sweep folder",
+                    merge ? std::numeric_limits<std::size_t>::max() : 1,
+                    [&](const std::string& input) { o.inputs.push_back(input); });
+  reader.option("--out", cli::text(o.out, map ? "an SVG file name" : "a folder"));
+  if (run) {
+    reader.option("--threads", cli::integerIn(o.threads, 1, 1024, "a whole number of threads from 1 to 1024"));
+    reader.option("--shard", [&](const std::string& flag, const std::string& value) {
+      const auto shard = SweepShard::parse(value);
+      if (!shard) return cli::needs(flag, "i/N with 0 <= i < N (e.g. 0/4)", value);
+      o.shard = *shard;
+      return std::string();
+    });
+  }
+  if (run || merge) {
+    reader.option("--maps", [&](const std::string& flag, const std::string& value) {
+      if (value != "svg" && value != "none") return cli::needs(flag, "'svg' or 'none'", value);
+      o.maps = value == "svg";
+      return std::string();
+    });
+  }
+  if (map) {
+    reader.option("--x", cli::text(o.x, "a parameter name"))
+        .option("--y", cli::text(o.y, "a parameter name"))
+        .option("--metric", [&](const std::string& flag, const std::string& value) {
+          if (!findSweepMetric(value)) return cli::needs(flag, "one of " + sweepMetricNames(), value);
+          o.metric = value;
+          return std::string();
+        })
+        .option("--aggregate", [&](const std::string& flag, const std::string& value) {
+          o.aggregate = parseAggregate(value);
+          return o.aggregate ? std::string() : cli::needs(flag, "median, mean, min, max or best", value);
+        });
+  }
+  result.error = reader.read(rest);
+  if (!result.error.empty() || o.help) return result;
+  if (o.inputs.empty())
+    result.error = run ? "missing the sweep spec file" : merge ? "missing the part folders to merge" : "missing the sweep folder";
+  else if (!map && !o.out)
+    result.error = "missing --out DIR";
+  else if (map && (!o.x || !o.y || !o.metric))
+    result.error = "missing --x, --y or --metric (a map needs all three)";
+  return result;
+}
+
+}  // namespace hemiroll::game

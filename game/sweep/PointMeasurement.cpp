@@ -1,0 +1,95 @@
+#include "game/sweep/PointMeasurement.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "engine/physics/StateLayout.h"
+#include "game/sim/ScenarioRun.h"
+
+namespace hemiroll::game {
+
+namespace {
+
+// The analysis' reasons are one line already; a sweep row must never hold a
+// line break (a partial CSV is cut at line ends on resume).
+std::string oneLine(std::string text) {
+  std::replace(text.begin(), text.end(), '\n', ' ');
+  return text;
+}
+
+}  // namespace
+
+double PointMeasurement::steadyFraction() const {
+  const analysis::Phases& p = features.phases;
+  return p.found && duration > 0.0 ? p.steady.duration() / duration : 0.0;
+}
+
+double PointMeasurement::relativeSpread() const {
+  const analysis::Phases& p = features.phases;
+  return p.found && p.steadyRateMedian != 0.0 ? p.steadyRateSpread / std::abs(p.steadyRateMedian) : 0.0;
+}
+
+bool PointMeasurement::meetsPaper(const script::SweepAnalysisDef& def) const {
+  return event == physics::DomainEvent::None && features.phases.found && steadyFraction() >= def.minSteadyFraction &&
+         relativeSpread() <= def.maxRelativeSpread && helixInSteadyPhase && features.helix.arc.found &&
+         features.helix.loops.found;
+}
+
+std::string PointMeasurement::notes() const {
+  std::string out;
+  auto add = [&](const std::string& what) { out += (out.empty() ? "" : "; ") + oneLine(what); };
+  if (event != physics::DomainEvent::None) add(std::string("stopped by ") + physics::domainEventName(event));
+  if (!features.phases.found) add("steady: " + features.phases.reason);
+  if (!features.helix.arc.found) add("arc: " + features.helix.arc.reason);
+  if (!features.helix.loops.found) add("loops: " + features.helix.loops.reason);
+  if (!features.rose.found) add("rose: " + features.rose.reason);
+  if (features.phases.found && !helixInSteadyPhase) add("helix: " + features.helixNote);
+  return out;
+}
+
+long long sampleEvery(double timeStep) {
+  return std::max(1LL, static_cast<long long>(std::llround(0.01 / timeStep)));
+}
+
+PointMeasurement measurePoint(const SweepGrid& grid, const SweepPoint& point) {
+  const script::SweepDef& def = grid.def();
+  RunSettings settings;
+  settings.duration = def.duration;
+  settings.timeStep = def.timeStep;
+  settings.integrator = def.integrator;
+  settings.tolerance = def.tolerance;
+  settings.every = sampleEvery(def.timeStep);
+
+  std::vector<double> time, massX, massY, contactX, contactY, psi;
+  const long long rows = ScenarioRun::stepCount(settings) / settings.every + 2;
+  for (auto* column : {&time, &massX, &massY, &contactX, &contactY, &psi}) column->reserve(static_cast<std::size_t>(rows));
+  PointMeasurement m;
+  m.duration = def.duration;
+  const RunSummary summary = ScenarioRun(grid.scenario(point), settings).run([&](const TrajectoryRow& row) {
+    namespace slot = physics::force_slot;
+    time.push_back(row.time);
+    massX.push_back(row.state[slot::x_p]);
+    massY.push_back(row.state[slot::y_p]);
+    contactX.push_back(row.state[slot::u_a]);
+    contactY.push_back(row.state[slot::v_a]);
+    psi.push_back(row.state[slot::psi]);
+    // The face normal's vertical component is cos(u_o) cos(v_o): eq. (6)
+    // with psi about the vertical (SweepTest checks it against Orientation).
+    const double cosTilt = std::cos(row.state[slot::u_o]) * std::cos(row.state[slot::v_o]);
+    m.maxTilt = std::max(m.maxTilt, std::acos(std::clamp(cosTilt, -1.0, 1.0)));
+  });
+  m.event = summary.event;
+  m.simulated = summary.endTime;
+  if (m.event != physics::DomainEvent::None) m.eventTime = summary.endTime;
+  if (m.simulated > 0.0) m.meanRate = (psi.back() - psi.front()) / m.simulated;
+  analysis::TrialAnalysisDef judged;
+  judged.phases.minRate = def.analysis.minRate;
+  judged.phases.relativeBand = def.analysis.relativeBand;
+  judged.phases.absoluteBand = def.analysis.absoluteBand;
+  m.features = analysis::analyzeTrial({time, massX, massY, contactX, contactY, psi}, judged);
+  m.helixInSteadyPhase = m.features.phases.found && m.features.helixNote.empty();
+  m.paperLike = m.meetsPaper(def.analysis);
+  return m;
+}
+
+}  // namespace hemiroll::game

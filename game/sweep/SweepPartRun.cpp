@@ -1,0 +1,148 @@
+#include "game/sweep/SweepPartRun.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <system_error>
+#include <vector>
+
+#include "engine/record/DurableFile.h"
+#include "engine/record/RecordError.h"
+#include "game/sweep/OrderedPool.h"
+#include "game/sweep/PointMeasurement.h"
+#include "game/sweep/SweepError.h"
+#include "game/sweep/SweepGrid.h"
+#include "game/sweep/SweepManifest.h"
+#include "game/sweep/SweepProgress.h"
+#include "game/sweep/SweepSpecJson.h"
+#include "game/sweep/SweepTable.h"
+
+namespace hemiroll::game {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+[[noreturn]] void environment(const std::string& message) { throw SweepError(SweepError::Kind::Environment, message); }
+
+// The rows of an interrupted run that can be kept: whole lines after the
+// header, the shard's first points in order. Rows never hold a line break
+// (PointMeasurement::notes), so a cut line is the text after the last '\n'.
+std::vector<std::string> keptRows(const fs::path& partial, const std::vector<long long>& points) {
+  std::error_code ec;
+  if (!fs::exists(partial, ec)) return {};
+  std::string text;
+  try {
+    text = record::readWholeFile(partial);
+  } catch (const record::RecordError& e) {
+    environment(e.what());
+  }
+  text.erase(text.rfind('\n') == std::string::npos ? 0 : text.rfind('\n') + 1);
+  const std::string header = sweepHeader();
+  if (text.compare(0, header.size(), header) != 0) return {};  // another program's columns: start clean
+  std::vector<std::string> rows;
+  for (std::size_t at = header.size(); at < text.size() && rows.size() < points.size();) {
+    const std::size_t end = text.find('\n', at);
+    std::string line = text.substr(at, end + 1 - at);
+    if (line.rfind(std::to_string(points[rows.size()]) + ",", 0) != 0) break;
+    rows.push_back(std::move(line));
+    at = end + 1;
+  }
+  return rows;
+}
+
+void writeManifest(const fs::path& path, const SweepManifest& m) {
+  try {
+    record::writeFileAtomically(path, manifestJson(m));
+  } catch (const record::RecordError& e) {
+    environment(e.what());
+  }
+}
+
+long long stoppedRows(const fs::path& csv) {
+  const std::size_t event = sweepColumn("event");
+  const auto rows = readSweepRows(csv);
+  return std::count_if(rows.begin(), rows.end(), [&](const std::vector<std::string>& row) { return row[event] != "none"; });
+}
+
+}  // namespace
+
+SweepPartReport runSweepPart(const SweepPartRequest& r) {
+  const SweepGrid grid(r.def);
+  const std::vector<long long> points = r.shard.points(grid.size());
+  SweepPartReport report;
+  report.points = static_cast<long long>(points.size());
+  report.manifest = r.outDir / (r.shard.stem() + ".json");
+  report.csv = r.outDir / (r.shard.stem() + ".csv");
+  const fs::path partial = r.outDir / (r.shard.stem() + ".csv.partial");
+
+  SweepManifest m;
+  m.program = r.program;
+  m.specFile = r.specFile;
+  m.description = r.def.description;
+  m.specHash = specHash(r.def);
+  m.specJson = specJson(r.def);
+  m.pointsTotal = grid.size();
+  m.shard = r.shard;
+  m.pointCount = report.points;
+  m.csv = report.csv.filename().string();
+  m.threads = r.threads;
+
+  std::error_code ec;
+  fs::create_directories(r.outDir, ec);
+  if (!fs::is_directory(r.outDir, ec)) environment("cannot create the output folder " + r.outDir.string());
+  bool resume = false;
+  if (fs::exists(report.manifest, ec)) {
+    const SweepManifest old = readManifest(report.manifest);
+    if (old.specHash != m.specHash || old.program != m.program)
+      throw SweepError(SweepError::Kind::BadInput,
+                       r.outDir.string() + " already holds shard " + r.shard.label() + " of another sweep (" +
+                           old.specHash + " by " + old.program + "; this is " + m.specHash + " by " + m.program +
+                           "): give another --out or remove " + report.manifest.filename().string());
+    if (old.complete && fs::exists(report.csv, ec)) {
+      report.alreadyComplete = true;
+      report.resumed = report.points;
+      report.stopped = stoppedRows(report.csv);
+      fs::remove(partial, ec);
+      return report;
+    }
+    resume = !old.complete;
+  }
+
+  const std::vector<std::string> kept = resume ? keptRows(partial, points) : std::vector<std::string>{};
+  report.resumed = static_cast<long long>(kept.size());
+  m.resumedPoints = report.resumed;
+  writeManifest(report.manifest, m);
+  std::string start = sweepHeader();
+  for (const std::string& row : kept) start += row;
+  SweepProgress progress(stderr, report.points, report.resumed, r.terminal);
+  try {
+    record::writeFileAtomically(partial, start);
+    record::DurableFile out(partial, "ab");
+    const std::size_t first = kept.size();
+    OrderedPool(r.threads).run(
+        points.size() - first,
+        [&](std::size_t job) {
+          const SweepPoint point = grid.point(points[first + job]);
+          return sweepRow(point, measurePoint(grid, point));
+        },
+        [&](std::size_t, std::string&& row) {
+          if (!out.write(row) || !out.flush()) environment(out.path().string() + ": " + out.error());
+        },
+        [&](std::size_t delivered) { progress.update(static_cast<long long>(first + delivered)); });
+    if (!out.close()) environment(out.path().string() + ": " + out.error());
+    report.computed = report.points - report.resumed;
+    progress.finish(report.points);
+    record::writeFileAtomically(report.csv, record::readWholeFile(partial));
+  } catch (const record::RecordError& e) {
+    environment(e.what());
+  }
+  report.wallSeconds = progress.elapsedSeconds();
+  m.complete = true;
+  m.wallSeconds = report.wallSeconds;
+  writeManifest(report.manifest, m);
+  fs::remove(partial, ec);
+  report.stopped = stoppedRows(report.csv);
+  return report;
+}
+
+}  // namespace hemiroll::game

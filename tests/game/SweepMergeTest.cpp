@@ -1,0 +1,104 @@
+// game/sweep/SweepMerge: shards joined into the byte-identical CSV of the
+// unsharded run, from one folder or several; refused, with one sentence,
+// when a shard is missing, given twice, incomplete, or of another spec or
+// program.
+
+#include "game/sweep/SweepMerge.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "game/sweep/SweepError.h"
+#include "tests/game/support/TinySweep.h"
+#include "tests/support/TempDirectory.h"
+
+namespace hemiroll::game {
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+using test::TempDirectory;
+
+std::string refusal(const std::vector<fs::path>& dirs) {
+  try {
+    mergeSweepParts(dirs);
+  } catch (const SweepError& e) {
+    EXPECT_EQ(e.kind(), SweepError::Kind::BadInput);
+    return e.what();
+  }
+  return "merged";
+}
+
+class SweepMergeTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    test::runSweepInto(test::kTinySweep, dir_.path() / "whole", {}, 2);
+    for (long long i = 0; i < 3; ++i) test::runSweepInto(test::kTinySweep, dir_.path() / "parts", {i, 3});
+  }
+  fs::path at(const char* name) const { return dir_.path() / name; }
+  TempDirectory dir_;
+};
+
+TEST_F(SweepMergeTest, ShardsMergeIntoTheUnshardedCsv) {
+  const MergedSweep merged = mergeSweepParts({at("parts")});
+  EXPECT_EQ(merged.parts, 3);
+  EXPECT_EQ(merged.csv, TempDirectory::read(at("whole") / "sweep.csv"));
+  EXPECT_TRUE(merged.manifest.shard.whole());
+  EXPECT_EQ(merged.manifest.pointCount, 9);
+  writeMergedSweep(merged, at("merged"));
+  EXPECT_EQ(TempDirectory::read(at("merged") / "sweep.csv"), TempDirectory::read(at("whole") / "sweep.csv"));
+  EXPECT_TRUE(readManifest(at("merged") / "sweep.json").complete);
+  // The parts may lie in several folders, and a merged sweep merges again.
+  fs::create_directories(at("split"));
+  fs::rename(at("parts") / "part-2-of-3.csv", at("split") / "part-2-of-3.csv");
+  fs::rename(at("parts") / "part-2-of-3.json", at("split") / "part-2-of-3.json");
+  EXPECT_EQ(mergeSweepParts({at("parts"), at("split")}).csv, merged.csv);
+  EXPECT_EQ(mergeSweepParts({at("merged")}).csv, merged.csv);
+}
+
+TEST_F(SweepMergeTest, RefusesAMissingShard) {
+  fs::remove(at("parts") / "part-1-of-3.json");
+  EXPECT_THAT(refusal({at("parts")}), HasSubstr("3 of 9 points are missing, the first is point 1 (shard 1/3 not given?)"));
+}
+
+TEST_F(SweepMergeTest, RefusesADuplicate) {
+  EXPECT_THAT(refusal({at("parts"), at("whole")}), HasSubstr("point 0 is in both"));
+}
+
+TEST_F(SweepMergeTest, RefusesAnotherSpec) {
+  test::runSweepInto(test::kTippingSweep, at("other"), {1, 3});
+  fs::remove(at("parts") / "part-1-of-3.json");
+  EXPECT_THAT(refusal({at("parts"), at("other")}), HasSubstr("part-1-of-3.json comes from another sweep spec"));
+}
+
+TEST_F(SweepMergeTest, RefusesAnIncompleteShard) {
+  std::string manifest = TempDirectory::read(at("parts") / "part-2-of-3.json");
+  manifest.replace(manifest.find("\"complete\": true"), 16, "\"complete\": false");
+  dir_.write("parts/part-2-of-3.json", manifest);
+  EXPECT_THAT(refusal({at("parts")}), HasSubstr("part-2-of-3.json: shard 2/3 is incomplete"));
+}
+
+TEST_F(SweepMergeTest, RefusesAnotherProgram) {
+  std::string manifest = TempDirectory::read(at("parts") / "part-2-of-3.json");
+  manifest.replace(manifest.find("hemiroll test"), 13, "hemiroll 0.0");
+  dir_.write("parts/part-2-of-3.json", manifest);
+  EXPECT_THAT(refusal({at("parts")}), HasSubstr("was written by hemiroll 0.0"));
+}
+
+TEST_F(SweepMergeTest, RefusesAFolderWithoutParts) {
+  fs::create_directories(at("empty"));
+  EXPECT_THAT(refusal({at("empty")}), HasSubstr("holds no sweep parts"));
+  EXPECT_THAT(refusal({at("nothing")}), HasSubstr("is not a folder"));
+}
+
+TEST_F(SweepMergeTest, RefusesAPartWhoseRowsDisagreeWithItsManifest) {
+  std::string csv = TempDirectory::read(at("parts") / "part-1-of-3.csv");
+  csv.erase(csv.rfind('\n', csv.size() - 2) + 1);  // the last row gone
+  dir_.write("parts/part-1-of-3.csv", csv);
+  EXPECT_THAT(refusal({at("parts")}), HasSubstr("part-1-of-3.csv holds 2 rows; its manifest says 3"));
+}
+
+}  // namespace
+}  // namespace hemiroll::game
