@@ -65,6 +65,10 @@ TEST(OrderedPool, AFailingJobStopsThePoolAndIsRethrown) {
                    [&](std::size_t job) -> std::string {
                      ++started;
                      if (job == 5) throw std::runtime_error("job 5 failed");
+                     // Jobs take a while, as sweep points do: with empty jobs the
+                     // other worker could run all 1000 in the moment between job
+                     // 5's throw and the pool's stop (seen under ctest -j2).
+                     std::this_thread::sleep_for(std::chrono::microseconds(200));
                      return "";
                    },
                    [&](std::size_t job, std::string&&) { delivered.push_back(job); }),
