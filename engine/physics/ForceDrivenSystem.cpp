@@ -37,7 +37,10 @@ Real3 ForceDrivenSystem::inputForce(const RollingGeometry& g, double t, const Fo
   return {0.0, 0.0, 0.0};
 }
 
-void ForceDrivenSystem::derivative(double t, const ForceDrivenState& x, ForceDrivenState& dxdt) const {
+// flatten: the whole evaluation compiled as one function (geometry, sin/cos,
+// input force, the 3x3 solve). Left to GCC's size limits, parts of it stay
+// out of line and pass their results through memory (docs/PERFORMANCE.md).
+[[gnu::flatten]] void ForceDrivenSystem::derivative(double t, const ForceDrivenState& x, ForceDrivenState& dxdt) const {
   const double radius = dynamics_.constants().params.radius;
   const RollingGeometry g = geometryOf(dynamics_.constants(), x);
   const HeadingFrame& f = g.frame;

@@ -16,7 +16,10 @@ PrescribedDriveSystem::PrescribedDriveSystem(const HemisphereParams& params, con
                                              const DomainLimits& limits)
     : dynamics_(params), trajectory_(trajectory), limits_(limits), cosMaxTilt_(std::cos(limits.maxTilt)) {}
 
-void PrescribedDriveSystem::derivative(double t, const BodyState& x, BodyState& dxdt) const {
+// flatten: the whole evaluation compiled as one function (geometry, sin/cos,
+// the 3x3 solve). Left to GCC's size limits, parts of it stay
+// out of line and pass their results through memory (docs/PERFORMANCE.md).
+[[gnu::flatten]] void PrescribedDriveSystem::derivative(double t, const BodyState& x, BodyState& dxdt) const {
   const ModelConstants& c = dynamics_.constants();
   const MassPointTrajectory::Sample s = trajectory_.at(t);
   const RollingGeometry g = geometryAt(c, x, s);
