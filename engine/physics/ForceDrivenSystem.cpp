@@ -17,7 +17,10 @@ RollingGeometry geometryOf(const ModelConstants& c, const ForceDrivenState& x) {
 }
 
 ForceDrivenSystem::ForceDrivenSystem(const HemisphereParams& params, const DomainLimits& limits)
-    : dynamics_(params), limits_(limits), cosMaxTilt_(std::cos(limits.maxTilt)) {}
+    : dynamics_(params),
+      limits_(limits),
+      cosMaxTilt_(std::cos(limits.maxTilt)),
+      interior_(cosMaxTilt_, limits.maxPointRadius * params.radius) {}
 
 Real3 ForceDrivenSystem::handForceAt(const RollingGeometry& g, double t, const ForceDrivenState& x,
                                      const Real3& omegaH) const {
@@ -67,6 +70,11 @@ DomainMargins ForceDrivenSystem::margins(double, const ForceDrivenState& x) cons
   sinCos2(x[u_o], x[v_o], u, v);
   return {u.cos * v.cos - cosMaxTilt_,
           limits_.maxPointRadius * radius - std::sqrt(x[x_p] * x[x_p] + x[y_p] * x[y_p])};
+}
+
+DomainEvent ForceDrivenSystem::domainEvent(double t, const ForceDrivenState& x) const {
+  if (interior_.surelyInside(x[u_o], x[v_o], x[x_p], x[y_p]) && x.allFinite()) return DomainEvent::None;
+  return OdeSystem::domainEvent(t, x);
 }
 
 Vec3 ForceDrivenSystem::externalForce(double t, const ForceDrivenState& x) const {
