@@ -17,7 +17,10 @@ RollingGeometry geometryOf(const ModelConstants& c, const ForceDrivenState& x) {
 }
 
 ForceDrivenSystem::ForceDrivenSystem(const HemisphereParams& params, const DomainLimits& limits)
-    : dynamics_(params), limits_(limits), cosMaxTilt_(std::cos(limits.maxTilt)) {}
+    : dynamics_(params),
+      limits_(limits),
+      cosMaxTilt_(std::cos(limits.maxTilt)),
+      interior_(cosMaxTilt_, limits.maxPointRadius * params.radius) {}
 
 Real3 ForceDrivenSystem::handForceAt(const RollingGeometry& g, double t, const ForceDrivenState& x,
                                      const Real3& omegaH) const {
@@ -37,7 +40,10 @@ Real3 ForceDrivenSystem::inputForce(const RollingGeometry& g, double t, const Fo
   return {0.0, 0.0, 0.0};
 }
 
-void ForceDrivenSystem::derivative(double t, const ForceDrivenState& x, ForceDrivenState& dxdt) const {
+// flatten: the whole evaluation compiled as one function (geometry, sin/cos,
+// input force, the 3x3 solve). Left to GCC's size limits, parts of it stay
+// out of line and pass their results through memory (docs/PERFORMANCE.md).
+[[gnu::flatten]] void ForceDrivenSystem::derivative(double t, const ForceDrivenState& x, ForceDrivenState& dxdt) const {
   const double radius = dynamics_.constants().params.radius;
   const RollingGeometry g = geometryOf(dynamics_.constants(), x);
   const HeadingFrame& f = g.frame;
@@ -64,6 +70,11 @@ DomainMargins ForceDrivenSystem::margins(double, const ForceDrivenState& x) cons
   sinCos2(x[u_o], x[v_o], u, v);
   return {u.cos * v.cos - cosMaxTilt_,
           limits_.maxPointRadius * radius - std::sqrt(x[x_p] * x[x_p] + x[y_p] * x[y_p])};
+}
+
+DomainEvent ForceDrivenSystem::domainEvent(double t, const ForceDrivenState& x) const {
+  if (interior_.surelyInside(x[u_o], x[v_o], x[x_p], x[y_p]) && x.allFinite()) return DomainEvent::None;
+  return OdeSystem::domainEvent(t, x);
 }
 
 Vec3 ForceDrivenSystem::externalForce(double t, const ForceDrivenState& x) const {

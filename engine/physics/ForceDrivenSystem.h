@@ -21,6 +21,8 @@ class ForceDrivenSystem final : public OdeSystem<12> {
 
   void derivative(double t, const ForceDrivenState& x, ForceDrivenState& dxdt) const override;
   DomainMargins margins(double t, const ForceDrivenState& x) const override;
+  // The margins' answer, without their trigonometry away from the edges.
+  DomainEvent domainEvent(double t, const ForceDrivenState& x) const override;
   // Free motion, a constant face force and a held proxy are autonomous; a
   // proxy trajectory is not.
   bool autonomous() const override { return input_.autonomous(); }
@@ -44,6 +46,7 @@ class ForceDrivenSystem final : public OdeSystem<12> {
   RollingDynamics dynamics_;
   DomainLimits limits_;
   double cosMaxTilt_;
+  InteriorCheck interior_;
   ForceInput input_;
 };
 

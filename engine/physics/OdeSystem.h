@@ -16,6 +16,13 @@ class OdeSystem {
 
   virtual void derivative(double t, const StateVector<N>& x, StateVector<N>& dxdt) const = 0;
   virtual DomainMargins margins(double t, const StateVector<N>& x) const = 0;
+  // Which edge x has crossed (None while inside and finite), as classifyDomain
+  // reads margins(). The stepper asks this after every step; a model may
+  // answer faster where it can, but must give the same answer everywhere.
+  virtual DomainEvent domainEvent(double t, const StateVector<N>& x) const {
+    const bool finite = x.allFinite();
+    return classifyDomain(finite ? margins(t, x) : DomainMargins{0.0, 0.0}, finite);
+  }
 
   // True when derivative() and margins() ignore t with the current input (no
   // time-dependent drive): a step then depends on (x, h) only, which is what

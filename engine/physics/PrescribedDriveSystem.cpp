@@ -14,9 +14,16 @@ RollingGeometry geometryAt(const ModelConstants& c, const BodyState& x, const Ma
 
 PrescribedDriveSystem::PrescribedDriveSystem(const HemisphereParams& params, const MassPointTrajectory& trajectory,
                                              const DomainLimits& limits)
-    : dynamics_(params), trajectory_(trajectory), limits_(limits), cosMaxTilt_(std::cos(limits.maxTilt)) {}
+    : dynamics_(params),
+      trajectory_(trajectory),
+      limits_(limits),
+      cosMaxTilt_(std::cos(limits.maxTilt)),
+      interior_(cosMaxTilt_, limits.maxPointRadius * params.radius) {}
 
-void PrescribedDriveSystem::derivative(double t, const BodyState& x, BodyState& dxdt) const {
+// flatten: the whole evaluation compiled as one function (geometry, sin/cos,
+// the 3x3 solve). Left to GCC's size limits, parts of it stay
+// out of line and pass their results through memory (docs/PERFORMANCE.md).
+[[gnu::flatten]] void PrescribedDriveSystem::derivative(double t, const BodyState& x, BodyState& dxdt) const {
   const ModelConstants& c = dynamics_.constants();
   const MassPointTrajectory::Sample s = trajectory_.at(t);
   const RollingGeometry g = geometryAt(c, x, s);
@@ -37,6 +44,12 @@ DomainMargins PrescribedDriveSystem::margins(double t, const BodyState& x) const
   sinCos2(x[u_o], x[v_o], u, v);
   return {u.cos * v.cos - cosMaxTilt_,
           limits_.maxPointRadius * radius - std::sqrt(p.squaredNorm())};
+}
+
+DomainEvent PrescribedDriveSystem::domainEvent(double t, const BodyState& x) const {
+  const Vec2 p = trajectory_.at(t).p;
+  if (interior_.surelyInside(x[u_o], x[v_o], p.x(), p.y()) && x.allFinite()) return DomainEvent::None;
+  return OdeSystem::domainEvent(t, x);
 }
 
 Vec2 PrescribedDriveSystem::drivingForce(double t, const BodyState& x) const {

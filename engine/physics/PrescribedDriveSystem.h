@@ -24,6 +24,8 @@ class PrescribedDriveSystem final : public OdeSystem<8> {
 
   void derivative(double t, const BodyState& x, BodyState& dxdt) const override;
   DomainMargins margins(double t, const BodyState& x) const override;
+  // The margins' answer, without their trigonometry away from the edges.
+  DomainEvent domainEvent(double t, const BodyState& x) const override;
 
   // f of eq. (46): the in-face force on the mass point that realises p''(t).
   Vec2 drivingForce(double t, const BodyState& x) const;
@@ -37,6 +39,7 @@ class PrescribedDriveSystem final : public OdeSystem<8> {
   const MassPointTrajectory& trajectory_;
   DomainLimits limits_;
   double cosMaxTilt_;
+  InteriorCheck interior_;
 };
 
 }  // namespace hemiroll::physics

@@ -37,7 +37,10 @@ Real3 RotationDrivenSystem::inputForce(const RollingGeometryIn<BodyFrame>& g, do
   return {0.0, 0.0, 0.0};
 }
 
-void RotationDrivenSystem::derivative(double t, const RotationState& x, RotationState& dxdt) const {
+// flatten: the whole evaluation compiled as one function (geometry, input
+// force, the 3x3 solve). Left to GCC's size limits, parts of it stay
+// out of line and pass their results through memory (docs/PERFORMANCE.md).
+[[gnu::flatten]] void RotationDrivenSystem::derivative(double t, const RotationState& x, RotationState& dxdt) const {
   const double radius = dynamics_.constants().params.radius;
   const Quaternion q = quaternionOf(x);
   const auto g = makeGeometry(dynamics_.constants(), makeBodyFrame(q), Real2{x[x_p], x[y_p]},

@@ -33,43 +33,88 @@ inline constexpr double kRoundingShift = 0x1.8p52;
 // mostly small).
 inline constexpr double kNoReductionLimit = 0.78;
 
+typedef double Lanes __attribute__((vector_size(16)));  // two doubles, one SSE2 register
+
 // Taylor series on |r| <= pi/4 (plus a little slack from the rounding of n),
-// truncated where the next term is below 1e-17 of the result. Evaluated by
-// Estrin's scheme rather than Horner's: the right-hand side is latency-bound
-// and this halves the dependent chain (about 20 instead of 48 cycles).
-// Templates so that the same operations serve one angle and a pair of them.
+// truncated where the next term is below 1e-17 of the result:
+//   sin r = r + r z P(z),  cos r = 1 - z/2 + z^2 Q(z),  z = r^2.
+inline constexpr double kSinCoefficients[8] = {-1.0 / 6,
+                                               1.0 / 120,
+                                               -1.0 / 5040,
+                                               2.7557319223985893e-06,
+                                               -2.505210838544172e-08,
+                                               1.6059043836821613e-10,
+                                               -7.647163731819816e-13,
+                                               2.8114572543455206e-15};
+inline constexpr double kCosCoefficients[8] = {1.0 / 24,
+                                               -1.0 / 720,
+                                               2.48015873015873e-05,
+                                               -2.755731922398589e-07,
+                                               2.08767569878681e-09,
+                                               -1.1470745597729725e-11,
+                                               4.779477332387385e-14,
+                                               -1.5619206968586225e-16};
+
+// P or Q by Estrin's scheme rather than Horner's: the right-hand side is
+// latency-bound and this halves the dependent chain (about 20 instead of 48
+// cycles). The coefficients are scalars (the same polynomial in every lane of
+// T) or lanes themselves (a different polynomial in each lane): either way
+// every lane sees the same operations in the same order, so a value has the
+// same bits whichever form computed it.
+template <class T, class C>
+inline T estrin8(T z, T z2, T z4, const C (&c)[8]) {
+  return ((c[0] + z * c[1]) + z2 * (c[2] + z * c[3])) + z4 * ((c[4] + z * c[5]) + z2 * (c[6] + z * c[7]));
+}
+
+// The last steps of the two kernels, given P or Q. For the cosine, 1 - z/2
+// loses bits when z/2 is near 1/4..1/2; take the exact part first.
+template <class T>
+inline T sinFromPolynomial(T r, T z, T p) {
+  return r + r * z * p;
+}
+template <class T>
+inline T cosFromPolynomial(T z, T z2, T q) {
+  const T half = 0.5 * z;
+  const T w = 1.0 - half;
+  return w + (((1.0 - w) - half) + z2 * q);
+}
+
+// sin and cos of the same angles in every lane of T (one angle, or a pair).
 template <class T>
 inline T sinKernel(T r) {
   const T z = r * r, z2 = z * z, z4 = z2 * z2;
-  const T p01 = -1.0 / 6 + z * (1.0 / 120), p23 = -1.0 / 5040 + z * 2.7557319223985893e-06;
-  const T p45 = -2.505210838544172e-08 + z * 1.6059043836821613e-10;
-  const T p67 = -7.647163731819816e-13 + z * 2.8114572543455206e-15;
-  const T p = (p01 + z2 * p23) + z4 * (p45 + z2 * p67);
-  return r + r * z * p;
+  return sinFromPolynomial(r, z, estrin8(z, z2, z4, kSinCoefficients));
 }
 template <class T>
 inline T cosKernel(T r) {
   const T z = r * r, z2 = z * z, z4 = z2 * z2;
-  const T q01 = 1.0 / 24 + z * (-1.0 / 720), q23 = 2.48015873015873e-05 + z * -2.755731922398589e-07;
-  const T q45 = 2.08767569878681e-09 + z * -1.1470745597729725e-11;
-  const T q67 = 4.779477332387385e-14 + z * -1.5619206968586225e-16;
-  const T q = (q01 + z2 * q23) + z4 * (q45 + z2 * q67);
-  const T half = 0.5 * z;
-  // 1 - z/2 loses bits when z/2 is near 1/4..1/2; take the exact part first.
-  const T w = 1.0 - half;
-  return w + (((1.0 - w) - half) + z2 * q);
+  return cosFromPolynomial(z, z2, estrin8(z, z2, z4, kCosCoefficients));
+}
+
+// sin and cos of one angle, P in one lane and Q in the other: they share z
+// and its powers, and one register does the work of two scalar polynomials.
+inline constexpr Lanes kSinCosCoefficients[8] = {
+    {kSinCoefficients[0], kCosCoefficients[0]}, {kSinCoefficients[1], kCosCoefficients[1]},
+    {kSinCoefficients[2], kCosCoefficients[2]}, {kSinCoefficients[3], kCosCoefficients[3]},
+    {kSinCoefficients[4], kCosCoefficients[4]}, {kSinCoefficients[5], kCosCoefficients[5]},
+    {kSinCoefficients[6], kCosCoefficients[6]}, {kSinCoefficients[7], kCosCoefficients[7]}};
+inline SinCos sinCosKernel(double r) {
+  const double z = r * r, z2 = z * z, z4 = z2 * z2;
+  const Lanes pq = estrin8(Lanes{z, z}, Lanes{z2, z2}, Lanes{z4, z4}, kSinCosCoefficients);
+  return {sinFromPolynomial(r, z, pq[0]), cosFromPolynomial(z, z2, pq[1])};
 }
 }  // namespace detail
 
 inline SinCos sinCos(double x) {
   using namespace detail;
-  if (std::fabs(x) < kNoReductionLimit) return {sinKernel(x), cosKernel(x)};
+  if (std::fabs(x) < kNoReductionLimit) return sinCosKernel(x);
   if (!(std::fabs(x) < kExactReductionLimit)) return {std::sin(x), std::cos(x)};  // also NaN, Inf
   // Round to nearest by the 1.5 * 2^52 shift: no libm call, same bits
   // everywhere (the build forbids fast-math, so the sum is not folded away).
   const double n = (x * kTwoOverPi + kRoundingShift) - kRoundingShift;
   const double r = ((x - n * kPiOver2Hi) - n * kPiOver2Mid) - n * kPiOver2Lo;
-  const double s = sinKernel(r), c = cosKernel(r);
+  const SinCos k = sinCosKernel(r);
+  const double s = k.sin, c = k.cos;
   switch (static_cast<long>(n) & 3) {
     case 0: return {s, c};
     case 1: return {c, -s};
@@ -83,18 +128,18 @@ inline SinCos sinCos(double x) {
 // Clang vector extensions). The orientation needs three per evaluation.
 inline void sinCos2(double a, double b, SinCos& outA, SinCos& outB) {
   using namespace detail;
-  typedef double Lanes __attribute__((vector_size(16)));
   typedef long long LaneInts __attribute__((vector_size(16)));
-  if (!(std::fabs(a) < kExactReductionLimit && std::fabs(b) < kExactReductionLimit)) {
-    outA = sinCos(a);
-    outB = sinCos(b);
-    return;
-  }
   const Lanes x = {a, b};
+  // The common case first (tilts are mostly small); NaN fails both tests.
   if (std::fabs(a) < kNoReductionLimit && std::fabs(b) < kNoReductionLimit) {
     const Lanes s = sinKernel(x), c = cosKernel(x);
     outA = {s[0], c[0]};
     outB = {s[1], c[1]};
+    return;
+  }
+  if (!(std::fabs(a) < kExactReductionLimit && std::fabs(b) < kExactReductionLimit)) {
+    outA = sinCos(a);
+    outB = sinCos(b);
     return;
   }
   const Lanes n = (x * kTwoOverPi + kRoundingShift) - kRoundingShift;

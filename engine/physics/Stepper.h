@@ -122,10 +122,7 @@ class Stepper {
            system_.autonomous();
   }
 
-  DomainEvent classify(double t, const StateVector<N>& x) const {
-    const bool finite = x.allFinite();
-    return classifyDomain(finite ? system_.margins(t, x) : DomainMargins{0.0, 0.0}, finite);
-  }
+  DomainEvent classify(double t, const StateVector<N>& x) const { return system_.domainEvent(t, x); }
 
   // Bisection on the step length: the largest h' that stays inside. Each probe
   // restarts from the accepted state, so the result is what an integration

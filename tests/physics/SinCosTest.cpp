@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 
 #include "engine/physics/SinCos.h"
 #include "tests/physics/support/TestModel.h"
@@ -45,6 +46,24 @@ TEST(SinCos, ExactAtZeroAndOddEvenSymmetry) {
     const double x = uniform(rng, 0.0, 100.0);
     EXPECT_EQ(physics::sinCos(-x).sin, -physics::sinCos(x).sin);
     EXPECT_EQ(physics::sinCos(-x).cos, physics::sinCos(x).cos);
+  }
+}
+
+// sinCos2 (two angles in the lanes of one register) and sinCos (sine and
+// cosine polynomials of one angle in the two lanes) promise the same bits for
+// an angle, whichever computes it: the physics calls both.
+TEST(SinCos, PairedFormsGiveTheBitsOfEachOther) {
+  std::mt19937_64 rng(5);
+  auto sameBits = [](double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+  for (int i = 0; i < 200000; ++i) {
+    // Small angles (no reduction), the reduction range, and pairs mixing the two.
+    const double a = i % 3 == 0 ? uniform(rng, -0.78, 0.78) : uniform(rng, -1e3, 1e3);
+    const double b = i % 2 == 0 ? uniform(rng, -0.78, 0.78) : uniform(rng, -20.0, 20.0);
+    physics::SinCos pa, pb;
+    physics::sinCos2(a, b, pa, pb);
+    const physics::SinCos sa = physics::sinCos(a), sb = physics::sinCos(b);
+    ASSERT_TRUE(sameBits(pa.sin, sa.sin) && sameBits(pa.cos, sa.cos)) << "angle " << a;
+    ASSERT_TRUE(sameBits(pb.sin, sb.sin) && sameBits(pb.cos, sb.cos)) << "angle " << b;
   }
 }
 
