@@ -12,6 +12,7 @@
 #include <string>
 
 #include "engine/script/ScriptError.h"
+#include "tests/support/ErrorMessage.h"
 #include "tests/support/TempDirectory.h"
 
 namespace hemiroll::script {
@@ -28,23 +29,13 @@ struct BotFile {
 
 std::string loadError(const std::string& source) {
   const BotFile file(source);
-  try {
-    BotScript bot(file.path);
-  } catch (const ScriptError& e) {
-    return e.what();
-  }
-  return "no error";
+  return test::messageOf<ScriptError>([&] { BotScript bot(file.path); });
 }
 
 std::string actError(const std::string& source, const BotObservation& obs = {}) {
   const BotFile file(source);
   BotScript bot(file.path);
-  try {
-    bot.act(obs);
-  } catch (const ScriptError& e) {
-    return e.what();
-  }
-  return "no error";
+  return test::messageOf<ScriptError>([&] { bot.act(obs); });
 }
 
 TEST(BotScript, ActSeesTheObservationAndReturnsThePose) {

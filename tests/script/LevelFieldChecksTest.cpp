@@ -10,6 +10,7 @@
 
 #include "engine/script/LuaSandbox.h"
 #include "engine/script/ScriptError.h"
+#include "tests/support/ErrorMessage.h"
 
 namespace hemiroll::script {
 namespace {
@@ -25,12 +26,7 @@ class LevelFieldChecks : public ::testing::Test {
   }
   template <class F>
   std::string errorOf(F read) {
-    try {
-      read();
-    } catch (const ScriptError& e) {
-      return e.what();
-    }
-    return "no error";
+    return test::messageOf<ScriptError>(read);
   }
   LuaSandbox sandbox_;
 };

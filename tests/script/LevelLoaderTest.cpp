@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "engine/script/ScriptError.h"
+#include "tests/support/ErrorMessage.h"
 #include "tests/support/TempDirectory.h"
 
 namespace hemiroll::script {
@@ -17,14 +18,7 @@ using ::testing::StartsWith;
 
 LoadedLevel load(const std::string& source) { return LevelLoader().loadSource(source, "lv.lua"); }
 
-std::string errorOf(const std::string& source) {
-  try {
-    load(source);
-  } catch (const ScriptError& e) {
-    return e.what();
-  }
-  return "no error";
-}
+std::string errorOf(const std::string& source) { return test::messageOf<ScriptError>([&] { load(source); }); }
 
 const char* kMinimal = "return { name = 'x' }";
 

@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "engine/script/ScriptError.h"
+#include "tests/support/ErrorMessage.h"
 
 namespace hemiroll::script {
 namespace {
@@ -23,12 +24,7 @@ std::unique_ptr<LuaProxyTrajectory> proxyFrom(const std::string& source, const S
 }
 
 std::string errorAt(const physics::ProxyTrajectory& proxy, double t) {
-  try {
-    proxy.at(t);
-  } catch (const ScriptError& e) {
-    return e.what();
-  }
-  return "no error";
+  return test::messageOf<ScriptError>([&] { proxy.at(t); });
 }
 
 TEST(LuaProxyTrajectory, ReturnsPositionAndVelocity) {

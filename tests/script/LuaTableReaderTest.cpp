@@ -9,6 +9,7 @@
 
 #include "engine/script/LuaSandbox.h"
 #include "engine/script/ScriptError.h"
+#include "tests/support/ErrorMessage.h"
 
 namespace hemiroll::script {
 namespace {
@@ -24,12 +25,7 @@ class LuaTableReaderTest : public ::testing::Test {
   }
   template <class Read>
   std::string errorOf(Read read) {
-    try {
-      read();
-    } catch (const ScriptError& e) {
-      return e.what();
-    }
-    return "no error";
+    return test::messageOf<ScriptError>(read);
   }
   LuaSandbox sandbox_;
 };

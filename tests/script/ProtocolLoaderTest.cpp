@@ -11,6 +11,7 @@
 #include <fstream>
 
 #include "engine/script/ScriptError.h"
+#include "tests/support/ErrorMessage.h"
 #include "tests/support/TempDirectory.h"
 
 namespace hemiroll::script {
@@ -33,12 +34,7 @@ class ProtocolLoaderTest : public ::testing::Test {
     return ProtocolLoader(options).loadSource(source, "p.lua", dir_.path().string());
   }
   std::string errorOf(const std::string& source) const {
-    try {
-      load(source);
-    } catch (const ScriptError& e) {
-      return e.what();
-    }
-    return "no error";
+    return test::messageOf<ScriptError>([&] { load(source); });
   }
 
   test::TempDirectory dir_;

@@ -10,6 +10,7 @@
 
 #include "engine/physics/StateLayout.h"
 #include "engine/script/ScriptError.h"
+#include "tests/support/ErrorMessage.h"
 #include "tests/support/TempDirectory.h"
 
 namespace hemiroll::script {
@@ -19,14 +20,7 @@ using ::testing::HasSubstr;
 
 ScenarioDef load(const std::string& source) { return ScenarioLoader().loadSource(source, "s.lua"); }
 
-std::string errorOf(const std::string& source) {
-  try {
-    load(source);
-  } catch (const ScriptError& e) {
-    return e.what();
-  }
-  return "no error";
-}
+std::string errorOf(const std::string& source) { return test::messageOf<ScriptError>([&] { load(source); }); }
 
 TEST(ScenarioLoader, MissingParamsAreThePapers) {
   const ScenarioDef def = load("return {drive = {kind = 'free'}}");

@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "engine/script/ScriptError.h"
+#include "tests/support/ErrorMessage.h"
 
 namespace hemiroll::script {
 namespace {
@@ -26,14 +27,7 @@ const std::string kSource = HEMIROLL_SOURCE_DIR;
 
 SweepDef load(const std::string& source) { return SweepLoader().loadSource(source, "s.lua"); }
 
-std::string errorOf(const std::string& source) {
-  try {
-    load(source);
-  } catch (const ScriptError& e) {
-    return e.what();
-  }
-  return "no error";
-}
+std::string errorOf(const std::string& source) { return test::messageOf<ScriptError>([&] { load(source); }); }
 
 TEST(SweepLoader, MinimalSpecHasThePapersDefaults) {
   const SweepDef d = load("return { axes = { { param = 'k', values = { 8 } } } }");
