@@ -14,5 +14,6 @@
 #include "engine/platform/FrameClock.h"
 #include "engine/platform/InputEvent.h"
 #include "engine/platform/InputTranslator.h"
+#include "engine/platform/KeyNames.h"
 #include "engine/platform/PlatformError.h"
 #include "engine/platform/Window.h"

@@ -36,6 +36,12 @@ std::vector<ScreenTourStop> runScreenTour(App& app, const ScreenTourDef& def) {
   settle(app);
   stop(app, stops);  // title
 
+  app.inject(keyEvent(platform::Key::Other, 's'));
+  settle(app);
+  stop(app, stops);  // settings
+  app.inject(keyEvent(platform::Key::Escape));
+  settle(app);
+
   app.inject(keyEvent(platform::Key::Enter));
   settle(app);
   stop(app, stops);  // level select

@@ -1,6 +1,7 @@
 #pragma once
 // Drives the game through its main screens with synthetic input, the way a
-// player would: title -> (Enter) level select -> (Down.., Enter) play, with
+// player would: title -> (S) settings -> (Escape) title -> (Enter) level
+// select -> (Down.., Enter) play, with
 // a ScriptedMouse taking hold for a while -> (Escape) pause -> (Q) results.
 // One frame is captured at each stop. Used by the screen tests and by
 // `hemiroll play --tour DIR` (the README's screenshots).

@@ -7,6 +7,7 @@
 
 #include "engine/physics/ForceCoupling.h"
 #include "engine/render/RenderScene.h"
+#include "game/app/KeyBindings.h"
 
 namespace hemiroll::game {
 
@@ -29,6 +30,7 @@ struct Settings {
   double orbitYaw = -0.6;      // the orbit camera's heading of the eye [rad] (arrow keys turn it)
   double orbitPitch = 0.55;    // and its elevation [rad], in [0.05, 1.5]
   bool ghost = true;           // race against your best run of a level (its replay, translucent)
+  KeyBindings keys;            // what the keys do while playing
   // Research session (ResearchScreen): who plays, and which session of theirs.
   std::string participant = "player";
   std::string sessionId = "1";

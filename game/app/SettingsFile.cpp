@@ -2,10 +2,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <ctime>
 
+#include "engine/platform/KeyNames.h"
 #include "engine/record/DurableFile.h"
 
 namespace hemiroll::game {
@@ -66,6 +68,37 @@ class Reader {
     if (i < 0) return bad(key, choices(names));
     target = i;
   }
+  // "keys": {"take_hold": "Space", ...}. Each named action takes its key
+  // unless the name is unknown, Escape, or already taken by an action named
+  // before it; then that one keeps its default. Actions not named keep theirs
+  // (or give one up to a named action, by KeyBindings::bind's swap).
+  void keys(KeyBindings& target) {
+    const Json* v = find("keys");
+    if (!v) return;
+    if (!v->is_object()) return bad("keys", "an object of action: key name");
+    KeyBindings wanted;
+    std::vector<std::int32_t> taken;
+    for (int i = 0; i < kKeyActionCount; ++i) {
+      const auto action = static_cast<KeyAction>(i);
+      const std::string id = std::string("keys.") + keyActionInfo(action).id;
+      const auto it = v->find(keyActionInfo(action).id);
+      if (it == v->end()) continue;
+      const std::int32_t code = it->is_string() ? platform::keyFromName(it->get<std::string>()) : 0;
+      if (!KeyBindings::bindable(code)) {
+        bad(id.c_str(), "a key name such as 'Space' or 'H' (not Escape)");
+        continue;
+      }
+      if (std::find(taken.begin(), taken.end(), code) != taken.end()) {
+        bad(id.c_str(), "a key no other action has ('" + it->get<std::string>() + "' is taken)");
+        continue;
+      }
+      taken.push_back(code);
+      wanted.bind(action, code);
+    }
+    for (auto it = v->begin(); it != v->end(); ++it)
+      if (!knownAction(it.key())) notes_.push_back(file_ + ": 'keys." + it.key() + "' is no action; ignored");
+    target = wanted;
+  }
   void identifier(const char* key, std::string& target) {
     const Json* v = find(key);
     if (!v) return;
@@ -80,6 +113,11 @@ class Reader {
     for (char c : s)
       if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_') return false;
     return true;
+  }
+  static bool knownAction(const std::string& id) {
+    for (int i = 0; i < kKeyActionCount; ++i)
+      if (id == keyActionInfo(static_cast<KeyAction>(i)).id) return true;
+    return false;
   }
   const Json* find(const char* key) const {
     const auto it = json_.find(key);
@@ -144,6 +182,7 @@ LoadedSettings loadSettings(const std::filesystem::path& file) {
   r.number("orbit_yaw_rad", s.orbitYaw, -1e3, 1e3, "an angle in radians");
   r.number("orbit_pitch_rad", s.orbitPitch, 0.05, 1.5, "an elevation in 0.05..1.5 rad");
   r.identifier("participant", s.participant);
+  r.keys(s.keys);
   return out;
 }
 
@@ -166,6 +205,12 @@ std::string settingsJson(const Settings& s) {
   json["orbit_yaw_rad"] = s.orbitYaw;
   json["orbit_pitch_rad"] = s.orbitPitch;
   json["participant"] = s.participant;
+  Json keys = Json::object();
+  for (int i = 0; i < kKeyActionCount; ++i) {
+    const auto action = static_cast<KeyAction>(i);
+    keys[keyActionInfo(action).id] = s.keys.keyName(action);
+  }
+  json["keys"] = keys;
   return json.dump(2) + "\n";
 }
 

@@ -6,7 +6,9 @@
 //    "override_coupling": false, "method": "M3", "stiffness_N_per_m": 250,
 //    "damping_N_s_per_m": 10, "alpha": 2, "volume": 0.6, "vsync": true,
 //    "camera": "follow", "zoom": 1, "ghost": true, "orbit_yaw_rad": -0.6,
-//    "orbit_pitch_rad": 0.55, "participant": "player"}
+//    "orbit_pitch_rad": 0.55, "participant": "player",
+//    "keys": {"take_hold": "Space", "let_go": "Backspace", "camera": "Tab",
+//             "orbit_left": "Left", ...}}
 // Reading never fails the game: a missing file gives the defaults; a key
 // with a bad value keeps its default and says so; a file that is not JSON is
 // moved aside (never deleted) and the defaults are used. Writing replaces the

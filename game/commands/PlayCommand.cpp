@@ -97,7 +97,7 @@ std::string playUsage() {
          "  --no-vsync          draw frames as fast as they come\n"
          "  --autoplay SECONDS  a scripted mouse plays LEVEL for SECONDS, then the frame rate\n"
          "                      and the servo loop's timing are printed\n"
-         "  --tour DIR          title, level select (LEVEL picked), play, pause, results as\n"
+         "  --tour DIR          title, settings, level select (LEVEL picked), play, pause, results as\n"
          "                      PNGs in DIR (--autoplay sets the seconds played)\n";
 }
 

@@ -124,7 +124,7 @@ void PlayHud::draw(double fps) {
   ImGui::Separator();
   ImGui::Text("%s, %s", device_.c_str(), method_.c_str());
   switch (r.engagement) {
-    case haptics::Engagement::Disengaged: ImGui::TextColored(kAmber, "click or Space to take hold"); break;
+    case haptics::Engagement::Disengaged: ImGui::TextColored(kAmber, "%s", takeHoldHint_.c_str()); break;
     case haptics::Engagement::Armed: ImGui::TextColored(kAmber, "bring the proxy onto the mass point"); break;
     case haptics::Engagement::Engaged: ImGui::Text("engaged, force %3.0f%%", r.rampScale * 100.0); break;
     case haptics::Engagement::RampingOut: ImGui::Text("letting go %3.0f%%", r.rampScale * 100.0); break;

@@ -47,6 +47,9 @@ class PlayHud {
 
   // Text the HUD names; set when a session starts.
   void setLabels(std::string level, std::string device, std::string method, bool mousePlayer, double faceRadius);
+  // The key that takes hold, by name, for the hint while disengaged.
+  void setTakeHoldKey(const std::string& name) { takeHoldHint_ = "click or " + name + " to take hold"; }
+  const std::string& takeHoldHint() const { return takeHoldHint_; }
   void draw(double fps);
 
   // The ghost's line ("" = none): whose run it is, and how it is going.
@@ -75,6 +78,7 @@ class PlayHud {
   int channel_ = 0;
   double lastPsi_ = 0.0, lastTime_ = -1.0;
   std::string level_, device_, method_, ghost_;
+  std::string takeHoldHint_ = "click or Space to take hold";
   bool mousePlayer_ = true;
   std::optional<double> score_;
   std::array<std::string, kMessages> messages_{};

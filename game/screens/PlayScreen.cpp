@@ -103,6 +103,7 @@ void PlayScreen::begin() {
   hud_.setLabels(title, app_.settings().device,
                  coupling.visualOnly ? "visual only" : physics::forceMethodName(coupling.method), mouse,
                  level_.def.params.radius);
+  hud_.setTakeHoldKey(app_.settings().keys.keyName(KeyAction::TakeHold));
   trace_.clear();
   lastEngagement_ = haptics::Engagement::Disengaged;
   for (const std::string& note : app_.renderer().setProps(propsOf(level_.def))) hud_.addMessage("scene: " + note, 10.0);
@@ -171,32 +172,47 @@ void PlayScreen::input(const platform::InputEvent& e) {
     case InputType::FocusLost: pause(); break;
     case InputType::KeyDown:
       if (e.key == platform::Key::Escape && !e.repeat) pause();
-      // Take hold from the keyboard, as the paper's subjects did (Sec. 4):
-      // the hand stays on the device.
-      if (e.key == platform::Key::Space && !e.repeat) session_->click();
-      turnOrbitCamera(e.key);
-      if (e.key == platform::Key::Tab && !e.repeat) {
-        auto& camera = app_.settings().camera;
-        camera = camera == render::CameraMode::Follow ? render::CameraMode::Top
-                 : camera == render::CameraMode::Top  ? render::CameraMode::Orbit
-                                                      : render::CameraMode::Follow;
-        app_.saveSettings();
-      }
+      if (const std::optional<KeyAction> action = app_.settings().keys.actionOf(e.code)) keyAction(*action, e.repeat);
       break;
     default: break;
   }
 }
 
-// The orbit camera turns with the arrow keys (held keys repeat): the mouse
-// is the proxy's, so it cannot drag the view. Strokes turn with it.
-void PlayScreen::turnOrbitCamera(platform::Key key) {
+// The keys bound in the settings (KeyBindings.h). Taking hold from the
+// keyboard is how the paper's subjects did it (Sec. 4): the hand stays on
+// the device. The orbit camera turns with its keys (held keys repeat): the
+// mouse is the proxy's, so it cannot drag the view; strokes turn with it.
+void PlayScreen::keyAction(KeyAction action, bool repeat) {
   Settings& s = app_.settings();
-  if (s.camera != render::CameraMode::Orbit) return;
   constexpr double kYawStep = 0.1, kPitchStep = 0.05;  // [rad] per key press or repeat
-  if (key == platform::Key::Left) s.orbitYaw -= kYawStep;
-  else if (key == platform::Key::Right) s.orbitYaw += kYawStep;
-  else if (key == platform::Key::Up) s.orbitPitch = std::min(1.5, s.orbitPitch + kPitchStep);
-  else if (key == platform::Key::Down) s.orbitPitch = std::max(0.05, s.orbitPitch - kPitchStep);
+  const bool orbit = s.camera == render::CameraMode::Orbit;
+  switch (action) {
+    case KeyAction::TakeHold:
+      if (!repeat) session_->click();
+      break;
+    case KeyAction::LetGo:
+      if (!repeat) session_->release();
+      break;
+    case KeyAction::CycleCamera:
+      if (repeat) break;
+      s.camera = s.camera == render::CameraMode::Follow ? render::CameraMode::Top
+                 : s.camera == render::CameraMode::Top  ? render::CameraMode::Orbit
+                                                        : render::CameraMode::Follow;
+      app_.saveSettings();
+      break;
+    case KeyAction::OrbitLeft:
+      if (orbit) s.orbitYaw -= kYawStep;
+      break;
+    case KeyAction::OrbitRight:
+      if (orbit) s.orbitYaw += kYawStep;
+      break;
+    case KeyAction::OrbitUp:
+      if (orbit) s.orbitPitch = std::min(1.5, s.orbitPitch + kPitchStep);
+      break;
+    case KeyAction::OrbitDown:
+      if (orbit) s.orbitPitch = std::max(0.05, s.orbitPitch - kPitchStep);
+      break;
+  }
 }
 
 void PlayScreen::update(double dt) {

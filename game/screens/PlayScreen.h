@@ -19,12 +19,14 @@
 // how it went (no results screen, no scores).
 
 #include <functional>
+#include <optional>
 #include <memory>
 #include <string>
 
 #include "engine/render/ContactTrace.h"
 #include "engine/render/RenderScene.h"
 #include "engine/script/LevelLoader.h"
+#include "game/app/KeyBindings.h"
 #include "game/hud/PlayHud.h"
 #include "game/play/PlaySession.h"
 #include "game/play/ReplayPlayer.h"
@@ -71,7 +73,7 @@ class PlayScreen final : public Screen {
  private:
   void begin();
   void loadGhost();
-  void turnOrbitCamera(platform::Key key);
+  void keyAction(KeyAction action, bool repeat);
   void beginSessionTrial(PlaySessionDef& def);
   void endSessionTrial(SessionTrialEnd end);
   void back();

@@ -13,7 +13,64 @@ namespace hemiroll::game {
 void SettingsScreen::leave() { app_.saveSettings(); }
 
 void SettingsScreen::input(const platform::InputEvent& e) {
-  if (e.type == platform::InputType::KeyDown && e.key == platform::Key::Escape && !e.repeat) app_.screens().pop();
+  if (e.type != platform::InputType::KeyDown || e.repeat) return;
+  if (!listening_) {
+    if (e.key == platform::Key::Escape) app_.screens().pop();
+    return;
+  }
+  const KeyAction action = *listening_;
+  listening_.reset();
+  KeyBindings& keys = app_.settings().keys;
+  if (e.key == platform::Key::Escape) {
+    keyNote_ = "unchanged: Escape always pauses and goes back";
+    return;
+  }
+  const std::optional<KeyAction> holder = keys.actionOf(e.code);
+  const std::string old = keys.keyName(action);
+  if (!keys.bind(action, e.code)) {
+    keyNote_ = "unchanged: that key cannot be bound";
+    return;
+  }
+  keyNote_ = std::string(keyActionInfo(action).label) + ": " + keys.keyName(action);
+  if (holder && *holder != action) keyNote_ += " (" + std::string(keyActionInfo(*holder).label) + " took " + old + ")";
+}
+
+void SettingsScreen::listenFor(KeyAction action) {
+  listening_ = action;
+  keyNote_.clear();
+}
+
+void SettingsScreen::paintKeys() {
+  KeyBindings& keys = app_.settings().keys;
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+  ImGui::TextWrapped("mouse: left click takes hold, right click lets go, the wheel sets the proxy's height; "
+                     "Esc pauses (and cannot be changed)");
+  ImGui::PopStyleColor();
+  // Two actions a row, each its name and a button with its key.
+  constexpr float kColumn = 300.0f, kButtonAt = 120.0f, kButtonWidth = 160.0f;
+  for (int i = 0; i < kKeyActionCount; ++i) {
+    const auto action = static_cast<KeyAction>(i);
+    const float left = (i % 2) * kColumn;
+    if (i % 2 == 1) ImGui::SameLine(left);
+    ImGui::PushID(i);
+    ImGui::AlignTextToFramePadding();
+    ImGui::TextUnformatted(keyActionInfo(action).label);
+    ImGui::SameLine(left + kButtonAt);
+    const std::string label = listening_ == action ? "press a key..." : keys.keyName(action);
+    if (ImGui::Button(label.c_str(), ImVec2(kButtonWidth, 0))) listenFor(action);
+    ImGui::PopID();
+  }
+  if (listening_) ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1), "press the key for %s (Esc: cancel)",
+                                     keyActionInfo(*listening_).label);
+  if (ImGui::Button("default keys")) {
+    keys = KeyBindings{};
+    listening_.reset();
+    keyNote_ = "the default keys";
+  }
+  if (!keyNote_.empty()) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("%s", keyNote_.c_str());
+  }
 }
 
 void SettingsScreen::paint() {
@@ -62,8 +119,7 @@ void SettingsScreen::paint() {
 
   ImGui::Separator();
   ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1), "Keys");
-  ImGui::TextDisabled("left click: take hold   right click: let go   wheel: proxy height");
-  ImGui::TextDisabled("Space: take hold   Esc: pause   Tab: camera   arrows: turn the orbit camera");
+  paintKeys();
 
   ImGui::Separator();
   ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1), "Audio");

@@ -1,10 +1,15 @@
 #pragma once
 // Settings: device, force method and gains (the level's, or the player's
-// override), keys (shown), audio volume, graphics (vsync, camera, zoom).
-// Changes apply at once (volume, vsync) or from the next trial (device,
-// coupling, camera), and are saved (settings.json) when the screen is left.
-// Escape goes back.
+// override), keys (each play action's key: click it, press the new one),
+// audio volume, graphics (vsync, camera, zoom). Changes apply at once
+// (volume, vsync, keys) or from the next trial (device, coupling, camera),
+// and are saved (settings.json) when the screen is left. Escape goes back,
+// or cancels a key being changed.
 
+#include <optional>
+#include <string>
+
+#include "game/app/KeyBindings.h"
 #include "game/screens/Screen.h"
 
 namespace hemiroll::game {
@@ -16,6 +21,17 @@ class SettingsScreen final : public Screen {
   void leave() override;
   void input(const platform::InputEvent& e) override;
   void paint() override;
+
+  // The next key pressed is bound to `action` (what its button does).
+  void listenFor(KeyAction action);
+  std::optional<KeyAction> listening() const { return listening_; }
+  const std::string& keyNote() const { return keyNote_; }
+
+ private:
+  void paintKeys();
+
+  std::optional<KeyAction> listening_;
+  std::string keyNote_;  // what the last key change did (a swap, a refusal)
 };
 
 }  // namespace hemiroll::game

@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "engine/platform/KeyNames.h"
 #include "engine/render/Camera.h"
 #include "game/app/App.h"
 #include "game/screens/PlayScreen.h"
@@ -13,10 +14,13 @@
 namespace hemiroll::game {
 namespace {
 
-platform::InputEvent keyDown(platform::Key key) {
+// A key as the window reports it: SDL's code (what the bindings match), and
+// the engine's Key where it has one.
+platform::InputEvent keyDown(platform::Key key, const char* name) {
   platform::InputEvent e;
   e.type = platform::InputType::KeyDown;
   e.key = key;
+  e.code = platform::keyFromName(name);
   return e;
 }
 
@@ -36,8 +40,8 @@ TEST(PlayScreenCameraTest, ArrowKeysTurnTheOrbitCameraAndTheStrokesTurnWithIt) {
   ASSERT_NE(play, nullptr);
   ASSERT_NE(play->session(), nullptr) << play->error();
 
-  for (int i = 0; i < 3; ++i) app.inject(keyDown(platform::Key::Right));
-  app.inject(keyDown(platform::Key::Up));
+  for (int i = 0; i < 3; ++i) app.inject(keyDown(platform::Key::Right, "Right"));
+  app.inject(keyDown(platform::Key::Up, "Up"));
   app.frame();
   EXPECT_NEAR(app.settings().orbitYaw, yaw0 + 0.3, 1e-12);
   EXPECT_NEAR(app.settings().orbitPitch, Settings{}.orbitPitch + 0.05, 1e-12);
@@ -59,7 +63,7 @@ TEST(PlayScreenCameraTest, ArrowKeysTurnTheOrbitCameraAndTheStrokesTurnWithIt) {
 
   // Other cameras ignore the arrows.
   app.settings().camera = render::CameraMode::Follow;
-  app.inject(keyDown(platform::Key::Right));
+  app.inject(keyDown(platform::Key::Right, "Right"));
   app.frame();
   EXPECT_NEAR(app.settings().orbitYaw, yaw0 + 0.3, 1e-12);
 }

@@ -34,7 +34,7 @@ int countColour(const render::Image& image, int r, int g, int b, int tolerance =
   return n;
 }
 
-// title -> level select -> play (a scripted mouse takes hold) -> pause ->
+// title -> settings -> title -> level select -> play (a scripted mouse takes hold) -> pause ->
 // results, driven by the same InputEvents a player makes, in a real window
 // under Xvfb with llvmpipe.
 TEST(ScreenTourTest, TitleLevelsPlayPauseResultsWithSyntheticInput) {
@@ -56,9 +56,9 @@ TEST(ScreenTourTest, TitleLevelsPlayPauseResultsWithSyntheticInput) {
   tour.playSeconds = 1.5;
   const std::vector<ScreenTourStop> stops = runScreenTour(app, tour);
 
-  ASSERT_EQ(stops.size(), 5u);
-  const char* expected[] = {"title", "levels", "play", "pause", "results"};
-  for (std::size_t i = 0; i < 5; ++i) {
+  ASSERT_EQ(stops.size(), 6u);
+  const char* expected[] = {"title", "settings", "levels", "play", "pause", "results"};
+  for (std::size_t i = 0; i < 6; ++i) {
     EXPECT_EQ(stops[i].screen, expected[i]);
     EXPECT_EQ(stops[i].image.width, 1280);
     EXPECT_EQ(stops[i].image.height, 720);
@@ -67,18 +67,20 @@ TEST(ScreenTourTest, TitleLevelsPlayPauseResultsWithSyntheticInput) {
   // pixels with ImGui's built-in font at 3x; half of that leaves room for
   // rasteriser differences, and the other screens have none.
   EXPECT_GT(countColour(stops[0].image, 242, 204, 89), 80);
-  EXPECT_EQ(countColour(stops[1].image, 242, 204, 89), 0);
+  EXPECT_EQ(countColour(stops[2].image, 242, 204, 89), 0);
+  // The settings' section headings are gold too (Device, Force method, Keys, ...).
+  EXPECT_GT(countColour(stops[1].image, 242, 204, 89), 80);
   // The broken level is listed, its error in red (1, 0.5, 0.4); the title has none.
-  EXPECT_GT(countColour(stops[1].image, 255, 128, 102), 100);
+  EXPECT_GT(countColour(stops[2].image, 255, 128, 102), 100);
   EXPECT_EQ(countColour(stops[0].image, 255, 128, 102), 0);
   // The play screen draws the scene: the menus' plain background (0.09, 0.1,
   // 0.13) is gone from the middle of the window.
-  const std::uint8_t* centre = stops[2].image.pixel(640, 360);
+  const std::uint8_t* centre = stops[3].image.pixel(640, 360);
   EXPECT_FALSE(std::abs(centre[0] - 23) < 4 && std::abs(centre[1] - 26) < 4 && std::abs(centre[2] - 33) < 4);
   EXPECT_GT(countColour(stops[0].image, 23, 26, 33, 2), 1280 * 720 / 2);
-  EXPECT_LT(countColour(stops[2].image, 23, 26, 33, 2), 1280 * 720 / 50);
+  EXPECT_LT(countColour(stops[3].image, 23, 26, 33, 2), 1280 * 720 / 50);
   // The HUD's green "in" indicators or red "out" ones are drawn.
-  EXPECT_GT(countColour(stops[2].image, 89, 217, 102) + countColour(stops[2].image, 242, 102, 89), 50);
+  EXPECT_GT(countColour(stops[3].image, 89, 217, 102) + countColour(stops[3].image, 242, 102, 89), 50);
   // The trial quit from the pause screen was stored as one attempt, not completed.
   const std::vector<LevelEntry> levels = scanLevels(def.levelsDir);
   ASSERT_FALSE(levels.empty());

@@ -5,6 +5,7 @@
 
 #include <cstdlib>
 
+#include "engine/platform/KeyNames.h"
 #include "tests/support/TempDirectory.h"
 
 namespace hemiroll::game {
@@ -38,6 +39,8 @@ TEST(SettingsFileTest, EveryFieldRoundTrips) {
   s.orbitYaw = 2.25;
   s.orbitPitch = 1.25;
   s.participant = "P-07";
+  ASSERT_TRUE(s.keys.bind(KeyAction::TakeHold, platform::keyFromName("H")));
+  ASSERT_TRUE(s.keys.bind(KeyAction::OrbitLeft, platform::keyFromName("Keypad 4")));
   const auto file = dir.path() / "nested" / "settings.json";
   ASSERT_EQ(saveSettings(file, s), "");
   const LoadedSettings back = loadSettings(file);
@@ -46,6 +49,9 @@ TEST(SettingsFileTest, EveryFieldRoundTrips) {
   EXPECT_EQ(back.settings.stiffness, 123.25);
   EXPECT_EQ(back.settings.camera, render::CameraMode::Top);
   EXPECT_EQ(back.settings.participant, "P-07");
+  EXPECT_EQ(back.settings.keys, s.keys);
+  EXPECT_EQ(back.settings.keys.keyName(KeyAction::TakeHold), "H");
+  EXPECT_THAT(settingsJson(s), HasSubstr("\"orbit_left\": \"Keypad 4\""));
   // SI units in the key names.
   EXPECT_THAT(settingsJson(s), HasSubstr("\"stiffness_N_per_m\": 123.25"));
 }
@@ -72,6 +78,38 @@ TEST(SettingsFileTest, ABadValueKeepsItsDefaultAndIsNamed) {
                           "'stiffness_N_per_m'"})
     EXPECT_THAT(all, HasSubstr(key));
   EXPECT_THAT(all, HasSubstr("'follow', 'orbit' or 'top'"));
+}
+
+// Keys by name: an unknown name, Escape, or a key an earlier action already
+// has keeps that action's default; the good ones load; an action the game
+// does not have is named and ignored. Whatever the file says, no key ends up
+// doing two things.
+TEST(SettingsFileTest, KeysByNameWithBadOnesNamed) {
+  test::TempDirectory dir;
+  const std::string file = dir.write("settings.json",
+                                     R"({"keys": {"take_hold": "h", "let_go": "Escape", "camera": "H",
+                                                  "orbit_up": "NoSuchKey", "orbit_down": 5, "jump": "J",
+                                                  "orbit_left": "Space"}})");
+  const LoadedSettings loaded = loadSettings(file);
+  const KeyBindings& keys = loaded.settings.keys;
+  const KeyBindings defaults;
+  EXPECT_EQ(keys.keyName(KeyAction::TakeHold), "H");
+  EXPECT_EQ(keys.keyName(KeyAction::OrbitLeft), "Space");
+  // take_hold took the free H (freeing Space), orbit_left then the free Space
+  // (freeing Left); the actions with bad entries keep their defaults.
+  EXPECT_EQ(keys.key(KeyAction::LetGo), defaults.key(KeyAction::LetGo));
+  EXPECT_EQ(keys.key(KeyAction::CycleCamera), defaults.key(KeyAction::CycleCamera));
+  EXPECT_EQ(keys.key(KeyAction::OrbitUp), defaults.key(KeyAction::OrbitUp));
+  EXPECT_EQ(keys.key(KeyAction::OrbitDown), defaults.key(KeyAction::OrbitDown));
+  for (int i = 0; i < kKeyActionCount; ++i)
+    for (int j = i + 1; j < kKeyActionCount; ++j)
+      EXPECT_NE(keys.key(static_cast<KeyAction>(i)), keys.key(static_cast<KeyAction>(j))) << i << " " << j;
+  std::string all;
+  for (const std::string& n : loaded.notes) all += n + "\n";
+  for (const char* key : {"'keys.let_go'", "'keys.camera'", "'keys.orbit_up'", "'keys.orbit_down'", "'keys.jump'"})
+    EXPECT_THAT(all, HasSubstr(key));
+  EXPECT_THAT(all, HasSubstr("'H' is taken"));
+  EXPECT_EQ(loaded.notes.size(), 5u) << all;
 }
 
 TEST(SettingsFileTest, AFileThatIsNotJsonIsMovedAsideNotDeleted) {

@@ -1,0 +1,42 @@
+#include "game/app/KeyBindings.h"
+
+#include "engine/platform/KeyNames.h"
+
+namespace hemiroll::game {
+
+namespace {
+// Space takes hold as in the paper's experiments (Sec. 4): the hand stays on
+// the device. Backspace lets go, away from Space so that a fumble does not
+// undo a take.
+constexpr KeyActionInfo kActions[kKeyActionCount] = {
+    {"take_hold", "take hold", "Space"},  {"let_go", "let go", "Backspace"},
+    {"camera", "next camera", "Tab"},     {"orbit_left", "orbit left", "Left"},
+    {"orbit_right", "orbit right", "Right"}, {"orbit_up", "orbit up", "Up"},
+    {"orbit_down", "orbit down", "Down"}};
+}  // namespace
+
+const KeyActionInfo& keyActionInfo(KeyAction action) { return kActions[static_cast<int>(action)]; }
+
+KeyBindings::KeyBindings() {
+  for (int i = 0; i < kKeyActionCount; ++i) keys_[i] = platform::keyFromName(kActions[i].defaultKey);
+}
+
+std::string KeyBindings::keyName(KeyAction action) const { return platform::keyName(key(action)); }
+
+std::optional<KeyAction> KeyBindings::actionOf(std::int32_t code) const {
+  if (code == 0) return std::nullopt;
+  for (int i = 0; i < kKeyActionCount; ++i)
+    if (keys_[i] == code) return static_cast<KeyAction>(i);
+  return std::nullopt;
+}
+
+bool KeyBindings::bindable(std::int32_t code) { return code != 0 && code != platform::keyFromName("Escape"); }
+
+bool KeyBindings::bind(KeyAction action, std::int32_t code) {
+  if (!bindable(code)) return false;
+  if (const std::optional<KeyAction> holder = actionOf(code)) keys_[index(*holder)] = key(action);
+  keys_[index(action)] = code;
+  return true;
+}
+
+}  // namespace hemiroll::game
