@@ -14,6 +14,7 @@
 #include "game/play/JsonLine.h"
 #include "game/report/Heatmap.h"
 #include "game/sweep/OrderedPool.h"
+#include "game/sweep/PhysicsFingerprint.h"
 #include "game/sweep/SweepError.h"
 #include "game/sweep/SweepMaps.h"
 #include "game/sweep/SweepMerge.h"
@@ -55,7 +56,9 @@ int runSweep(const SweepOptions& o) {
   request.outDir = *o.out;
   request.threads = o.threads > 0 ? o.threads : OrderedPool::defaultThreads();
   request.terminal = isatty(STDERR_FILENO) == 1;
-  request.program = kProgram;
+  // The version and the physics fingerprint: parts merge and resume only
+  // where both agree (PhysicsFingerprint.h).
+  request.program = std::string(kProgram) + " (physics " + physicsFingerprint() + ")";
   const SweepPartReport r = runSweepPart(request);
   const std::size_t maps = o.maps && o.shard.whole() ? writeMaps(request.outDir) : 0;
   const double rate = r.wallSeconds > 0.0 ? static_cast<double>(r.computed) / r.wallSeconds : 0.0;
