@@ -30,7 +30,13 @@ std::optional<KeyAction> KeyBindings::actionOf(std::int32_t code) const {
   return std::nullopt;
 }
 
-bool KeyBindings::bindable(std::int32_t code) { return code != 0 && code != platform::keyFromName("Escape"); }
+// A key must also have a name that finds it again, so that settings.json
+// gives back exactly the keys it was saved with.
+bool KeyBindings::bindable(std::int32_t code) {
+  if (code == 0 || code == platform::keyFromName("Escape")) return false;
+  const std::string name = platform::keyName(code);
+  return !name.empty() && platform::keyFromName(name) == code;
+}
 
 bool KeyBindings::bind(KeyAction action, std::int32_t code) {
   if (!bindable(code)) return false;

@@ -31,7 +31,8 @@ class KeyBindings {
 
   // Binds `code` to `action`. The action that had `code` gets `action`'s old
   // key: a swap, so that no key does two things and no action is left
-  // without one. False (and nothing changed) for Escape or no key.
+  // without one. False (and nothing changed) for Escape, no key, or a key
+  // without a name that finds it again (it could not be saved).
   bool bind(KeyAction action, std::int32_t code);
   static bool bindable(std::int32_t code);
 

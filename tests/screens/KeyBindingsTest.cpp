@@ -58,11 +58,15 @@ TEST(KeyBindingsTest, AKeyAnotherActionHadIsSwapped) {
   EXPECT_EQ(keys, before);
 }
 
-TEST(KeyBindingsTest, EscapeAndNoKeyAreRefused) {
+TEST(KeyBindingsTest, EscapeNoKeyAndNamelessKeysAreRefused) {
   KeyBindings keys;
   const KeyBindings before = keys;
   EXPECT_FALSE(keys.bind(KeyAction::TakeHold, code("Escape")));
   EXPECT_FALSE(keys.bind(KeyAction::LetGo, 0));
+  // A scancode-keycode beyond SDL's table: no name, so it could not be saved.
+  const std::int32_t nameless = (1 << 30) | 499;
+  ASSERT_EQ(platform::keyName(nameless), "");
+  EXPECT_FALSE(keys.bind(KeyAction::CycleCamera, nameless));
   EXPECT_EQ(keys, before);
 }
 
