@@ -14,8 +14,12 @@ function(hemiroll_add_display_test name target labels)
     message(WARNING "xvfb-run not found (tools/install-deps.sh installs xvfb): ${name} needs a display")
     set(command $<TARGET_FILE:${target}>)
   endif()
+  set(environment "LIBGL_ALWAYS_SOFTWARE=1;SDL_AUDIODRIVER=dummy")
+  if(HEMIROLL_SANITIZE)
+    list(APPEND environment "LSAN_OPTIONS=suppressions=${PROJECT_SOURCE_DIR}/cmake/lsan.supp")
+  endif()
   add_test(NAME ${name} COMMAND ${command} --gtest_brief=1)
   set_tests_properties(${name} PROPERTIES
     LABELS "${labels}" TIMEOUT 120 RESOURCE_LOCK xvfb
-    ENVIRONMENT "LIBGL_ALWAYS_SOFTWARE=1;SDL_AUDIODRIVER=dummy")
+    ENVIRONMENT "${environment}")
 endfunction()

@@ -2,34 +2,17 @@
 
 #include <gtest/gtest.h>
 
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <map>
 #include <memory>
-#include <new>
 #include <thread>
 
 #include "engine/haptics/ScriptedDevice.h"
+#include "tests/support/AllocationCounter.h"
 
-// Counts heap allocations while armed, to check that the tick allocates
-// nothing (the replacement covers this whole test executable).
-namespace {
-std::atomic<bool> gCountAllocations{false};
-std::atomic<long> gAllocations{0};
-}  // namespace
-
-// noinline: GCC otherwise inlines these into the standard containers and
-// warns (falsely) that free() meets a pointer from operator new.
-[[gnu::noinline]] void* operator new(std::size_t size) {
-  if (gCountAllocations.load(std::memory_order_relaxed)) gAllocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-[[gnu::noinline]] void operator delete(void* p) noexcept { std::free(p); }
-[[gnu::noinline]] void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace hemiroll::haptics {
 namespace {
@@ -94,19 +77,13 @@ TEST(ServoLoopTest, TheTickDoesNotAllocate) {
   loop.post(command(ServoCommandKind::Engage));
   loop.runHeadless(10);
   // The counter itself works (else the check below would pass vacuously).
-  gCountAllocations = true;
-  {
-    // A direct call through a volatile pointer: a new-expression may be elided.
-    void* volatile probe = ::operator new(16);
-    ::operator delete(probe);
-  }
-  ASSERT_EQ(gAllocations.exchange(0), 1);
+  ASSERT_TRUE(test::allocationCounterWorks());
+  test::AllocationCounter counter;
   ServoCommand gains = command(ServoCommandKind::SetCoupling);
   gains.coupling.method = physics::ForceMethod::M1;
   loop.post(gains);
   loop.runHeadless(1000);  // engaged, ramping, coupled, a command applied
-  gCountAllocations = false;
-  EXPECT_EQ(gAllocations.load(), 0);
+  EXPECT_EQ(counter.count(), 0);
   EXPECT_EQ(loop.safety().engagement().state(), Engagement::Engaged);
 }
 
@@ -123,16 +100,11 @@ TEST(ServoLoopTest, RecordingFromTheTickDoesNotAllocate) {
   ServoLoop loop(def, device);
   loop.post(command(ServoCommandKind::Engage));
   loop.runHeadless(10);
-  gCountAllocations = true;
-  {
-    void* volatile probe = ::operator new(16);
-    ::operator delete(probe);
-  }
-  ASSERT_EQ(gAllocations.exchange(0), 1);
+  ASSERT_TRUE(test::allocationCounterWorks());
   const long ticks = static_cast<long>(RecordRing::capacity()) + 500;  // overflows the row ring
+  test::AllocationCounter counter;
   loop.runHeadless(ticks);
-  gCountAllocations = false;
-  EXPECT_EQ(gAllocations.load(), 0);
+  EXPECT_EQ(counter.count(), 0);
   EXPECT_EQ(loop.recordDropped(), static_cast<std::uint64_t>(ticks + 10) - RecordRing::capacity());
   EXPECT_EQ(loop.inputDropped(), 0u);  // 8192 inputs of room
 }

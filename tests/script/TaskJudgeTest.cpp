@@ -5,31 +5,11 @@
 
 #include <gtest/gtest.h>
 
-#include <atomic>
 #include <cmath>
-#include <cstdlib>
 #include <limits>
-#include <new>
 
 #include "engine/script/TrialSummaryAccumulator.h"
-
-// Counts heap allocations while armed, to check that judging a tick
-// allocates nothing (the replacement covers the whole script_tests program;
-// one per program: add other counters here, not in a second file).
-namespace {
-std::atomic<bool> gCountAllocations{false};
-std::atomic<long> gAllocations{0};
-}  // namespace
-
-// noinline: GCC otherwise inlines these into the standard containers and
-// warns (falsely) that free() meets a pointer from operator new.
-[[gnu::noinline]] void* operator new(std::size_t size) {
-  if (gCountAllocations.load(std::memory_order_relaxed)) gAllocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-[[gnu::noinline]] void operator delete(void* p) noexcept { std::free(p); }
-[[gnu::noinline]] void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+#include "tests/support/AllocationCounter.h"
 
 namespace hemiroll::script {
 namespace {
@@ -307,14 +287,8 @@ TEST(TaskJudge, JudgingATickAllocatesNothing) {
   task.failure.area = area;
   TaskJudge judge(task);
   TrialSummaryAccumulator summary;
-  {  // self-check: the counter sees a direct call (a new-expression may be elided)
-    const bool previous = gCountAllocations.exchange(true);
-    void* volatile probe = ::operator new(16);
-    ::operator delete(probe);
-    gCountAllocations = previous;
-  }
-  ASSERT_EQ(gAllocations.exchange(0), 1);
-  gCountAllocations = true;
+  ASSERT_TRUE(test::allocationCounterWorks());
+  test::AllocationCounter counter;
   JudgeInput in;
   EffortInput effort;
   for (int tick = 0; tick < 400 && !judge.finished(); ++tick) {
@@ -324,8 +298,7 @@ TEST(TaskJudge, JudgingATickAllocatesNothing) {
     judge.judge(in);
     summary.add(in, effort, judge);
   }
-  gCountAllocations = false;
-  EXPECT_EQ(gAllocations.load(), 0);
+  EXPECT_EQ(counter.count(), 0);
   EXPECT_EQ(judge.outcome(), TrialOutcome::Success);  // every path was taken
   EXPECT_EQ(judge.stagesPassed(), 2);
 }

@@ -7,28 +7,12 @@
 
 #include <chrono>
 #include <cstdlib>
-#include <new>
 #include <string>
 #include <thread>
 
 #include "engine/haptics/devices/DeviceFactory.h"
+#include "tests/support/AllocationCounter.h"
 
-// Counts heap allocations made by the calling thread while it is armed (the
-// replacement covers this whole test executable). Thread-local, so the
-// devices' own threads (the bridge's receiver, the joystick's SDL thread)
-// are not charged to the servo-side calls under test.
-namespace {
-thread_local bool tCounting = false;
-thread_local long tAllocations = 0;
-}  // namespace
-
-[[gnu::noinline]] void* operator new(std::size_t size) {
-  if (tCounting) ++tAllocations;
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-[[gnu::noinline]] void operator delete(void* p) noexcept { std::free(p); }
-[[gnu::noinline]] void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace hemiroll::haptics {
 namespace {
@@ -36,28 +20,24 @@ namespace {
 // 1000 ticks' worth of servo-side calls; the allocations they made.
 long allocationsOverTicks(HapticDevice& device, const std::function<void()>& beforeEachTick = {}) {
   device.read(0.0);  // first call outside the count: lazy set-up is allowed at open
-  tAllocations = 0;
+  // The calling thread's only: the devices' own threads (the bridge's
+  // receiver, the joystick's SDL thread) are not charged to the servo side.
+  test::AllocationCounter counter(test::AllocationCounter::Threads::Calling);
+  counter.pause();
   for (int k = 1; k <= 1000; ++k) {
     if (beforeEachTick) beforeEachTick();
-    tCounting = true;
+    counter.resume();
     const DeviceReading r = device.read(k * 0.001);
     const char* e = device.error();
     device.sendForce(Vec3(0.1, -0.2, 0.05));
-    tCounting = false;
+    counter.pause();
     EXPECT_TRUE(r.position.allFinite() && r.velocity.allFinite());
     (void)e;
   }
-  return tAllocations;
+  return counter.count();
 }
 
-TEST(DeviceTickTest, TheCounterCounts) {
-  tAllocations = 0;
-  tCounting = true;
-  void* p = ::operator new(16);  // a direct call: a new-expression may be elided
-  tCounting = false;
-  ::operator delete(p);
-  EXPECT_EQ(tAllocations, 1);
-}
+TEST(DeviceTickTest, TheCounterCounts) { EXPECT_TRUE(test::allocationCounterWorks()); }
 
 TEST(DeviceTickTest, ScriptedSimulatedHandAndMouseAllocateNothingPerTick) {
   const DeviceFactory f;
