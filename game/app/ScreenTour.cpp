@@ -2,6 +2,7 @@
 
 #include <chrono>
 
+#include "engine/platform/KeyNames.h"
 #include "game/app/App.h"
 #include "game/app/ScriptedMouse.h"
 #include "game/screens/LevelSelectScreen.h"
@@ -9,14 +10,6 @@
 namespace hemiroll::game {
 
 namespace {
-
-platform::InputEvent keyEvent(platform::Key key, int code = 0) {
-  platform::InputEvent e;
-  e.type = platform::InputType::KeyDown;
-  e.key = key;
-  e.code = code;
-  return e;
-}
 
 // A few frames let the stack change and the new screen draw itself.
 void settle(App& app, int frames = 3) {
@@ -36,13 +29,13 @@ std::vector<ScreenTourStop> runScreenTour(App& app, const ScreenTourDef& def) {
   settle(app);
   stop(app, stops);  // title
 
-  app.inject(keyEvent(platform::Key::Other, 's'));
+  app.inject(platform::keyDownEvent("S"));
   settle(app);
   stop(app, stops);  // settings
-  app.inject(keyEvent(platform::Key::Escape));
+  app.inject(platform::keyDownEvent("Escape"));
   settle(app);
 
-  app.inject(keyEvent(platform::Key::Enter));
+  app.inject(platform::keyDownEvent("Return"));
   settle(app);
   stop(app, stops);  // level select
 
@@ -50,11 +43,11 @@ std::vector<ScreenTourStop> runScreenTour(App& app, const ScreenTourDef& def) {
   if (auto* select = dynamic_cast<LevelSelectScreen*>(app.screens().top())) {
     for (std::size_t i = 0; i < select->entries().size(); ++i) {
       if (select->entries()[static_cast<std::size_t>(select->selected())].path == def.level) break;
-      app.inject(keyEvent(platform::Key::Down));
+      app.inject(platform::keyDownEvent("Down"));
       app.frame();
     }
   }
-  app.inject(keyEvent(platform::Key::Enter));
+  app.inject(platform::keyDownEvent("Return"));
   settle(app, 2);
 
   ScriptedMouse mouse;
@@ -67,11 +60,11 @@ std::vector<ScreenTourStop> runScreenTour(App& app, const ScreenTourDef& def) {
   }
   stop(app, stops);  // play
 
-  app.inject(keyEvent(platform::Key::Escape));
+  app.inject(platform::keyDownEvent("Escape"));
   settle(app);
   stop(app, stops);  // pause
 
-  app.inject(keyEvent(platform::Key::Other, 'q'));
+  app.inject(platform::keyDownEvent("Q"));
   settle(app);
   stop(app, stops);  // results
   return stops;

@@ -25,5 +25,18 @@ TEST(KeyNamesTest, LettersInEitherCaseAndUnknownNames) {
   EXPECT_EQ(keyName(0), "");
 }
 
+// Synthetic key presses are made as the window makes real ones.
+TEST(KeyNamesTest, KeyDownEventsAsTheWindowGivesThem) {
+  InputEvent e = keyDownEvent("Return");
+  EXPECT_EQ(e.type, InputType::KeyDown);
+  EXPECT_EQ(e.key, Key::Enter);
+  EXPECT_EQ(e.code, SDLK_RETURN);
+  EXPECT_FALSE(e.repeat);
+  e = keyDownEvent("Q");
+  EXPECT_EQ(e.key, Key::Other);
+  EXPECT_EQ(e.code, SDLK_q);
+  EXPECT_EQ(keyDownEvent("Escape").key, Key::Escape);
+}
+
 }  // namespace
 }  // namespace hemiroll::platform

@@ -15,15 +15,6 @@
 namespace hemiroll::game {
 namespace {
 
-// A key as the window reports it: SDL's code, and the engine's Key where it has one.
-platform::InputEvent keyDown(const char* name, platform::Key key = platform::Key::Other) {
-  platform::InputEvent e;
-  e.type = platform::InputType::KeyDown;
-  e.key = key;
-  e.code = platform::keyFromName(name);
-  return e;
-}
-
 // Frames until the servo loop's snapshot shows `wanted`, for up to 2 s (the
 // command takes a tick or two; the margin is for a loaded machine).
 bool frameUntil(App& app, PlayScreen& play, haptics::Engagement wanted) {
@@ -51,17 +42,17 @@ TEST(PlayKeysTest, AKeyChangedInTheSettingsIsTheOneThatPlays) {
   ASSERT_NE(settings, nullptr);
   settings->listenFor(KeyAction::TakeHold);
   app.frame();
-  app.inject(keyDown("H"));
+  app.inject(platform::keyDownEvent("H"));
   app.frame();
   EXPECT_FALSE(settings->listening().has_value());
   EXPECT_EQ(app.settings().keys.keyName(KeyAction::TakeHold), "H");
   settings->listenFor(KeyAction::LetGo);
-  app.inject(keyDown("Escape", platform::Key::Escape));
+  app.inject(platform::keyDownEvent("Escape"));
   app.frame();
   app.frame();  // screen changes asked for in a frame apply at the start of the next
   ASSERT_EQ(app.screens().top(), settings) << "Escape while choosing a key left the screen";
   EXPECT_EQ(app.settings().keys.keyName(KeyAction::LetGo), "Backspace");
-  app.inject(keyDown("Escape", platform::Key::Escape));
+  app.inject(platform::keyDownEvent("Escape"));
   app.frame();
   app.frame();
   EXPECT_NE(app.screens().top(), settings);
@@ -75,16 +66,16 @@ TEST(PlayKeysTest, AKeyChangedInTheSettingsIsTheOneThatPlays) {
 
   // Space is free now: it does nothing. H takes hold (the proxy starts on the mass point).
   // (A taking hold shows within a tick or two, as Armed or ramping in.)
-  app.inject(keyDown("Space", platform::Key::Space));
+  app.inject(platform::keyDownEvent("Space"));
   for (int i = 0; i < 20; ++i) {
     app.frame();
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
   EXPECT_EQ(play->session()->snapshot().engagement, haptics::Engagement::Disengaged);
-  app.inject(keyDown("H"));
+  app.inject(platform::keyDownEvent("H"));
   EXPECT_TRUE(frameUntil(app, *play, haptics::Engagement::Engaged));
   // Backspace lets go (the ramp out ends disengaged).
-  app.inject(keyDown("Backspace", platform::Key::Backspace));
+  app.inject(platform::keyDownEvent("Backspace"));
   EXPECT_TRUE(frameUntil(app, *play, haptics::Engagement::Disengaged));
 }
 

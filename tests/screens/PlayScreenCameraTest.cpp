@@ -14,16 +14,6 @@
 namespace hemiroll::game {
 namespace {
 
-// A key as the window reports it: SDL's code (what the bindings match), and
-// the engine's Key where it has one.
-platform::InputEvent keyDown(platform::Key key, const char* name) {
-  platform::InputEvent e;
-  e.type = platform::InputType::KeyDown;
-  e.key = key;
-  e.code = platform::keyFromName(name);
-  return e;
-}
-
 TEST(PlayScreenCameraTest, ArrowKeysTurnTheOrbitCameraAndTheStrokesTurnWithIt) {
   test::TempDirectory dir;
   AppDef def;
@@ -40,8 +30,8 @@ TEST(PlayScreenCameraTest, ArrowKeysTurnTheOrbitCameraAndTheStrokesTurnWithIt) {
   ASSERT_NE(play, nullptr);
   ASSERT_NE(play->session(), nullptr) << play->error();
 
-  for (int i = 0; i < 3; ++i) app.inject(keyDown(platform::Key::Right, "Right"));
-  app.inject(keyDown(platform::Key::Up, "Up"));
+  for (int i = 0; i < 3; ++i) app.inject(platform::keyDownEvent("Right"));
+  app.inject(platform::keyDownEvent("Up"));
   app.frame();
   EXPECT_NEAR(app.settings().orbitYaw, yaw0 + 0.3, 1e-12);
   EXPECT_NEAR(app.settings().orbitPitch, Settings{}.orbitPitch + 0.05, 1e-12);
@@ -63,7 +53,7 @@ TEST(PlayScreenCameraTest, ArrowKeysTurnTheOrbitCameraAndTheStrokesTurnWithIt) {
 
   // Other cameras ignore the arrows.
   app.settings().camera = render::CameraMode::Follow;
-  app.inject(keyDown(platform::Key::Right, "Right"));
+  app.inject(platform::keyDownEvent("Right"));
   app.frame();
   EXPECT_NEAR(app.settings().orbitYaw, yaw0 + 0.3, 1e-12);
 }

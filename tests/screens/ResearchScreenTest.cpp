@@ -14,6 +14,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "engine/platform/KeyNames.h"
 #include "engine/record/DurableFile.h"
 #include "engine/record/RecordingReader.h"
 #include "engine/record/ResultsFile.h"
@@ -36,14 +37,6 @@ std::string readFile(const std::string& path) {
   std::stringstream s;
   s << in.rdbuf();
   return s.str();
-}
-
-platform::InputEvent key(platform::Key k, int code = 0) {
-  platform::InputEvent e;
-  e.type = platform::InputType::KeyDown;
-  e.key = k;
-  e.code = code;
-  return e;
 }
 
 void frames(App& app, int n) {
@@ -92,19 +85,19 @@ TEST(ResearchScreenTest, AProtocolRunsFromTheResearchScreenIntoItsSessionFolder)
   app.settings().participant = "tester";
   frames(app, 3);
 
-  app.inject(key(platform::Key::Other, 'r'));
+  app.inject(platform::keyDownEvent("R"));
   frames(app, 3);
   ASSERT_STREQ(app.topScreen(), "research");
   auto* research = dynamic_cast<ResearchScreen*>(app.screens().top());
   ASSERT_NE(research, nullptr);
   ASSERT_EQ(research->protocols().size(), 2u);
   EXPECT_THAT(research->protocols()[0].error, HasSubstr("broken.lua:1: blocks: missing"));
-  app.inject(key(platform::Key::Down));  // to two.lua
+  app.inject(platform::keyDownEvent("Down"));  // to two.lua
   frames(app, 2);
   EXPECT_THAT(research->status(), HasSubstr("a new session of 2 trials"));
   ASSERT_TRUE(research->canStart());
 
-  app.inject(key(platform::Key::Enter));
+  app.inject(platform::keyDownEvent("Return"));
   frames(app, 3);
   ASSERT_STREQ(app.topScreen(), "session");
   auto* session = dynamic_cast<SessionScreen*>(app.screens().top());
@@ -112,7 +105,7 @@ TEST(ResearchScreenTest, AProtocolRunsFromTheResearchScreenIntoItsSessionFolder)
   ASSERT_EQ(session->stage(), SessionScreen::Stage::Ready) << session->error();
 
   // Trial 1: the scripted mouse takes hold and circles until the time limit.
-  app.inject(key(platform::Key::Enter));
+  app.inject(platform::keyDownEvent("Return"));
   ASSERT_TRUE(playUntil(app, "play", 2.0));
   ScriptedMouse mouse;
   ASSERT_TRUE(playUntil(app, "session", 10.0, &mouse)) << "the trial did not end at its time limit";
@@ -121,7 +114,7 @@ TEST(ResearchScreenTest, AProtocolRunsFromTheResearchScreenIntoItsSessionFolder)
   EXPECT_THAT(session->log()[0], HasSubstr("trial-001: failure, time limit reached"));
   // The break holds the next trial for its minimum.
   EXPECT_EQ(session->stage(), SessionScreen::Stage::Break);
-  app.inject(key(platform::Key::Enter));
+  app.inject(platform::keyDownEvent("Return"));
   frames(app, 2);
   EXPECT_STREQ(app.topScreen(), "session") << "a trial started during the break";
   const auto breakStart = std::chrono::steady_clock::now();
@@ -131,15 +124,15 @@ TEST(ResearchScreenTest, AProtocolRunsFromTheResearchScreenIntoItsSessionFolder)
   ASSERT_EQ(session->stage(), SessionScreen::Stage::Ready);
 
   // Trial 2: paused and quit, which ends it as a failure that is recorded too.
-  app.inject(key(platform::Key::Enter));
+  app.inject(platform::keyDownEvent("Return"));
   ASSERT_TRUE(playUntil(app, "play", 2.0));
   const auto* play = dynamic_cast<const PlayScreen*>(app.screens().top());
   ASSERT_NE(play, nullptr);
   EXPECT_THAT(play->hud().title(), HasSubstr("trial 2 of 2: "));  // where the player is in the plan
   frames(app, 20);
-  app.inject(key(platform::Key::Escape));
+  app.inject(platform::keyDownEvent("Escape"));
   ASSERT_TRUE(playUntil(app, "pause", 2.0));
-  app.inject(key(platform::Key::Other, 'q'));
+  app.inject(platform::keyDownEvent("Q"));
   ASSERT_TRUE(playUntil(app, "session", 5.0));
   ASSERT_EQ(session->log().size(), 2u);
   EXPECT_THAT(session->log()[1], HasSubstr("trial-002: failure, quit by the player"));
@@ -177,7 +170,7 @@ TEST(ResearchScreenTest, AProtocolRunsFromTheResearchScreenIntoItsSessionFolder)
   EXPECT_EQ(record::RecordingReader::load(folder / "trial-002.csv").meta.coupling.method, physics::ForceMethod::M2);
 
   // Back on the research screen the session shows as complete.
-  app.inject(key(platform::Key::Escape));
+  app.inject(platform::keyDownEvent("Escape"));
   frames(app, 3);
   ASSERT_STREQ(app.topScreen(), "research");
   EXPECT_THAT(research->status(), HasSubstr("this session is complete"));

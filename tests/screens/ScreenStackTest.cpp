@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/platform/KeyNames.h"
 #include "game/app/App.h"
 #include "tests/support/TempDirectory.h"
 
@@ -74,10 +75,7 @@ TEST(ScreenStackTest, TheAppStartsOnTheTitleAndQuitsOnEscape) {
   App app(def);
   EXPECT_STREQ(app.topScreen(), "title");
   EXPECT_TRUE(app.frame());
-  platform::InputEvent esc;
-  esc.type = platform::InputType::KeyDown;
-  esc.key = platform::Key::Escape;
-  app.inject(esc);
+  app.inject(platform::keyDownEvent("Escape"));
   app.frame();
   EXPECT_FALSE(app.frame());
 }

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "engine/platform/KeyNames.h"
 #include "game/app/App.h"
 #include "game/screens/LevelSelectScreen.h"
 #include "game/screens/ReplayScreen.h"
@@ -89,17 +90,13 @@ TEST(ScreenTourTest, TitleLevelsPlayPauseResultsWithSyntheticInput) {
   EXPECT_FALSE(best.bestTime);
 
   // Results: keep the replay (S), then watch it (W) through ReplayDevice.
-  platform::InputEvent key;
-  key.type = platform::InputType::KeyDown;
-  key.code = 's';
-  app.inject(key);
+  app.inject(platform::keyDownEvent("S"));
   app.frame();
   int saved = 0;
   for (const auto& f : std::filesystem::directory_iterator(dir.path() / "replays"))
     saved += f.path().extension() == ".hrr" && f.path().filename() != "last-trial.hrr";
   EXPECT_EQ(saved, 1);
-  key.code = 'w';
-  app.inject(key);
+  app.inject(platform::keyDownEvent("W"));
   for (int i = 0; i < 10; ++i) app.frame();
   EXPECT_STREQ(app.topScreen(), "replay");
   auto* replay = dynamic_cast<ReplayScreen*>(app.screens().top());
