@@ -8,21 +8,15 @@
 #include "game/analysis/AnalysisOutput.h"
 #include "game/analysis/TrialLoader.h"
 #include "game/commands/AnalyzeOptions.h"
+#include "game/commands/CommandUsage.h"
 #include "game/commands/ExitCode.h"
 
 namespace hemiroll::game {
 
 int runAnalyzeCommand(const std::vector<std::string>& args) {
   const AnalyzeOptionsResult parsed = parseAnalyzeOptions(args);
-  if (!parsed.error.empty()) {
-    std::cerr << "hemiroll analyze: " << parsed.error << "\n\n" << analyzeUsage();
-    return kExitUsage;
-  }
+  if (const std::optional<int> exit = exitBeforeRunning("hemiroll analyze: ", parsed, analyzeUsage())) return *exit;
   const AnalyzeOptions& o = parsed.options;
-  if (o.help) {
-    std::cout << analyzeUsage();
-    return kExitOk;
-  }
 
   // Everything is read and measured before anything is written: bad input
   // leaves no output behind.

@@ -15,6 +15,7 @@
 #include "game/app/ScriptedMouse.h"
 #include "engine/render/Image.h"
 #include "game/cli/ArgumentReader.h"
+#include "game/commands/CommandUsage.h"
 #include "game/commands/ExitCode.h"
 #include "game/screens/PlayScreen.h"
 
@@ -128,15 +129,8 @@ PlayOptionsResult parsePlayOptions(const std::vector<std::string>& args) {
 
 int runPlayCommand(const std::vector<std::string>& args) {
   const PlayOptionsResult parsed = parsePlayOptions(args);
-  if (!parsed.error.empty()) {
-    std::cerr << kPrefix << parsed.error << "\n\n" << playUsage();
-    return kExitUsage;
-  }
+  if (const std::optional<int> exit = exitBeforeRunning(kPrefix, parsed, playUsage())) return *exit;
   const PlayOptions& o = parsed.options;
-  if (o.help) {
-    std::cout << playUsage();
-    return kExitOk;
-  }
   if (!haveDisplay()) {
     std::cerr << playNoDisplayMessage("DISPLAY is not set") << "\n";
     return kExitUsage;

@@ -9,6 +9,7 @@
 #include "engine/script/BotScript.h"
 #include "engine/script/LevelLoader.h"
 #include "engine/script/ScriptError.h"
+#include "game/commands/CommandUsage.h"
 #include "game/commands/ExitCode.h"
 #include "game/commands/RunOptions.h"
 #include "game/play/HeadlessTrial.h"
@@ -76,15 +77,8 @@ std::string resultLine(const RunOptions& o, const TrialResult& r) {
 
 int runRunCommand(const std::vector<std::string>& args) {
   const RunOptionsResult parsed = parseRunOptions(args);
-  if (!parsed.error.empty()) {
-    std::cerr << "hemiroll run: " << parsed.error << "\n\n" << runUsage();
-    return kExitUsage;
-  }
+  if (const std::optional<int> exit = exitBeforeRunning("hemiroll run: ", parsed, runUsage())) return *exit;
   const RunOptions& options = parsed.options;
-  if (options.help) {
-    std::cout << runUsage();
-    return kExitOk;
-  }
 
   script::LoadedLevel level;
   std::unique_ptr<script::BotScript> bot;

@@ -16,6 +16,7 @@
 #include "engine/render/Renderer.h"
 #include "engine/script/LevelLoader.h"
 #include "engine/script/ScriptError.h"
+#include "game/commands/CommandUsage.h"
 #include "game/commands/ExitCode.h"
 #include "game/commands/ScreenshotOptions.h"
 #include "game/view/AssetsDirectory.h"
@@ -61,15 +62,8 @@ double timeFrames(render::Renderer& renderer, const render::RenderScene& scene, 
 
 int runScreenshotCommand(const std::vector<std::string>& args) {
   const ScreenshotOptionsResult parsed = parseScreenshotOptions(args);
-  if (!parsed.error.empty()) {
-    std::cerr << kPrefix << parsed.error << "\n\n" << screenshotUsage();
-    return kExitUsage;
-  }
+  if (const std::optional<int> exit = exitBeforeRunning(kPrefix, parsed, screenshotUsage())) return *exit;
   const ScreenshotOptions& o = parsed.options;
-  if (o.help) {
-    std::cout << screenshotUsage();
-    return kExitOk;
-  }
 
   script::LoadedLevel level;
   try {

@@ -7,6 +7,7 @@
 
 #include "engine/script/BotScript.h"
 #include "engine/script/ScriptError.h"
+#include "game/commands/CommandUsage.h"
 #include "game/commands/ExitCode.h"
 #include "game/commands/SessionOptions.h"
 #include "game/play/HeadlessTrial.h"
@@ -90,15 +91,8 @@ TrialResult playNext(ResearchSession& session, const std::string& botPath) {
 
 int runSessionCommand(const std::vector<std::string>& args) {
   const SessionOptionsResult parsed = parseSessionOptions(args);
-  if (!parsed.error.empty()) {
-    std::cerr << "hemiroll session: " << parsed.error << "\n\n" << sessionUsage();
-    return kExitUsage;
-  }
+  if (const std::optional<int> exit = exitBeforeRunning("hemiroll session: ", parsed, sessionUsage())) return *exit;
   const SessionOptions& o = parsed.options;
-  if (o.help) {
-    std::cout << sessionUsage();
-    return kExitOk;
-  }
   if (!o.botPath)
     return fail(kExitUsage,
                 "people play sessions in the game window: run `hemiroll play`, open Research session (R), pick "

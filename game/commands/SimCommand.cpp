@@ -10,6 +10,7 @@
 #include "engine/physics/RotationDrivenSystem.h"
 #include "engine/script/ScenarioLoader.h"
 #include "engine/script/ScriptError.h"
+#include "game/commands/CommandUsage.h"
 #include "game/commands/ExitCode.h"
 #include "game/commands/SimOptions.h"
 #include "game/sim/CsvTrajectoryWriter.h"
@@ -69,15 +70,8 @@ class OutputFile {
 
 int runSimCommand(const std::vector<std::string>& args) {
   const SimOptionsResult parsed = parseSimOptions(args);
-  if (!parsed.error.empty()) {
-    std::cerr << "hemiroll sim: " << parsed.error << "\n\n" << simUsage();
-    return kExitUsage;
-  }
+  if (const std::optional<int> exit = exitBeforeRunning("hemiroll sim: ", parsed, simUsage())) return *exit;
   const SimOptions& options = parsed.options;
-  if (options.help) {
-    std::cout << simUsage();
-    return kExitOk;
-  }
   if (options.listIntegrators) {
     listIntegrators();
     return kExitOk;

@@ -9,6 +9,7 @@
 #include "engine/script/ScriptError.h"
 #include "engine/script/SweepLoader.h"
 #include "game/analysis/AnalysisOutput.h"
+#include "game/commands/CommandUsage.h"
 #include "game/commands/ExitCode.h"
 #include "game/commands/SweepOptions.h"
 #include "game/play/JsonLine.h"
@@ -130,15 +131,8 @@ int runMap(const SweepOptions& o) {
 
 int runSweepCommand(const std::vector<std::string>& args) {
   const SweepOptionsResult parsed = parseSweepOptions(args);
-  if (!parsed.error.empty()) {
-    std::cerr << "hemiroll sweep: " << parsed.error << "\n\n" << sweepUsage();
-    return kExitUsage;
-  }
+  if (const std::optional<int> exit = exitBeforeRunning("hemiroll sweep: ", parsed, sweepUsage())) return *exit;
   const SweepOptions& o = parsed.options;
-  if (o.help) {
-    std::cout << sweepUsage();
-    return kExitOk;
-  }
   try {
     switch (o.action) {
       case SweepAction::Run: return runSweep(o);
