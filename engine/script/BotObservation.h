@@ -31,6 +31,8 @@ struct BotObservation {
   std::array<double, 12> target{};
   std::array<double, 12> tolerance{};
   std::array<bool, 12> targetSet{};
+  bool omegaNormSet = false;         // a band on |omega| (not one of the twelve slots)
+  double omegaNormTarget = 0.0, omegaNormTolerance = 0.0;  // [rad/s]
   double timeLimit = 0.0;            // [s]; 0 = none
   double holdTime = 0.0;             // how long the target must hold [s]
   double held = 0.0;                 // how long it has held so far [s]

@@ -27,17 +27,12 @@
 #include <string>
 
 #include "engine/script/BotObservation.h"
+#include "engine/script/BotPolicy.h"
 #include "engine/script/LuaSandbox.h"
 
 namespace hemiroll::script {
 
 struct ObservationViews;  // BotScript.cpp
-
-struct BotAction {
-  Triple3 position{};  // proxy, scene [m]
-  Triple3 velocity{};  // proxy velocity, scene [m/s]; meaningful only when hasVelocity
-  bool hasVelocity = false;
-};
 
 struct BotLoadOptions {
   SandboxLimits limits;
@@ -48,7 +43,7 @@ struct BotLoadOptions {
   std::uint64_t seed = 0;  // hemiroll.random's seed (also passed to init)
 };
 
-class BotScript {
+class BotScript final : public BotPolicy {
  public:
   // Loads and checks the bot file (throws ScriptError: "bot.lua: act: missing").
   explicit BotScript(const std::string& path, const BotLoadOptions& options = {});
@@ -56,14 +51,14 @@ class BotScript {
   BotScript(const BotScript&) = delete;
   BotScript& operator=(const BotScript&) = delete;
 
-  const std::string& name() const { return name_; }
+  const std::string& name() const override { return name_; }
   const std::string& path() const { return path_; }
   LuaSandbox& sandbox() { return *sandbox_; }
 
   // Calls init(level_info, seed) when the bot has one.
-  void init(const BotLevelInfo& info, std::int64_t seed);
+  void init(const BotLevelInfo& info, std::int64_t seed) override;
   // Calls act(obs.time, obs) with obs reading `obs` (only during this call).
-  BotAction act(const BotObservation& obs);
+  BotAction act(const BotObservation& obs) override;
 
  private:
   void buildObservation();

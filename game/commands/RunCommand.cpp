@@ -12,6 +12,7 @@
 #include "game/commands/CommandUsage.h"
 #include "game/commands/ExitCode.h"
 #include "game/commands/RunOptions.h"
+#include "game/play/AutopilotBot.h"
 #include "game/play/HeadlessTrial.h"
 #include "game/play/JsonLine.h"
 #include "game/play/ReplayCapture.h"
@@ -81,14 +82,20 @@ int runRunCommand(const std::vector<std::string>& args) {
   const RunOptions& options = parsed.options;
 
   script::LoadedLevel level;
-  std::unique_ptr<script::BotScript> bot;
+  std::unique_ptr<script::BotPolicy> bot;
   try {
     script::LevelLoadOptions levelOptions;
     levelOptions.seed = options.seed;
     level = script::LevelLoader(levelOptions).loadFile(options.levelPath);
-    script::BotLoadOptions botOptions;
-    botOptions.seed = options.seed;
-    bot = std::make_unique<script::BotScript>(options.botPath, botOptions);
+    if (options.botPath == kAutopilotBotName) {
+      AutopilotBotOptions autopilotOptions;
+      autopilotOptions.budget = options.autopilotBudget;
+      bot = std::make_unique<AutopilotBot>(autopilotOptions);
+    } else {
+      script::BotLoadOptions botOptions;
+      botOptions.seed = options.seed;
+      bot = std::make_unique<script::BotScript>(options.botPath, botOptions);
+    }
   } catch (const script::ScriptError& e) {
     return badInput(e.what());
   }

@@ -5,14 +5,18 @@
 namespace hemiroll::game {
 
 const char* runUsage() {
-  return "usage: hemiroll run LEVEL.lua --bot BOT.lua [--seed N] [--record DIR] [--realtime]\n"
+  return "usage: hemiroll run LEVEL.lua --bot BOT.lua|autopilot [--seed N] [--record DIR] [--realtime]\n"
+         "                    [--autopilot-budget X]\n"
          "\n"
          "Plays a level with a bot (a Lua module, e.g. scripts/bots/rose.lua) and prints one\n"
          "JSON line: level, bot, outcome, reason, time, score, medal, ticks, wall_time\n"
          "(docs/RUN.md). Headless and as fast as the CPU allows unless --realtime;\n"
          "the same level, bot and seed give the same result bit for bit.\n"
          "\n"
-         "  --bot BOT.lua   the bot that plays (required)\n"
+         "  --bot BOT.lua   the bot that plays (required); \"autopilot\" is the built-in\n"
+         "                  planner (docs/AUTOPILOT.md)\n"
+         "  --autopilot-budget X  the autopilot's planning effort, 0.25 to 4 (default 1):\n"
+         "                  more tries per decision and a longer look ahead\n"
          "  --seed N        seed of the level's and the bot's hemiroll.random and the\n"
          "                  bot's init (0 .. 9223372036854775807; default 0)\n"
          "  --record DIR    record the trial into DIR (per-trial CSV + JSON sidecar and\n"
@@ -34,12 +38,15 @@ RunOptionsResult parseRunOptions(const std::vector<std::string>& args) {
       .positional("level file", 1, [&](const std::string& path) { o.levelPath = path; })
       .option("--bot", cli::text(o.botPath, "a bot file"))
       .option("--record", cli::text(o.recordDir, "a directory"))
+      .option("--autopilot-budget", cli::positiveNumber(o.autopilotBudget, "a planning effort from 0.25 to 4"))
       // Lua integers are signed 64-bit, and the bot receives the seed as one.
       .option("--seed", cli::unsignedUpTo(o.seed, 0x7fffffffffffffffULL, "a whole number from 0 to 9223372036854775807"));
   result.error = reader.read(args);
   if (!result.error.empty() || o.help) return result;
   if (o.levelPath.empty()) result.error = "missing the level file";
   else if (o.botPath.empty()) result.error = "missing --bot BOT.lua";
+  else if (o.autopilotBudget < 0.25 || o.autopilotBudget > 4.0)
+    result.error = "--autopilot-budget needs a planning effort from 0.25 to 4";
   return result;
 }
 

@@ -10,7 +10,8 @@ namespace hemiroll::game {
 
 struct RunOptions {
   std::string levelPath;
-  std::string botPath;                     // --bot (required)
+  std::string botPath;                     // --bot (required): a Lua file, or "autopilot"
+  double autopilotBudget = 1.0;            // --autopilot-budget: planning effort, 0.25 .. 4
   std::uint64_t seed = 0;                  // --seed: 0 .. 2^63 - 1
   std::optional<std::string> recordDir;    // --record DIR
   bool realtime = false;                   // --realtime

@@ -10,6 +10,7 @@
 #include "game/commands/CommandUsage.h"
 #include "game/commands/ExitCode.h"
 #include "game/commands/SessionOptions.h"
+#include "engine/script/BotScript.h"
 #include "game/play/HeadlessTrial.h"
 #include "game/play/JsonLine.h"
 #include "game/research/ResearchSession.h"

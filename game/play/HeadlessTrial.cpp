@@ -21,7 +21,7 @@ physics::Vec3 vec(const haptics::Triple& t) { return {t[0], t[1], t[2]}; }
 
 }  // namespace
 
-HeadlessTrial::HeadlessTrial(script::LoadedLevel& level, script::BotScript& bot, const TrialSettings& settings)
+HeadlessTrial::HeadlessTrial(script::LoadedLevel& level, script::BotPolicy& bot, const TrialSettings& settings)
     : level_(level), bot_(bot), settings_(settings) {}
 
 haptics::DeviceSpec HeadlessTrial::deviceSpec() {
@@ -107,6 +107,11 @@ TrialResult HeadlessTrial::run() {
       action = bot_.act(obs);
     } catch (const script::ScriptError& e) {
       judge.finish(TrialOutcome::Failure, std::string("bot error: ") + e.what(), loop.time());
+      levelScript.update(levelView, judge);  // on_fail
+      break;
+    }
+    if (std::string why = bot_.giveUpReason(); !why.empty()) {
+      judge.finish(TrialOutcome::Failure, why, loop.time());
       levelScript.update(levelView, judge);  // on_fail
       break;
     }

@@ -24,7 +24,7 @@
 
 #include "engine/haptics/ServoLoop.h"
 #include "engine/physics/StateLayout.h"
-#include "engine/script/BotScript.h"
+#include "engine/script/BotPolicy.h"
 #include "engine/script/LevelLoader.h"
 #include "engine/script/TrialSummary.h"
 
@@ -65,7 +65,7 @@ class HeadlessTrial {
   static constexpr std::uint64_t kDrainEveryTicks = 1000;
 
   // `level` and `bot` are used, not copied; both must outlive run().
-  HeadlessTrial(script::LoadedLevel& level, script::BotScript& bot, const TrialSettings& settings);
+  HeadlessTrial(script::LoadedLevel& level, script::BotPolicy& bot, const TrialSettings& settings);
 
   TrialResult run();
 
@@ -78,7 +78,7 @@ class HeadlessTrial {
 
  private:
   script::LoadedLevel& level_;
-  script::BotScript& bot_;
+  script::BotPolicy& bot_;
   TrialSettings settings_;
 };
 

@@ -35,6 +35,13 @@ void ObservationBuilder::fill(double time, const physics::ForceDrivenState& x, c
   out.engaged = snapshot.engagement == haptics::Engagement::Engaged;
 
   judge.slotTargets(out.target, out.tolerance, out.targetSet);
+  out.omegaNormSet = false;
+  for (const script::ComponentStatus& c : judge.components()) {
+    if (c.variable != script::TaskVariable::omega_norm) continue;
+    out.omegaNormSet = true;
+    out.omegaNormTarget = c.target;
+    out.omegaNormTolerance = c.tolerance;
+  }
   out.timeLimit = judge.task().timeLimit;
   out.holdTime = judge.requiredHold();
   out.held = judge.holdTime();

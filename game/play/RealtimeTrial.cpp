@@ -55,6 +55,10 @@ TrialResult RealtimeTrial::run() {
     observer.fill(time, stateOf(snapshot.state), snapshot, judge, obs);
     try {
       const script::BotAction a = bot_.act(obs);
+      if (std::string why = bot_.giveUpReason(); !why.empty()) {
+        judging.fail(why);
+        return false;
+      }
       if (a.hasVelocity)
         device.publish(time, vec(a.position), vec(a.velocity));
       else

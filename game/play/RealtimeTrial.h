@@ -20,14 +20,14 @@ class RealtimeTrial {
  public:
   static constexpr double kBotRate = 500.0;  // [Hz] bot calls on the main thread
 
-  RealtimeTrial(script::LoadedLevel& level, script::BotScript& bot, const TrialSettings& settings)
+  RealtimeTrial(script::LoadedLevel& level, script::BotPolicy& bot, const TrialSettings& settings)
       : level_(level), bot_(bot), settings_(settings) {}
 
   TrialResult run();
 
  private:
   script::LoadedLevel& level_;
-  script::BotScript& bot_;
+  script::BotPolicy& bot_;
   TrialSettings settings_;
 };
 

@@ -2,6 +2,7 @@
 // bot errors and safety faults as outcomes, forces within the device limit)
 // and the rose bot against the paper's prescribed drive.
 
+#include "engine/script/BotScript.h"
 #include "game/play/HeadlessTrial.h"
 
 #include <gmock/gmock.h>

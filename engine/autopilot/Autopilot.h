@@ -1,0 +1,123 @@
+#pragma once
+// engine/autopilot: plays a reaching task the way a player does, by moving
+// the haptic proxy, from the observation alone.
+//
+// Owns: the helix feedback law (HelixPolicy), the planner that picks its
+// parameters and the moment to land by rolling copies of it forward through
+// the engine's own model (PlantModel), and the up-front check of targets it
+// can never reach (Reachability).
+// Must not know: Lua, levels, devices, threads, the judge, the game. It gets
+// a Goal and a state, and gives a proxy pose; what the proxy does to the
+// model (coupling, ramp, safety, judging) is the game's own.
+//
+// How it decides (docs/AUTOPILOT.md): every tick it runs HelixPolicy; every
+// `decisionPeriod` it plans:
+//   travelling: every `steerPeriod` it tries the steering angles a - d, a,
+//     a + d over `steerHorizon` and keeps the one that brings c_up closest
+//     to the target; once c_up is within `landConsider` of it, it rolls out
+//     landing now at each of `landRates` for up to `landHorizon` and lands
+//     with the first that the model says ends inside every band (for the
+//     stage's hold time). That rollout is the plan: it closes the loop on
+//     the measured state at every decision.
+//   landing or settling: it rolls the current plan out again; if the model
+//     no longer predicts success (a shove, a model mismatch) and c_up has left
+//     the landing reach, it travels again.
+// Deterministic: same inputs, same outputs, bit for bit.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "engine/autopilot/Goal.h"
+#include "engine/autopilot/HelixPolicy.h"
+#include "engine/autopilot/PlantModel.h"
+#include "engine/autopilot/Reachability.h"
+
+namespace hemiroll::autopilot {
+
+struct AutopilotDef {
+  physics::HemisphereParams params;
+  physics::CouplingDef coupling;
+  double dt = 0.001;      // servo period [s]
+  Workspace workspace;    // where the proxy may go (scene)
+  HelixParams helix;      // the feedback law's starting parameters
+  // Planning effort [-]: scales the number of candidates and the landing
+  // horizon (1 = the defaults below; 0.25 .. 4).
+  double budget = 1.0;
+  double decisionPeriod = 0.1;  // [s] between plans
+  double steerPeriod = 0.5;     // [s] between steering updates
+  double steerHorizon = 2.0;    // [s]
+  double steerStep = 0.4;       // [rad] between steering candidates
+  double landHorizon = 8.0;     // [s]
+  double landConsider = 0.01;   // [m] c_up this close to the target: try landing
+};
+
+struct AutopilotInput {
+  double time = 0.0;                                                     // [s]
+  physics::ForceDrivenState state = physics::ForceDrivenState::Zero();  // the measured 12-state
+  physics::Vec3 massPosition = physics::Vec3::Zero();                    // scene [m]
+  physics::Vec3 massVelocity = physics::Vec3::Zero();                    // scene [m/s]
+  bool engaged = false;  // the coupling holds the mass point
+  Goal goal;             // the current stage's bands
+  int stage = 0;
+};
+
+struct ProxyCommand {
+  physics::Vec3 position = physics::Vec3::Zero();  // scene [m]
+  physics::Vec3 velocity = physics::Vec3::Zero();  // scene [m/s]
+};
+
+// What the planner did, for the issue note and the benchmark.
+struct PlannerStats {
+  long long decisions = 0;
+  long long rollouts = 0;
+  double rolloutSeconds = 0.0;        // simulated time rolled out [s]
+  std::vector<double> decisionWall;   // wall time of each decision [s]
+  double landedAt = -1.0;             // when the last landing started [s]
+};
+
+class Autopilot {
+ public:
+  explicit Autopilot(const AutopilotDef& def);
+
+  ProxyCommand act(const AutopilotInput& input);
+
+  // Non-empty once the autopilot has given up ("the target ... is beyond ...").
+  const std::string& failure() const { return failure_; }
+  HelixPhase phase() const { return policy_.phase(); }
+  const HelixPolicy& policy() const { return policy_; }
+  const PlannerStats& stats() const { return stats_; }
+
+ private:
+  struct Outcome {
+    bool success = false;
+    bool event = false;
+    double time = 0.0;       // when the bands were first held [s after start]
+    double bestError = 1e30; // smallest normalised error on the way
+    physics::Vec2 upright = physics::Vec2::Zero();  // c_up at the end
+  };
+
+  void plan(const AutopilotInput& input);
+  void steer(const AutopilotInput& input);
+  bool tryLanding(const AutopilotInput& input);
+  void verifyLanding(const AutopilotInput& input);
+  Outcome rollout(HelixPolicy policy, const AutopilotInput& input, double horizon, bool judge);
+  double uprightError(const physics::Vec2& upright) const;
+  physics::Vec3 insideWorkspace(const physics::Vec3& p) const;
+
+  AutopilotDef def_;
+  physics::ModelConstants constants_;
+  HelixPolicy policy_;
+  PlantModel model_;
+  Goal goal_;
+  int stage_ = -1;
+  bool started_ = false;
+  double nextDecision_ = 0.0;  // [s]
+  double policyTime_ = 0.0;    // time the policy has been run up to [s]
+  double lastSteer_ = -1e9;
+  physics::Vec3 lastProxy_ = physics::Vec3::Zero();
+  std::string failure_;
+  PlannerStats stats_;
+};
+
+}  // namespace hemiroll::autopilot

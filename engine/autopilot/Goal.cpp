@@ -1,0 +1,43 @@
+#include "engine/autopilot/Goal.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hemiroll::autopilot {
+
+namespace {
+
+constexpr int kPsi = physics::force_slot::psi;
+
+double slotError(const Goal& goal, const physics::ForceDrivenState& x, int slot) {
+  const auto i = static_cast<std::size_t>(slot);
+  double d = x[slot] - goal.target[i];
+  if (slot == kPsi) d = std::remainder(d, 2.0 * M_PI);
+  return std::abs(d) / goal.tolerance[i];
+}
+
+double errorOver(const Goal& goal, const physics::ForceDrivenState& x, bool withContact) {
+  double e = 0.0;
+  for (int slot = 0; slot < 12; ++slot) {
+    if (!goal.set[static_cast<std::size_t>(slot)]) continue;
+    if (!withContact && (slot == physics::force_slot::u_a || slot == physics::force_slot::v_a)) continue;
+    e = std::max(e, slotError(goal, x, slot));
+  }
+  if (goal.omegaNormSet) {
+    const double w = std::sqrt(x[4] * x[4] + x[5] * x[5] + x[6] * x[6]);
+    e = std::max(e, std::abs(w - goal.omegaNormTarget) / goal.omegaNormTolerance);
+  }
+  return std::isfinite(e) ? e : 1e30;  // a non-finite state is as far as it gets
+}
+
+}  // namespace
+
+bool Goal::any() const { return omegaNormSet || std::any_of(set.begin(), set.end(), [](bool b) { return b; }); }
+
+double normalisedError(const Goal& goal, const physics::ForceDrivenState& x) { return errorOver(goal, x, true); }
+
+double normalisedErrorOffContact(const Goal& goal, const physics::ForceDrivenState& x) {
+  return errorOver(goal, x, false);
+}
+
+}  // namespace hemiroll::autopilot

@@ -1,0 +1,32 @@
+#pragma once
+// What the current stage of a task asks for, as the autopilot sees it: a band
+// per state slot (physics/StateLayout.h order) and optionally one on |omega|.
+// The game fills it from its judge; the autopilot only reads it.
+
+#include <array>
+
+#include "engine/physics/StateLayout.h"
+
+namespace hemiroll::autopilot {
+
+struct Goal {
+  std::array<double, 12> target{};
+  std::array<double, 12> tolerance{};  // half-widths, > 0 where set
+  std::array<bool, 12> set{};
+  bool omegaNormSet = false;
+  double omegaNormTarget = 0.0, omegaNormTolerance = 0.0;  // [rad/s]
+  double hold = 0.0;  // how long the bands must hold [s]
+
+  bool contactSet() const { return set[7] || set[8]; }
+  bool any() const;
+};
+
+// The largest |x - target| / tolerance over the set bands (psi modulo 2 pi,
+// as the judge compares it): <= 1 means every band holds.
+double normalisedError(const Goal& goal, const physics::ForceDrivenState& x);
+
+// The same, leaving out the contact point on the plane (u_a, v_a): how far
+// the rest of the state is from its bands once the hemisphere is there.
+double normalisedErrorOffContact(const Goal& goal, const physics::ForceDrivenState& x);
+
+}  // namespace hemiroll::autopilot

@@ -1,0 +1,103 @@
+#include "engine/autopilot/HelixPolicy.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "engine/autopilot/UprightContact.h"
+
+namespace hemiroll::autopilot {
+
+using physics::Vec2;
+using physics::Vec3;
+
+namespace {
+
+Vec2 limited(Vec2 v, double limit) {
+  const double n = v.norm();
+  return n > limit ? Vec2(v * (limit / n)) : v;
+}
+
+Vec2 turned(const Vec2& v, double angle) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  return {c * v.x() - s * v.y(), s * v.x() + c * v.y()};
+}
+
+}  // namespace
+
+HelixPolicy::HelixPolicy(const physics::ModelConstants& constants, const HelixParams& params, double dt)
+    : constants_(&constants), params_(params), dt_(dt) {}
+
+void HelixPolicy::setGoal(const Goal& goal) {
+  goal_ = goal;
+  // Upright at rest the mass point sits at p ~ R sin(tilt) for a contact
+  // R tilt from c_up, so the bands on p and on u_co bound how far from c_up
+  // the hemisphere may stand; 0.7 of the band leaves room for the wobble.
+  const double R = constants_->params.radius;
+  double reach = 0.5 * R;
+  if (goal.set[0]) reach = std::min(reach, goal.tolerance[0]);
+  if (goal.set[1]) reach = std::min(reach, goal.tolerance[1]);
+  if (goal.set[9]) reach = std::min(reach, R * goal.tolerance[9]);
+  if (goal.set[10]) reach = std::min(reach, R * goal.tolerance[10]);
+  landReach_ = 0.7 * reach;
+}
+
+void HelixPolicy::startAt(const Vec3& proxy) { last_ = proxy; }
+
+void HelixPolicy::land(double landRate) {
+  params_.landRate = landRate;
+  phase_ = HelixPhase::Land;
+}
+
+void HelixPolicy::travel() { phase_ = HelixPhase::Travel; }
+
+void HelixPolicy::settleNow() {
+  phase_ = HelixPhase::Settle;
+  radius_ = 0.0;
+}
+
+Vec2 HelixPolicy::contactTarget() const {
+  return {goal_.set[7] ? goal_.target[7] : 0.0, goal_.set[8] ? goal_.target[8] : 0.0};
+}
+
+Vec2 HelixPolicy::landingPoint(const Vec2& upright) const {
+  if (!goal_.contactSet()) return upright;
+  Vec2 want = contactTarget();
+  if (!goal_.set[7]) want.x() = upright.x();
+  if (!goal_.set[8]) want.y() = upright.y();
+  return upright + limited(want - upright, landReach_);
+}
+
+Vec3 HelixPolicy::proxyFor(const physics::ForceDrivenState& x) {
+  using namespace physics::force_slot;
+  const double R = constants_->params.radius;
+  const UprightContact up = uprightContact(*constants_, x);
+  Vec3 proxy;
+  if (phase_ == HelixPhase::Settle) {
+    const Vec2 land = landingPoint(up.point);
+    const Vec3 goal(land.x(), land.y(), R);
+    Vec3 step = goal - last_;
+    const double most = params_.glideSpeed * dt_;
+    if (step.norm() > most) step *= most / step.norm();
+    proxy = last_ + step;
+  } else {
+    Vec2 error = Vec2::Zero();
+    if (goal_.contactSet()) {
+      error = contactTarget() - up.point;
+      if (!goal_.set[7]) error.x() = 0.0;
+      if (!goal_.set[8]) error.y() = 0.0;
+    }
+    const Vec2 steer = limited(params_.steerGain * turned(error, params_.steerAngle), params_.steerLimit);
+    const bool circling = phase_ == HelixPhase::Travel;
+    const double rate = circling ? params_.amplitude : params_.landRate;  // [m/s] of radius change
+    const double want = circling ? params_.amplitude : 0.0;
+    radius_ += std::clamp(want - radius_, -rate * dt_, rate * dt_);
+    phaseAngle_ = std::remainder(phaseAngle_ + params_.rate * dt_, 2.0 * M_PI);
+    proxy = Vec3(x[u_a] + steer.x() + radius_ * std::cos(phaseAngle_),
+                 x[v_a] + steer.y() + radius_ * std::sin(phaseAngle_), R);
+    if (phase_ == HelixPhase::Land && radius_ <= 0.0) phase_ = HelixPhase::Settle;
+  }
+  last_ = proxy;
+  return proxy;
+}
+
+}  // namespace hemiroll::autopilot

@@ -1,0 +1,72 @@
+#pragma once
+// The paper's strategy (Sec. 4.2) as a feedback law on the measured state,
+// one proxy pose per servo tick. Three phases:
+//
+//   Travel  the proxy circles a steering point just beside the contact point
+//           (radius `amplitude`, rate `rate`): the hemisphere tilts and
+//           precesses on a steady helix. Offsetting the steering point from
+//           the contact by `steerGain` x (c_up error turned by `steerAngle`)
+//           makes the helix drift, and the drift carries c_up (UprightContact.h)
+//           towards the target: measured on the paper's model, about 1 cm/s
+//           for a 1 mm offset, at an angle of about 1 rad from the offset.
+//   Land    the circling fades out at `landRate`; steering goes on.
+//   Settle  the proxy glides at `glideSpeed` to a point above the landing
+//           point (c_up, moved towards the target as far as the bands on p
+//           and u_co allow): the hemisphere rolls straight under it and
+//           stands upright there, since a straight roll keeps c_up.
+//
+// Deterministic and cheap (a few flops per tick); copyable, so that the
+// planner can roll copies forward through the model (Autopilot.h).
+
+#include "engine/autopilot/Goal.h"
+#include "engine/physics/HemisphereParams.h"
+#include "engine/physics/StateLayout.h"
+
+namespace hemiroll::autopilot {
+
+struct HelixParams {
+  double amplitude = 0.003;    // radius of the proxy's circle [m]
+  double rate = 3.14159;       // circling rate [rad/s]; the sign is the sense
+  double steerAngle = 1.0;     // the steering offset is the c_up error turned by this [rad]
+  double steerGain = 1.0;      // steering offset per metre of c_up error [-]
+  double steerLimit = 0.0015;  // largest steering offset [m]
+  double landRate = 0.003;     // fade of the circle's radius when landing [m/s]
+  double glideSpeed = 0.005;   // proxy speed while settling [m/s]
+};
+
+enum class HelixPhase { Travel, Land, Settle };
+
+class HelixPolicy {
+ public:
+  HelixPolicy(const physics::ModelConstants& constants, const HelixParams& params, double dt);
+
+  void setGoal(const Goal& goal);
+  // Start from the current proxy (the first glide starts there).
+  void startAt(const physics::Vec3& proxy);
+  void land(double landRate);
+  void travel();
+  void settleNow();
+
+  // The proxy for the next tick, from the state after the last one.
+  physics::Vec3 proxyFor(const physics::ForceDrivenState& x);
+
+  HelixPhase phase() const { return phase_; }
+  HelixParams& params() { return params_; }
+  const HelixParams& params() const { return params_; }
+  // Where the contact would end after landing now (above c_up, nudged to the target).
+  physics::Vec2 landingPoint(const physics::Vec2& upright) const;
+
+ private:
+  physics::Vec2 contactTarget() const;
+
+  const physics::ModelConstants* constants_;
+  HelixParams params_;
+  double dt_;
+  Goal goal_;
+  double landReach_ = 0.0;  // how far from c_up the contact may end [m]
+  HelixPhase phase_ = HelixPhase::Travel;
+  double phaseAngle_ = 0.0, radius_ = 0.0;
+  physics::Vec3 last_ = physics::Vec3::Zero();
+};
+
+}  // namespace hemiroll::autopilot

@@ -1,0 +1,33 @@
+#pragma once
+// What plays a level in a trial: anything that, once per tick, turns the
+// observation into a proxy pose. A Lua module (BotScript) is one; the
+// built-in autopilot (game/play/AutopilotBot) is another. The trial loops
+// (HeadlessTrial, RealtimeTrial) know only this interface.
+
+#include <cstdint>
+#include <string>
+
+#include "engine/script/BotObservation.h"
+
+namespace hemiroll::script {
+
+struct BotAction {
+  Triple3 position{};  // proxy, scene [m]
+  Triple3 velocity{};  // proxy velocity, scene [m/s]; meaningful only when hasVelocity
+  bool hasVelocity = false;
+};
+
+class BotPolicy {
+ public:
+  virtual ~BotPolicy() = default;
+  virtual const std::string& name() const = 0;
+  // Once per trial, before the first act. Throws ScriptError on failure.
+  virtual void init(const BotLevelInfo& info, std::int64_t seed) = 0;
+  // Once per tick. Throws ScriptError on failure.
+  virtual BotAction act(const BotObservation& obs) = 0;
+  // Non-empty once the bot gives up on the task for a reason it can name
+  // (the trial then fails with it); empty otherwise.
+  virtual std::string giveUpReason() const { return {}; }
+};
+
+}  // namespace hemiroll::script

@@ -1,0 +1,77 @@
+#include "game/play/AutopilotBot.h"
+
+#include "engine/script/ScriptError.h"
+
+namespace hemiroll::game {
+
+namespace {
+
+physics::Vec3 vec(const script::Triple3& t) { return {t[0], t[1], t[2]}; }
+script::Triple3 triple(const physics::Vec3& v) { return {v.x(), v.y(), v.z()}; }
+
+}  // namespace
+
+physics::CouplingDef couplingOf(const script::BotLevelInfo& info) {
+  physics::CouplingDef c;
+  c.stiffness = info.stiffness;
+  c.damping = info.damping;
+  c.alpha = info.alpha;
+  c.visualOnly = info.method == "visual";
+  c.method = info.method == "M1" ? physics::ForceMethod::M1
+             : info.method == "M2" ? physics::ForceMethod::M2
+                                   : physics::ForceMethod::M3;
+  return c;
+}
+
+AutopilotBot::AutopilotBot(const AutopilotBotOptions& options) : options_(options) {}
+AutopilotBot::~AutopilotBot() = default;
+
+void AutopilotBot::init(const script::BotLevelInfo& info, std::int64_t /*seed: the autopilot draws nothing*/) {
+  if (info.method == "visual")
+    // "Visual only" renders no force but drives the model as its method
+    // would; the level info does not say which, so the autopilot cannot
+    // model it.
+    throw script::ScriptError("autopilot: a visual-only coupling hides the method that drives the model");
+  autopilot::AutopilotDef def;
+  def.params.radius = info.radius;
+  def.params.shellMass = info.shellMass;
+  def.params.pointMass = info.pointMass;
+  def.params.gravity = info.gravity;
+  def.coupling = couplingOf(info);
+  def.dt = info.dt;
+  def.workspace.centre = vec(info.workspaceCentre);
+  def.workspace.radius = info.workspaceRadius;
+  def.budget = options_.budget;
+  autopilot_ = std::make_unique<autopilot::Autopilot>(def);
+}
+
+script::BotAction AutopilotBot::act(const script::BotObservation& obs) {
+  if (!autopilot_) throw script::ScriptError("autopilot: act before init");
+  input_.time = obs.time;
+  for (int i = 0; i < 12; ++i) input_.state[i] = obs.state[static_cast<std::size_t>(i)];
+  input_.massPosition = vec(obs.mass);
+  input_.massVelocity = vec(obs.massVelocity);
+  input_.engaged = obs.engaged;
+  input_.stage = obs.stage;
+  autopilot::Goal& goal = input_.goal;
+  goal.target = obs.target;
+  goal.tolerance = obs.tolerance;
+  goal.set = obs.targetSet;
+  goal.omegaNormSet = obs.omegaNormSet;
+  goal.omegaNormTarget = obs.omegaNormTarget;
+  goal.omegaNormTolerance = obs.omegaNormTolerance;
+  goal.hold = obs.holdTime;
+  const autopilot::ProxyCommand command = autopilot_->act(input_);
+  script::BotAction action;
+  action.position = triple(command.position);
+  action.velocity = triple(command.velocity);
+  action.hasVelocity = true;
+  return action;
+}
+
+std::string AutopilotBot::giveUpReason() const {
+  if (!autopilot_ || autopilot_->failure().empty()) return {};
+  return "autopilot: " + autopilot_->failure();
+}
+
+}  // namespace hemiroll::game

@@ -1,0 +1,45 @@
+#pragma once
+// The built-in bot "autopilot" (`hemiroll run LEVEL --bot autopilot`): the
+// planner of engine/autopilot behind the same interface as a Lua bot. It
+// reads only what a bot reads (the observation and the level info) and gives
+// only what a bot gives (a proxy pose and velocity); when the autopilot
+// gives up, the trial fails with "autopilot: <why>".
+
+#include <memory>
+#include <string>
+
+#include "engine/autopilot/Autopilot.h"
+#include "engine/script/BotPolicy.h"
+
+namespace hemiroll::game {
+
+inline constexpr const char* kAutopilotBotName = "autopilot";
+
+struct AutopilotBotOptions {
+  double budget = 1.0;  // planning effort (AutopilotDef::budget)
+};
+
+class AutopilotBot final : public script::BotPolicy {
+ public:
+  explicit AutopilotBot(const AutopilotBotOptions& options = {});
+  ~AutopilotBot() override;
+
+  const std::string& name() const override { return name_; }
+  void init(const script::BotLevelInfo& info, std::int64_t seed) override;
+  script::BotAction act(const script::BotObservation& obs) override;
+  std::string giveUpReason() const override;
+
+  // Null before init.
+  const autopilot::Autopilot* autopilot() const { return autopilot_.get(); }
+
+ private:
+  AutopilotBotOptions options_;
+  std::string name_ = kAutopilotBotName;
+  std::unique_ptr<autopilot::Autopilot> autopilot_;
+  autopilot::AutopilotInput input_;
+};
+
+// The coupling method of a level info ("M1", "M2", "M3", "visual").
+physics::CouplingDef couplingOf(const script::BotLevelInfo& info);
+
+}  // namespace hemiroll::game
