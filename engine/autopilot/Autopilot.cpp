@@ -20,7 +20,11 @@ bool sameGoal(const Goal& a, const Goal& b) {
 
 // Landing fades the circle at these rates [m/s]; slower landings leave less
 // wobble, faster ones less drift. The planner tries them all.
+constexpr double kMaxProxySpeed = 0.25;  // [m/s]
+
 constexpr double kLandRates[] = {0.0015, 0.002, 0.003, 0.004, 0.006, 0.009};
+// Despin circle radius per rad/s of spin (HelixParams::despinGain) [m s/rad].
+constexpr double kDespinGains[] = {0.0, 0.01};
 
 }  // namespace
 
@@ -31,6 +35,16 @@ Autopilot::Autopilot(const AutopilotDef& def)
       model_(def.params, def.coupling, def.dt) {
   def_.budget = std::clamp(def_.budget, 0.25, 4.0);
   stats_.decisionWall.reserve(4096);
+}
+
+Vec3 Autopilot::deliverable(const Vec3& wanted, const Vec3& last) const {
+  // A hand moves the stylus smoothly: at most kMaxProxySpeed, far below the
+  // device's velocity guard (2 m/s), so that a jump of the plan (a new stage,
+  // a new steering angle) never trips it.
+  Vec3 step = insideWorkspace(wanted) - last;
+  const double most = kMaxProxySpeed * def_.dt;
+  if (step.norm() > most) step *= most / step.norm();
+  return last + step;
 }
 
 Vec3 Autopilot::insideWorkspace(const Vec3& p) const {
@@ -91,7 +105,7 @@ ProxyCommand Autopilot::act(const AutopilotInput& input) {
   policyTime_ = input.time;
   Vec3 proxy;
   for (long long i = 0; i < steps; ++i) proxy = policy_.proxyFor(input.state);
-  out.position = insideWorkspace(proxy);
+  out.position = deliverable(proxy, lastProxy_);
   out.velocity = (out.position - lastProxy_) / def_.dt;
   lastProxy_ = out.position;
   return out;
@@ -119,15 +133,27 @@ Autopilot::Outcome Autopilot::rollout(HelixPolicy policy, const AutopilotInput& 
   const long long holdTicks = std::llround(goal_.hold / def_.dt);
   long long inside = 0;
   long long k = 0;
+  double meanError = 0.0;
+  long long meanCount = 0;
   for (; k < ticks; ++k) {
-    const Vec3 proxy = insideWorkspace(policy.proxyFor(model_.state()));
+    const Vec3 proxy = deliverable(policy.proxyFor(model_.state()), last);
     const Vec3 velocity = (proxy - last) / def_.dt;
     last = proxy;
     if (model_.tick(proxy, velocity) != physics::DomainEvent::None) {
       o.event = true;
       break;
     }
-    if (!judge) continue;
+    if (!judge) {
+      // The second half of the horizon: c_up rides a loop per turn of the
+      // helix, so its mean, not its last value, says where the drift goes.
+      if (2 * k >= ticks) {
+        const UprightContact up = uprightContact(constants_, model_.state());
+        meanError += uprightError(up.point);
+        ++meanCount;
+        o.excess = std::max(o.excess, std::max(0.0, std::abs(model_.state()[6]) - 1.2) + std::max(0.0, up.tilt - 0.9));
+      }
+      continue;
+    }
     const double e = normalisedError(goal_, model_.state());
     o.bestError = std::min(o.bestError, e);
     inside = e <= 1.0 ? inside + 1 : 0;
@@ -138,6 +164,7 @@ Autopilot::Outcome Autopilot::rollout(HelixPolicy policy, const AutopilotInput& 
     }
   }
   stats_.rolloutSeconds += static_cast<double>(k) * def_.dt;
+  o.meanUprightError = meanCount > 0 ? meanError / static_cast<double>(meanCount) : 1e30;
   o.upright = uprightContact(constants_, model_.state()).point;
   return o;
 }
@@ -146,39 +173,54 @@ void Autopilot::steer(const AutopilotInput& input) {
   lastSteer_ = input.time;
   if (!goal_.contactSet()) return;
   const int each = std::max(1, static_cast<int>(std::lround(def_.budget)));
-  const double base = policy_.params().steerAngle;
-  double bestAngle = base, bestCost = 1e30;
-  for (int i = -each; i <= each; ++i) {
-    HelixPolicy candidate = policy_;
-    candidate.params().steerAngle = base + i * def_.steerStep / each;
-    const Outcome o = rollout(candidate, input, def_.steerHorizon, false);
-    // A candidate that tips over or throws the mass point off is never kept.
-    const double cost = o.event ? 1e30 : uprightError(o.upright);
-    if (cost < bestCost) {
-      bestCost = cost;
-      bestAngle = candidate.params().steerAngle;
+  const double baseAngle = policy_.params().steerAngle;
+  const double baseAmplitude = policy_.params().amplitude;
+  double bestAngle = baseAngle, bestAmplitude = baseAmplitude, bestCost = 1e30;
+  for (const double scale : {1.0, 0.7, 1.3}) {
+    for (int i = -each; i <= each; ++i) {
+      HelixPolicy candidate = policy_;
+      candidate.params().steerAngle = baseAngle + i * def_.steerStep / each;
+      candidate.params().amplitude = std::clamp(baseAmplitude * scale, 0.3 * def_.helix.amplitude, def_.helix.amplitude);
+      const Outcome o = rollout(candidate, input, def_.steerHorizon, false);
+      // A candidate that tips over or throws the mass point off is never
+      // kept; fast spin and deep tilts are what lead there, so they cost.
+      const double cost = o.event ? 1e30 : o.meanUprightError + 0.01 * o.excess;
+      if (cost < bestCost) {
+        bestCost = cost;
+        bestAngle = candidate.params().steerAngle;
+        bestAmplitude = candidate.params().amplitude;
+      }
     }
   }
   policy_.params().steerAngle = std::remainder(bestAngle, 2.0 * M_PI);
+  policy_.params().amplitude = bestAmplitude;
 }
 
 bool Autopilot::tryLanding(const AutopilotInput& input) {
   const Vec2 upright = uprightContact(constants_, input.state).point;
   if (uprightError(upright) > def_.landConsider) return false;
+  // A landing search that found nothing is not repeated at once: the helix
+  // needs a few tenths of a second to bring a different state round.
+  if (input.time < nextLandingTry_) return false;
+  nextLandingTry_ = input.time + def_.landRetryPeriod;
   const double horizon = def_.landHorizon * std::min(2.0, def_.budget);
   Outcome best;
-  double bestRate = 0.0;
-  for (const double rate : kLandRates) {
-    HelixPolicy candidate = policy_;
-    candidate.land(rate);
-    const Outcome o = rollout(candidate, input, horizon, true);
-    if (o.success && (!best.success || o.time < best.time)) {
-      best = o;
-      bestRate = rate;
+  double bestRate = 0.0, bestDespin = 0.0;
+  for (const double despin : kDespinGains) {
+    for (const double rate : kLandRates) {
+      HelixPolicy candidate = policy_;
+      candidate.land(rate, despin);
+      const Outcome o = rollout(candidate, input, horizon, true);
+      if (o.success && (!best.success || o.time < best.time)) {
+        best = o;
+        bestRate = rate;
+        bestDespin = despin;
+      }
     }
+    if (best.success) break;  // the plainest landing that works
   }
   if (!best.success) return false;
-  policy_.land(bestRate);
+  policy_.land(bestRate, bestDespin);
   stats_.landedAt = input.time;
   return true;
 }

@@ -50,6 +50,7 @@ struct AutopilotDef {
   double steerStep = 0.4;       // [rad] between steering candidates
   double landHorizon = 8.0;     // [s]
   double landConsider = 0.01;   // [m] c_up this close to the target: try landing
+  double landRetryPeriod = 0.3; // [s] between landing searches
 };
 
 struct AutopilotInput {
@@ -95,6 +96,8 @@ class Autopilot {
     double time = 0.0;       // when the bands were first held [s after start]
     double bestError = 1e30; // smallest normalised error on the way
     physics::Vec2 upright = physics::Vec2::Zero();  // c_up at the end
+    double meanUprightError = 1e30;  // |c_up - target| averaged over the second half [m]
+    double excess = 0.0;             // largest spin above 1.2 rad/s plus tilt above 0.9 rad
   };
 
   void plan(const AutopilotInput& input);
@@ -104,6 +107,7 @@ class Autopilot {
   Outcome rollout(HelixPolicy policy, const AutopilotInput& input, double horizon, bool judge);
   double uprightError(const physics::Vec2& upright) const;
   physics::Vec3 insideWorkspace(const physics::Vec3& p) const;
+  physics::Vec3 deliverable(const physics::Vec3& wanted, const physics::Vec3& last) const;
 
   AutopilotDef def_;
   physics::ModelConstants constants_;
@@ -115,6 +119,7 @@ class Autopilot {
   double nextDecision_ = 0.0;  // [s]
   double policyTime_ = 0.0;    // time the policy has been run up to [s]
   double lastSteer_ = -1e9;
+  double nextLandingTry_ = 0.0;  // [s]
   physics::Vec3 lastProxy_ = physics::Vec3::Zero();
   std::string failure_;
   PlannerStats stats_;

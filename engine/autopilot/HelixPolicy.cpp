@@ -43,12 +43,16 @@ void HelixPolicy::setGoal(const Goal& goal) {
 
 void HelixPolicy::startAt(const Vec3& proxy) { last_ = proxy; }
 
-void HelixPolicy::land(double landRate) {
+void HelixPolicy::land(double landRate, double despinGain) {
   params_.landRate = landRate;
+  params_.despinGain = despinGain;
   phase_ = HelixPhase::Land;
 }
 
-void HelixPolicy::travel() { phase_ = HelixPhase::Travel; }
+void HelixPolicy::travel() {
+  phase_ = HelixPhase::Travel;
+  settleOffset_ = Vec2::Zero();
+}
 
 void HelixPolicy::settleNow() {
   phase_ = HelixPhase::Settle;
@@ -67,6 +71,13 @@ Vec2 HelixPolicy::landingPoint(const Vec2& upright) const {
   return upright + limited(want - upright, landReach_);
 }
 
+Vec3 HelixPolicy::despin(const physics::ForceDrivenState& x) {
+  const double spin = x[physics::force_slot::w_z];
+  const double radius = std::min(params_.despinGain * std::abs(spin), params_.amplitude);
+  despinAngle_ = std::remainder(despinAngle_ - std::copysign(std::abs(params_.rate), spin) * dt_, 2.0 * M_PI);
+  return {radius * std::cos(despinAngle_), radius * std::sin(despinAngle_), 0.0};
+}
+
 Vec3 HelixPolicy::proxyFor(const physics::ForceDrivenState& x) {
   using namespace physics::force_slot;
   const double R = constants_->params.radius;
@@ -74,7 +85,10 @@ Vec3 HelixPolicy::proxyFor(const physics::ForceDrivenState& x) {
   Vec3 proxy;
   if (phase_ == HelixPhase::Settle) {
     const Vec2 land = landingPoint(up.point);
-    const Vec3 goal(land.x(), land.y(), R);
+    const Vec2 error = land - Vec2(x[u_a], x[v_a]);
+    settleOffset_ += limited(params_.settleGain * error, params_.glideSpeed) * dt_;
+    settleOffset_ = limited(settleOffset_, 0.5 * R);
+    const Vec3 goal(land.x() + settleOffset_.x(), land.y() + settleOffset_.y(), R);
     Vec3 step = goal - last_;
     const double most = params_.glideSpeed * dt_;
     if (step.norm() > most) step *= most / step.norm();
@@ -94,10 +108,12 @@ Vec3 HelixPolicy::proxyFor(const physics::ForceDrivenState& x) {
     phaseAngle_ = std::remainder(phaseAngle_ + params_.rate * dt_, 2.0 * M_PI);
     proxy = Vec3(x[u_a] + steer.x() + radius_ * std::cos(phaseAngle_),
                  x[v_a] + steer.y() + radius_ * std::sin(phaseAngle_), R);
+
     if (phase_ == HelixPhase::Land && radius_ <= 0.0) phase_ = HelixPhase::Settle;
   }
+  // last_ keeps the path; the despin circle rides on it.
   last_ = proxy;
-  return proxy;
+  return phase_ == HelixPhase::Travel ? proxy : Vec3(proxy + despin(x));
 }
 
 }  // namespace hemiroll::autopilot

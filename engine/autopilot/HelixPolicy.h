@@ -32,6 +32,15 @@ struct HelixParams {
   double steerLimit = 0.0015;  // largest steering offset [m]
   double landRate = 0.003;     // fade of the circle's radius when landing [m/s]
   double glideSpeed = 0.005;   // proxy speed while settling [m/s]
+  // While settling, the proxy's goal creeps by settleGain x (landing point -
+  // contact) per second: on the paper's masses the contact stands right under
+  // a still proxy (m_p g / k_r ~ R), on others this integral finds the offset.
+  double settleGain = 1.5;     // [1/s]
+  // Landing and settling leave spin about the vertical, which nothing damps
+  // once upright. Circling makes spin in its own sense, so while landing and
+  // settling the proxy circles against the measured spin, with a radius of
+  // despinGain x |w_z| (at most `amplitude`); 0 turns it off.
+  double despinGain = 0.0;     // [m s/rad]
 };
 
 enum class HelixPhase { Travel, Land, Settle };
@@ -43,7 +52,7 @@ class HelixPolicy {
   void setGoal(const Goal& goal);
   // Start from the current proxy (the first glide starts there).
   void startAt(const physics::Vec3& proxy);
-  void land(double landRate);
+  void land(double landRate, double despinGain = 0.0);
   void travel();
   void settleNow();
 
@@ -58,6 +67,7 @@ class HelixPolicy {
 
  private:
   physics::Vec2 contactTarget() const;
+  physics::Vec3 despin(const physics::ForceDrivenState& x);
 
   const physics::ModelConstants* constants_;
   HelixParams params_;
@@ -67,6 +77,8 @@ class HelixPolicy {
   HelixPhase phase_ = HelixPhase::Travel;
   double phaseAngle_ = 0.0, radius_ = 0.0;
   physics::Vec3 last_ = physics::Vec3::Zero();
+  physics::Vec2 settleOffset_ = physics::Vec2::Zero();  // integral of the settle loop [m]
+  double despinAngle_ = 0.0;
 };
 
 }  // namespace hemiroll::autopilot
