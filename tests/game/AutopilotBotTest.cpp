@@ -1,0 +1,100 @@
+// game/play/AutopilotBot through the real trial loop (HeadlessTrial: servo
+// loop, coupling, ramp, safety, judge): the shipped levels it must win, a few
+// generated tasks, determinism per seed, and refusals with "autopilot: ...".
+
+#include "game/play/AutopilotBot.h"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <string>
+
+#include "engine/script/LevelLoader.h"
+#include "game/play/HeadlessTrial.h"
+
+namespace hemiroll::game {
+namespace {
+
+using script::TrialOutcome;
+
+const std::string kLevels = std::string(HEMIROLL_SOURCE_DIR) + "/levels/";
+
+TrialResult playFile(const std::string& path, std::uint64_t seed = 0) {
+  script::LevelLoadOptions options;
+  options.seed = seed;
+  script::LoadedLevel level = script::LevelLoader(options).loadFile(path);
+  AutopilotBot bot;
+  TrialSettings settings;
+  settings.seed = seed;
+  return HeadlessTrial(level, bot, settings).run();
+}
+
+TrialResult playSource(const char* source) {
+  script::LoadedLevel level = script::LevelLoader().loadSource(source, "level.lua");
+  AutopilotBot bot;
+  return HeadlessTrial(level, bot, TrialSettings{}).run();
+}
+
+TEST(AutopilotBot, WinsThePapersTaskWithGold) {
+  const TrialResult r = playFile(kLevels + "paper_reaching.lua");
+  ASSERT_EQ(r.outcome, TrialOutcome::Success) << r.reason;
+  EXPECT_EQ(r.medal, script::Medal::Gold);  // under 40 s
+  EXPECT_LE(r.maxRenderedForce, HeadlessTrial::deviceSpec().maxForce);
+}
+
+TEST(AutopilotBot, WinsTutorialFour) {
+  const TrialResult r = playFile(kLevels + "tutorial_04_stop_on_target.lua");
+  EXPECT_EQ(r.outcome, TrialOutcome::Success) << r.reason;
+}
+
+TEST(AutopilotBot, WinsTheSlalomAndTheTimeTrial) {
+  for (const char* name : {"challenge_slalom.lua", "challenge_time_trial.lua"}) {
+    const TrialResult r = playFile(kLevels + name);
+    EXPECT_EQ(r.outcome, TrialOutcome::Success) << name << ": " << r.reason;
+  }
+}
+
+TEST(AutopilotBot, WinsGeneratedTasks) {
+  // Seeds 4, 6 and 14 of the generator. Not every seed is won yet
+  // (docs/AUTOPILOT.md gives the rate and why); these guard the ones that are.
+  for (const std::uint64_t seed : {4u, 6u, 14u}) {
+    const TrialResult r = playFile(kLevels + "generated/random_reach.lua", seed);
+    EXPECT_EQ(r.outcome, TrialOutcome::Success) << "seed " << seed << ": " << r.reason;
+  }
+}
+
+TEST(AutopilotBot, SameSeedSameTrialBitForBit) {
+  const TrialResult a = playFile(kLevels + "paper_reaching.lua", 7);
+  const TrialResult b = playFile(kLevels + "paper_reaching.lua", 7);
+  EXPECT_EQ(a.ticks, b.ticks);
+  EXPECT_EQ(std::memcmp(a.finalState.data(), b.finalState.data(), sizeof(double) * 12), 0);
+}
+
+TEST(AutopilotBot, SaysInOneLineWhyATargetIsOutOfReach) {
+  const TrialResult beyond = playSource(R"lua(
+return { name = "far", task = { targets = { u_ca = { value = {0.5, 0.5}, tol = 0.004 } }, time_limit = 60 } }
+)lua");
+  EXPECT_EQ(beyond.outcome, TrialOutcome::Failure);
+  EXPECT_EQ(beyond.reason.rfind("autopilot: the target contact point", 0), 0u) << beyond.reason;
+  EXPECT_LT(beyond.time, 0.01);
+
+  const TrialResult rim = playSource(R"lua(
+return { name = "rim", task = { targets = { u_co = { value = {1.7, 0}, tol = 0.05 } }, time_limit = 60 } }
+)lua");
+  EXPECT_EQ(rim.reason.rfind("autopilot: the target tilt", 0), 0u) << rim.reason;
+
+  // Contradictory stages: the second asks for rest at a tilt that the first's
+  // mass point band rules out. The autopilot says so when it reaches it.
+  const TrialResult contradictory = playSource(R"lua(
+return { name = "contradiction", task = { stages = {
+  { targets = { u_co = { value = {0, 0}, tol = 0.2 } } },
+  { targets = { u_co = { value = {0.6, 0}, tol = 0.05 }, p = { value = {0, 0}, tol = 0.002 },
+                omega = { value = {0, 0, 0}, tol = 0.01 } } } }, time_limit = 60 } }
+)lua");
+  EXPECT_EQ(contradictory.outcome, TrialOutcome::Failure);
+  EXPECT_EQ(contradictory.reason.rfind("autopilot: the stage asks for rest", 0), 0u) << contradictory.reason;
+  EXPECT_LT(contradictory.time, 1.0);
+}
+
+}  // namespace
+}  // namespace hemiroll::game
