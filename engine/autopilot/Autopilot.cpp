@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <array>
 #include <cmath>
 
 #include "engine/autopilot/UprightContact.h"
@@ -23,8 +24,28 @@ bool sameGoal(const Goal& a, const Goal& b) {
 constexpr double kMaxProxySpeed = 0.25;  // [m/s]
 
 constexpr double kLandRates[] = {0.0015, 0.002, 0.003, 0.004, 0.006, 0.009};
-// Despin circle radius per rad/s of spin (HelixParams::despinGain) [m s/rad].
-constexpr double kDespinGains[] = {0.0, 0.01};
+
+// A small deterministic generator for the landing refinement: splitmix64
+// and Box-Muller, so that the same seed gives the same plan on every
+// standard library.
+class Normal {
+ public:
+  explicit Normal(std::uint64_t seed) : state_(seed) {}
+  double operator()() {
+    const double u1 = (static_cast<double>(next() >> 11) + 0.5) * 0x1.0p-53;
+    const double u2 = static_cast<double>(next() >> 11) * 0x1.0p-53;
+    return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * M_PI * u2);
+  }
+
+ private:
+  std::uint64_t next() {
+    std::uint64_t z = (state_ += 0x9e3779b97f4a7c15ULL);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return z ^ (z >> 31);
+  }
+  std::uint64_t state_;
+};
 
 }  // namespace
 
@@ -156,6 +177,13 @@ Autopilot::Outcome Autopilot::rollout(HelixPolicy policy, const AutopilotInput& 
     }
     const double e = normalisedError(goal_, model_.state());
     o.bestError = std::min(o.bestError, e);
+    const double soft = squaredError(goal_, model_.state());
+    if (soft < o.softCost) {
+      o.softCost = soft;
+      o.psiError = goal_.set[11] ? std::abs(std::remainder(model_.state()[11] - goal_.target[11], 2.0 * M_PI)) /
+                                       goal_.tolerance[11]
+                                 : 0.0;
+    }
     inside = e <= 1.0 ? inside + 1 : 0;
     if (inside > holdTicks) {
       o.success = true;
@@ -205,24 +233,78 @@ bool Autopilot::tryLanding(const AutopilotInput& input) {
   nextLandingTry_ = input.time + def_.landRetryPeriod;
   const double horizon = def_.landHorizon * std::min(2.0, def_.budget);
   Outcome best;
-  double bestRate = 0.0, bestDespin = 0.0;
-  for (const double despin : kDespinGains) {
-    for (const double rate : kLandRates) {
-      HelixPolicy candidate = policy_;
-      candidate.land(rate, despin);
-      const Outcome o = rollout(candidate, input, horizon, true);
-      if (o.success && (!best.success || o.time < best.time)) {
-        best = o;
-        bestRate = rate;
-        bestDespin = despin;
-      }
+  double bestRate = 0.0, psiNearest = 1e30;
+  for (const double rate : kLandRates) {
+    HelixPolicy candidate = policy_;
+    candidate.land(rate);
+    const Outcome o = rollout(candidate, input, horizon, true);
+    psiNearest = std::min(psiNearest, o.psiError);
+    if (o.success && (!best.success || o.time < best.time)) {
+      best = o;
+      bestRate = rate;
     }
-    if (best.success) break;  // the plainest landing that works
   }
-  if (!best.success) return false;
-  policy_.land(bestRate, bestDespin);
-  stats_.landedAt = input.time;
-  return true;
+  if (best.success) {
+    policy_.land(bestRate);
+    stats_.landedAt = input.time;
+    return true;
+  }
+  // The refinement reshapes the landing by millimetres: it can take spin
+  // out, but it turns psi only a little, so with a band on psi it waits for
+  // the helix to bring psi round (plain landings ending within 3 bands).
+  if (uprightError(upright) > def_.refineConsider || input.time < nextRefinement_ || psiNearest > 3.0) return false;
+  nextRefinement_ = input.time + def_.refineRetryPeriod;
+  return refineLanding(input, horizon);
+}
+
+bool Autopilot::refineLanding(const AutopilotInput& input, double horizon) {
+  // Cross-entropy search over the landing shape's knots: sample shapes about
+  // a mean, keep the best few by the smallest sum of squared normalised
+  // errors met on the way, refit the mean and spread, repeat. The first
+  // sample that the model says ends inside every band is the plan.
+  constexpr int n = 2 * LandingShape::kKnots;
+  const int population = std::max(8, static_cast<int>(std::lround(24 * def_.budget)));
+  const int elites = std::max(3, population / 5);
+  const int iterations = std::max(2, static_cast<int>(std::lround(4 * def_.budget)));
+  std::array<double, n> mean{}, spread{};
+  spread.fill(def_.refineSpread);
+  Normal normal(def_.seed ^ (0x5bd1e995ULL * static_cast<std::uint64_t>(++refinements_)));
+  std::vector<std::pair<double, std::array<double, n>>> samples(static_cast<std::size_t>(population));
+  for (int it = 0; it < iterations; ++it) {
+    for (int k = 0; k < population; ++k) {
+      std::array<double, n>& theta = samples[static_cast<std::size_t>(k)].second;
+      for (int i = 0; i < n; ++i)
+        theta[static_cast<std::size_t>(i)] =
+            mean[static_cast<std::size_t>(i)] + (k == 0 ? 0.0 : spread[static_cast<std::size_t>(i)] * normal());
+      LandingShape shape;
+      for (int j = 0; j < LandingShape::kKnots; ++j)
+        shape.knots[static_cast<std::size_t>(j)] =
+            Vec2(theta[static_cast<std::size_t>(2 * j)], theta[static_cast<std::size_t>(2 * j + 1)]);
+      HelixPolicy candidate = policy_;
+      candidate.land(def_.refineLandRate, shape);
+      const Outcome o = rollout(candidate, input, horizon, true);
+      if (o.success) {
+        policy_.land(def_.refineLandRate, shape);
+        stats_.landedAt = input.time;
+        return true;
+      }
+      samples[static_cast<std::size_t>(k)].first = o.event ? 1e30 : o.softCost;
+    }
+    std::partial_sort(samples.begin(), samples.begin() + elites, samples.end(),
+                      [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (int i = 0; i < n; ++i) {
+      double m = 0.0, v = 0.0;
+      for (int e = 0; e < elites; ++e) m += samples[static_cast<std::size_t>(e)].second[static_cast<std::size_t>(i)];
+      m /= elites;
+      for (int e = 0; e < elites; ++e) {
+        const double d = samples[static_cast<std::size_t>(e)].second[static_cast<std::size_t>(i)] - m;
+        v += d * d;
+      }
+      mean[static_cast<std::size_t>(i)] = m;
+      spread[static_cast<std::size_t>(i)] = std::sqrt(v / elites) + 1e-5;
+    }
+  }
+  return false;
 }
 
 void Autopilot::verifyLanding(const AutopilotInput& input) {

@@ -51,6 +51,14 @@ struct AutopilotDef {
   double landHorizon = 8.0;     // [s]
   double landConsider = 0.01;   // [m] c_up this close to the target: try landing
   double landRetryPeriod = 0.3; // [s] between landing searches
+  // When no plain landing works and c_up is this close: search the landing
+  // shape (HelixPolicy.h) by cross-entropy, at this fade rate, starting with
+  // this spread of the knots.
+  double refineConsider = 0.003;  // [m]
+  double refineLandRate = 0.003;  // [m/s]
+  double refineSpread = 0.002;    // [m]
+  double refineRetryPeriod = 1.0; // [s] between refinements
+  std::uint64_t seed = 0;         // the refinement's draws (same seed, same plan)
 };
 
 struct AutopilotInput {
@@ -98,11 +106,14 @@ class Autopilot {
     physics::Vec2 upright = physics::Vec2::Zero();  // c_up at the end
     double meanUprightError = 1e30;  // |c_up - target| averaged over the second half [m]
     double excess = 0.0;             // largest spin above 1.2 rad/s plus tilt above 0.9 rad
+    double softCost = 1e30;          // smallest sum of squared normalised errors on the way
+    double psiError = 1e30;          // |psi - target| / tolerance there (0 without a psi band)
   };
 
   void plan(const AutopilotInput& input);
   void steer(const AutopilotInput& input);
   bool tryLanding(const AutopilotInput& input);
+  bool refineLanding(const AutopilotInput& input, double horizon);
   void verifyLanding(const AutopilotInput& input);
   Outcome rollout(HelixPolicy policy, const AutopilotInput& input, double horizon, bool judge);
   double uprightError(const physics::Vec2& upright) const;
@@ -120,6 +131,8 @@ class Autopilot {
   double policyTime_ = 0.0;    // time the policy has been run up to [s]
   double lastSteer_ = -1e9;
   double nextLandingTry_ = 0.0;  // [s]
+  std::uint64_t refinements_ = 0;
+  double nextRefinement_ = 0.0;  // [s]
   physics::Vec3 lastProxy_ = physics::Vec3::Zero();
   std::string failure_;
   PlannerStats stats_;

@@ -32,6 +32,21 @@ double errorOver(const Goal& goal, const physics::ForceDrivenState& x, bool with
 
 }  // namespace
 
+double squaredError(const Goal& goal, const physics::ForceDrivenState& x) {
+  double sum = 0.0;
+  for (int slot = 0; slot < 12; ++slot) {
+    if (!goal.set[static_cast<std::size_t>(slot)]) continue;
+    const double e = slotError(goal, x, slot);
+    sum += e * e;
+  }
+  if (goal.omegaNormSet) {
+    const double w = std::sqrt(x[4] * x[4] + x[5] * x[5] + x[6] * x[6]);
+    const double e = (w - goal.omegaNormTarget) / goal.omegaNormTolerance;
+    sum += e * e;
+  }
+  return std::isfinite(sum) ? sum : 1e30;
+}
+
 bool Goal::any() const { return omegaNormSet || std::any_of(set.begin(), set.end(), [](bool b) { return b; }); }
 
 double normalisedError(const Goal& goal, const physics::ForceDrivenState& x) { return errorOver(goal, x, true); }

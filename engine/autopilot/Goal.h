@@ -25,6 +25,10 @@ struct Goal {
 // as the judge compares it): <= 1 means every band holds.
 double normalisedError(const Goal& goal, const physics::ForceDrivenState& x);
 
+// Sum of squared normalised errors over the set bands: a smooth measure for
+// searches (normalisedError is their max).
+double squaredError(const Goal& goal, const physics::ForceDrivenState& x);
+
 // The same, leaving out the contact point on the plane (u_a, v_a): how far
 // the rest of the state is from its bands once the hemisphere is there.
 double normalisedErrorOffContact(const Goal& goal, const physics::ForceDrivenState& x);

@@ -43,19 +43,32 @@ void HelixPolicy::setGoal(const Goal& goal) {
 
 void HelixPolicy::startAt(const Vec3& proxy) { last_ = proxy; }
 
-void HelixPolicy::land(double landRate, double despinGain) {
+Vec2 LandingShape::at(double t) const {
+  const double s = t / spacing;
+  if (s < 0.0 || s >= kKnots) return Vec2::Zero();
+  const int i = static_cast<int>(s);
+  const double f = s - i;
+  const Vec2 next = i + 1 < kKnots ? knots[static_cast<std::size_t>(i + 1)] : Vec2::Zero();
+  return (1.0 - f) * knots[static_cast<std::size_t>(i)] + f * next;
+}
+
+void HelixPolicy::land(double landRate, const LandingShape& shape) {
   params_.landRate = landRate;
-  params_.despinGain = despinGain;
+  shape_ = shape;
+  landingTime_ = 0.0;
   phase_ = HelixPhase::Land;
 }
 
 void HelixPolicy::travel() {
   phase_ = HelixPhase::Travel;
+  shape_ = {};
   settleOffset_ = Vec2::Zero();
 }
 
 void HelixPolicy::settleNow() {
   phase_ = HelixPhase::Settle;
+  shape_ = {};
+  landingTime_ = 0.0;
   radius_ = 0.0;
 }
 
@@ -69,13 +82,6 @@ Vec2 HelixPolicy::landingPoint(const Vec2& upright) const {
   if (!goal_.set[7]) want.x() = upright.x();
   if (!goal_.set[8]) want.y() = upright.y();
   return upright + limited(want - upright, landReach_);
-}
-
-Vec3 HelixPolicy::despin(const physics::ForceDrivenState& x) {
-  const double spin = x[physics::force_slot::w_z];
-  const double radius = std::min(params_.despinGain * std::abs(spin), params_.amplitude);
-  despinAngle_ = std::remainder(despinAngle_ - std::copysign(std::abs(params_.rate), spin) * dt_, 2.0 * M_PI);
-  return {radius * std::cos(despinAngle_), radius * std::sin(despinAngle_), 0.0};
 }
 
 Vec3 HelixPolicy::proxyFor(const physics::ForceDrivenState& x) {
@@ -111,9 +117,12 @@ Vec3 HelixPolicy::proxyFor(const physics::ForceDrivenState& x) {
 
     if (phase_ == HelixPhase::Land && radius_ <= 0.0) phase_ = HelixPhase::Settle;
   }
-  // last_ keeps the path; the despin circle rides on it.
+  // last_ keeps the path; the landing shape rides on it.
   last_ = proxy;
-  return phase_ == HelixPhase::Travel ? proxy : Vec3(proxy + despin(x));
+  if (phase_ == HelixPhase::Travel) return proxy;
+  const Vec2 shaped = shape_.at(landingTime_);
+  landingTime_ += dt_;
+  return proxy + Vec3(shaped.x(), shaped.y(), 0.0);
 }
 
 }  // namespace hemiroll::autopilot

@@ -18,6 +18,8 @@
 // Deterministic and cheap (a few flops per tick); copyable, so that the
 // planner can roll copies forward through the model (Autopilot.h).
 
+#include <array>
+
 #include "engine/autopilot/Goal.h"
 #include "engine/physics/HemisphereParams.h"
 #include "engine/physics/StateLayout.h"
@@ -36,14 +38,20 @@ struct HelixParams {
   // contact) per second: on the paper's masses the contact stands right under
   // a still proxy (m_p g / k_r ~ R), on others this integral finds the offset.
   double settleGain = 1.5;     // [1/s]
-  // Landing and settling leave spin about the vertical, which nothing damps
-  // once upright. Circling makes spin in its own sense, so while landing and
-  // settling the proxy circles against the measured spin, with a radius of
-  // despinGain x |w_z| (at most `amplitude`); 0 turns it off.
-  double despinGain = 0.0;     // [m s/rad]
 };
 
 enum class HelixPhase { Travel, Land, Settle };
+
+// A shape added to the proxy from the moment landing starts: offsets at
+// knots `spacing` apart, linear between them, fading to zero after the last.
+// The planner tunes them (Autopilot::refineLanding) when no plain landing
+// ends inside the bands: what it must undo is mostly spin.
+struct LandingShape {
+  static constexpr int kKnots = 8;
+  std::array<physics::Vec2, kKnots> knots{};  // [m]
+  double spacing = 0.4;                       // [s]
+  physics::Vec2 at(double t) const;           // offset t seconds into the landing [m]
+};
 
 class HelixPolicy {
  public:
@@ -52,7 +60,7 @@ class HelixPolicy {
   void setGoal(const Goal& goal);
   // Start from the current proxy (the first glide starts there).
   void startAt(const physics::Vec3& proxy);
-  void land(double landRate, double despinGain = 0.0);
+  void land(double landRate, const LandingShape& shape = {});
   void travel();
   void settleNow();
 
@@ -67,7 +75,6 @@ class HelixPolicy {
 
  private:
   physics::Vec2 contactTarget() const;
-  physics::Vec3 despin(const physics::ForceDrivenState& x);
 
   const physics::ModelConstants* constants_;
   HelixParams params_;
@@ -78,7 +85,8 @@ class HelixPolicy {
   double phaseAngle_ = 0.0, radius_ = 0.0;
   physics::Vec3 last_ = physics::Vec3::Zero();
   physics::Vec2 settleOffset_ = physics::Vec2::Zero();  // integral of the settle loop [m]
-  double despinAngle_ = 0.0;
+  LandingShape shape_;
+  double landingTime_ = 0.0;  // since landing started [s]
 };
 
 }  // namespace hemiroll::autopilot

@@ -26,7 +26,7 @@ physics::CouplingDef couplingOf(const script::BotLevelInfo& info) {
 AutopilotBot::AutopilotBot(const AutopilotBotOptions& options) : options_(options) {}
 AutopilotBot::~AutopilotBot() = default;
 
-void AutopilotBot::init(const script::BotLevelInfo& info, std::int64_t /*seed: the autopilot draws nothing*/) {
+void AutopilotBot::init(const script::BotLevelInfo& info, std::int64_t seed) {
   if (info.method == "visual")
     // "Visual only" renders no force but drives the model as its method
     // would; the level info does not say which, so the autopilot cannot
@@ -42,6 +42,7 @@ void AutopilotBot::init(const script::BotLevelInfo& info, std::int64_t /*seed: t
   def.workspace.centre = vec(info.workspaceCentre);
   def.workspace.radius = info.workspaceRadius;
   def.budget = options_.budget;
+  def.seed = static_cast<std::uint64_t>(seed);
   autopilot_ = std::make_unique<autopilot::Autopilot>(def);
 }
 
