@@ -23,7 +23,15 @@ bool sameGoal(const Goal& a, const Goal& b) {
 // wobble, faster ones less drift. The planner tries them all.
 constexpr double kMaxProxySpeed = 0.25;  // [m/s]
 
+// Share of the steering offset kept while turning psi on the spot: the
+// symmetric helix precesses steadily (about 0.5 rad/s on the paper's model);
+// strong steering on top of it tips it into a spin runaway (measured).
+constexpr double kTurnSteerShare = 0.3;
+constexpr double kTurnAmplitudeShare = 0.4;
+
 constexpr double kLandRates[] = {0.0015, 0.002, 0.003, 0.004, 0.006, 0.009};
+// Despin circle radius per rad/s of spin (HelixParams::despinGain) [m s/rad].
+constexpr double kDespinGains[] = {0.0, 0.01};
 
 // A small deterministic generator for the landing refinement: splitmix64
 // and Box-Muller, so that the same seed gives the same plan on every
@@ -94,9 +102,16 @@ ProxyCommand Autopilot::act(const AutopilotInput& input) {
     out.position = lastProxy_;
     return out;
   }
-  if (input.stage != stage_ || !sameGoal(input.goal, goal_)) {
+  if (input.stage != stage_ || !sameGoal(input.goal, given_)) {
     stage_ = input.stage;
+    given_ = input.goal;
     goal_ = input.goal;
+    // psi in two steps: first the rest of the stage (psi turns freely while
+    // the helix travels, and a landing can move it only a little), then,
+    // from rest on the target, a helix that precesses on the spot until a
+    // landing ends with psi inside its band too.
+    turningPsi_ = false;
+    goal_.set[11] = false;
     policy_.setGoal(goal_);
     failure_ = unreachableReason(goal_, def_.params, def_.workspace);
     if (!failure_.empty()) {
@@ -115,6 +130,16 @@ ProxyCommand Autopilot::act(const AutopilotInput& input) {
     out.velocity = input.massVelocity;
     lastProxy_ = out.position;
     return out;
+  }
+  if (given_.set[11] && !turningPsi_ && normalisedError(goal_, input.state) <= 1.0) {
+    turningPsi_ = true;
+    goal_ = given_;
+    policy_.setGoal(goal_);
+    policy_.travel();
+    policy_.params().amplitude = kTurnAmplitudeShare * def_.helix.amplitude;
+    policy_.params().steerLimit = kTurnSteerShare * def_.helix.steerLimit;
+    lastSteer_ = input.time;  // keep the full circle for a while before steering again
+    nextDecision_ = input.time;
   }
   if (input.time >= nextDecision_ - 1e-9) {
     plan(input);
@@ -148,7 +173,6 @@ Autopilot::Outcome Autopilot::rollout(HelixPolicy policy, const AutopilotInput& 
   ++stats_.rollouts;
   model_.reset(input.state, input.time);
   Vec3 last = lastProxy_;
-  policy.startAt(last);  // keeps the glide continuous from the real proxy
   Outcome o;
   const long long ticks = std::llround(horizon / def_.dt);
   const long long holdTicks = std::llround(goal_.hold / def_.dt);
@@ -204,11 +228,15 @@ void Autopilot::steer(const AutopilotInput& input) {
   const double baseAngle = policy_.params().steerAngle;
   const double baseAmplitude = policy_.params().amplitude;
   double bestAngle = baseAngle, bestAmplitude = baseAmplitude, bestCost = 1e30;
-  for (const double scale : {1.0, 0.7, 1.3}) {
+  // Turning psi on the spot keeps the full circle: it is what precesses.
+  const std::array<double, 3> scales = {1.0, 0.7, 1.3};
+  for (int si = 0; si < (turningPsi_ ? 1 : 3); ++si) {
+    const double scale = scales[static_cast<std::size_t>(si)];
     for (int i = -each; i <= each; ++i) {
       HelixPolicy candidate = policy_;
       candidate.params().steerAngle = baseAngle + i * def_.steerStep / each;
-      candidate.params().amplitude = std::clamp(baseAmplitude * scale, 0.3 * def_.helix.amplitude, def_.helix.amplitude);
+      candidate.params().amplitude = turningPsi_ ? baseAmplitude
+                                                 : std::clamp(baseAmplitude * scale, 0.3 * def_.helix.amplitude, def_.helix.amplitude);
       const Outcome o = rollout(candidate, input, def_.steerHorizon, false);
       // A candidate that tips over or throws the mass point off is never
       // kept; fast spin and deep tilts are what lead there, so they cost.
@@ -233,26 +261,35 @@ bool Autopilot::tryLanding(const AutopilotInput& input) {
   nextLandingTry_ = input.time + def_.landRetryPeriod;
   const double horizon = def_.landHorizon * std::min(2.0, def_.budget);
   Outcome best;
-  double bestRate = 0.0, psiNearest = 1e30;
-  for (const double rate : kLandRates) {
-    HelixPolicy candidate = policy_;
-    candidate.land(rate);
-    const Outcome o = rollout(candidate, input, horizon, true);
-    psiNearest = std::min(psiNearest, o.psiError);
-    if (o.success && (!best.success || o.time < best.time)) {
-      best = o;
-      bestRate = rate;
+  double bestRate = 0.0, bestDespin = 0.0, psiNearest = 1e30;
+  for (const double despin : kDespinGains) {
+    for (const double rate : kLandRates) {
+      HelixPolicy candidate = policy_;
+      candidate.land(rate, despin);
+      const Outcome o = rollout(candidate, input, horizon, true);
+      psiNearest = std::min(psiNearest, o.psiError);
+      if (o.success && (!best.success || o.time < best.time)) {
+        best = o;
+        bestRate = rate;
+        bestDespin = despin;
+      }
     }
+    if (best.success) break;  // the plainest landing that works
   }
   if (best.success) {
-    policy_.land(bestRate);
+    policy_.land(bestRate, bestDespin);
     stats_.landedAt = input.time;
     return true;
   }
   // The refinement reshapes the landing by millimetres: it can take spin
   // out, but it turns psi only a little, so with a band on psi it waits for
   // the helix to bring psi round (plain landings ending within 3 bands).
-  if (uprightError(upright) > def_.refineConsider || input.time < nextRefinement_ || psiNearest > 3.0) return false;
+  // It is for stages that end at rest (a band on omega); a stage the
+  // hemisphere only passes through needs none, and a shape tuned to swing
+  // through its band would hand the next stage a wild start.
+  const bool atRest = goal_.set[4] || goal_.set[5] || goal_.set[6] || goal_.omegaNormSet;
+  if (!atRest || uprightError(upright) > def_.refineConsider || input.time < nextRefinement_ || psiNearest > 3.0)
+    return false;
   nextRefinement_ = input.time + def_.refineRetryPeriod;
   return refineLanding(input, horizon);
 }
@@ -281,10 +318,10 @@ bool Autopilot::refineLanding(const AutopilotInput& input, double horizon) {
         shape.knots[static_cast<std::size_t>(j)] =
             Vec2(theta[static_cast<std::size_t>(2 * j)], theta[static_cast<std::size_t>(2 * j + 1)]);
       HelixPolicy candidate = policy_;
-      candidate.land(def_.refineLandRate, shape);
+      candidate.land(def_.refineLandRate, 0.0, shape);
       const Outcome o = rollout(candidate, input, horizon, true);
       if (o.success) {
-        policy_.land(def_.refineLandRate, shape);
+        policy_.land(def_.refineLandRate, 0.0, shape);
         stats_.landedAt = input.time;
         return true;
       }

@@ -124,7 +124,9 @@ class Autopilot {
   physics::ModelConstants constants_;
   HelixPolicy policy_;
   PlantModel model_;
-  Goal goal_;
+  Goal given_;  // the stage's goal as given
+  Goal goal_;   // the one pursued now (given_ without psi until the rest holds)
+  bool turningPsi_ = false;
   int stage_ = -1;
   bool started_ = false;
   double nextDecision_ = 0.0;  // [s]

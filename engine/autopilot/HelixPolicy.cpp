@@ -52,8 +52,9 @@ Vec2 LandingShape::at(double t) const {
   return (1.0 - f) * knots[static_cast<std::size_t>(i)] + f * next;
 }
 
-void HelixPolicy::land(double landRate, const LandingShape& shape) {
+void HelixPolicy::land(double landRate, double despinGain, const LandingShape& shape) {
   params_.landRate = landRate;
+  params_.despinGain = despinGain;
   shape_ = shape;
   landingTime_ = 0.0;
   phase_ = HelixPhase::Land;
@@ -82,6 +83,13 @@ Vec2 HelixPolicy::landingPoint(const Vec2& upright) const {
   if (!goal_.set[7]) want.x() = upright.x();
   if (!goal_.set[8]) want.y() = upright.y();
   return upright + limited(want - upright, landReach_);
+}
+
+Vec3 HelixPolicy::despin(const physics::ForceDrivenState& x) {
+  const double spin = x[physics::force_slot::w_z];
+  const double radius = std::min(params_.despinGain * std::abs(spin), params_.amplitude);
+  despinAngle_ = std::remainder(despinAngle_ - std::copysign(std::abs(params_.rate), spin) * dt_, 2.0 * M_PI);
+  return {radius * std::cos(despinAngle_), radius * std::sin(despinAngle_), 0.0};
 }
 
 Vec3 HelixPolicy::proxyFor(const physics::ForceDrivenState& x) {
@@ -122,7 +130,7 @@ Vec3 HelixPolicy::proxyFor(const physics::ForceDrivenState& x) {
   if (phase_ == HelixPhase::Travel) return proxy;
   const Vec2 shaped = shape_.at(landingTime_);
   landingTime_ += dt_;
-  return proxy + Vec3(shaped.x(), shaped.y(), 0.0);
+  return proxy + despin(x) + Vec3(shaped.x(), shaped.y(), 0.0);
 }
 
 }  // namespace hemiroll::autopilot

@@ -38,6 +38,12 @@ struct HelixParams {
   // contact) per second: on the paper's masses the contact stands right under
   // a still proxy (m_p g / k_r ~ R), on others this integral finds the offset.
   double settleGain = 1.5;     // [1/s]
+  // While landing and settling the proxy may also circle against the
+  // measured spin, radius despinGain x |w_z| (at most `amplitude`), since
+  // circling makes spin in its own sense. It rescues some landings (measured:
+  // tutorial 04, the time trial), not the spin the paper-like helix leaves
+  // (that is the landing shape's job); 0 turns it off.
+  double despinGain = 0.0;     // [m s/rad]
 };
 
 enum class HelixPhase { Travel, Land, Settle };
@@ -60,7 +66,7 @@ class HelixPolicy {
   void setGoal(const Goal& goal);
   // Start from the current proxy (the first glide starts there).
   void startAt(const physics::Vec3& proxy);
-  void land(double landRate, const LandingShape& shape = {});
+  void land(double landRate, double despinGain = 0.0, const LandingShape& shape = {});
   void travel();
   void settleNow();
 
@@ -75,6 +81,7 @@ class HelixPolicy {
 
  private:
   physics::Vec2 contactTarget() const;
+  physics::Vec3 despin(const physics::ForceDrivenState& x);
 
   const physics::ModelConstants* constants_;
   HelixParams params_;
@@ -86,6 +93,7 @@ class HelixPolicy {
   physics::Vec3 last_ = physics::Vec3::Zero();
   physics::Vec2 settleOffset_ = physics::Vec2::Zero();  // integral of the settle loop [m]
   LandingShape shape_;
+  double despinAngle_ = 0.0;
   double landingTime_ = 0.0;  // since landing started [s]
 };
 
