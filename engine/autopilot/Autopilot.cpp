@@ -15,6 +15,13 @@ using physics::Vec3;
 namespace {
 
 bool sameGoal(const Goal& a, const Goal& b) {
+  if (a.zoneCount != b.zoneCount) return false;
+  for (int i = 0; i < a.zoneCount; ++i) {
+    const Zone& za = a.zones[static_cast<std::size_t>(i)];
+    const Zone& zb = b.zones[static_cast<std::size_t>(i)];
+    if (za.circle != zb.circle || za.centre != zb.centre || za.radius != zb.radius || za.min != zb.min || za.max != zb.max)
+      return false;
+  }
   return a.target == b.target && a.tolerance == b.tolerance && a.set == b.set && a.omegaNormSet == b.omegaNormSet &&
          a.omegaNormTarget == b.omegaNormTarget && a.omegaNormTolerance == b.omegaNormTolerance && a.hold == b.hold;
 }
@@ -184,7 +191,7 @@ Autopilot::Outcome Autopilot::rollout(HelixPolicy policy, const AutopilotInput& 
     const Vec3 proxy = deliverable(policy.proxyFor(model_.state()), last);
     const Vec3 velocity = (proxy - last) / def_.dt;
     last = proxy;
-    if (model_.tick(proxy, velocity) != physics::DomainEvent::None) {
+    if (model_.tick(proxy, velocity) != physics::DomainEvent::None || inForbiddenZone(goal_, model_.state())) {
       o.event = true;
       break;
     }

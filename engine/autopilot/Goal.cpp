@@ -47,6 +47,20 @@ double squaredError(const Goal& goal, const physics::ForceDrivenState& x) {
   return std::isfinite(sum) ? sum : 1e30;
 }
 
+double Zone::clearance(const physics::Vec2& point) const {
+  if (circle) return (point - centre).norm() - radius;
+  const physics::Vec2 outside = (min - point).cwiseMax(point - max);
+  if (outside.maxCoeff() <= 0.0) return outside.maxCoeff();
+  return outside.cwiseMax(0.0).norm();
+}
+
+bool inForbiddenZone(const Goal& goal, const physics::ForceDrivenState& x) {
+  const physics::Vec2 contact(x[physics::force_slot::u_a], x[physics::force_slot::v_a]);
+  for (int i = 0; i < goal.zoneCount; ++i)
+    if (goal.zones[static_cast<std::size_t>(i)].clearance(contact) <= 0.0) return true;
+  return false;
+}
+
 bool Goal::any() const { return omegaNormSet || std::any_of(set.begin(), set.end(), [](bool b) { return b; }); }
 
 double normalisedError(const Goal& goal, const physics::ForceDrivenState& x) { return errorOver(goal, x, true); }

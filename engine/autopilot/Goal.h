@@ -9,17 +9,34 @@
 
 namespace hemiroll::autopilot {
 
+// A region of the plane the contact point must never enter.
+struct Zone {
+  bool circle = true;
+  physics::Vec2 centre = physics::Vec2::Zero();  // circle [m]
+  double radius = 0.0;                           // circle [m]
+  physics::Vec2 min = physics::Vec2::Zero(), max = physics::Vec2::Zero();  // box [m]
+
+  // Distance from the zone's edge, negative inside [m].
+  double clearance(const physics::Vec2& point) const;
+};
+
 struct Goal {
+  static constexpr int kMaxZones = 8;
   std::array<double, 12> target{};
   std::array<double, 12> tolerance{};  // half-widths, > 0 where set
   std::array<bool, 12> set{};
   bool omegaNormSet = false;
   double omegaNormTarget = 0.0, omegaNormTolerance = 0.0;  // [rad/s]
   double hold = 0.0;  // how long the bands must hold [s]
+  std::array<Zone, kMaxZones> zones{};  // forbidden to the contact point
+  int zoneCount = 0;
 
   bool contactSet() const { return set[7] || set[8]; }
   bool any() const;
 };
+
+// Whether the contact point of x is inside a forbidden zone.
+bool inForbiddenZone(const Goal& goal, const physics::ForceDrivenState& x);
 
 // The largest |x - target| / tolerance over the set bands (psi modulo 2 pi,
 // as the judge compares it): <= 1 means every band holds.

@@ -85,6 +85,29 @@ Vec2 HelixPolicy::landingPoint(const Vec2& upright) const {
   return upright + limited(want - upright, landReach_);
 }
 
+Vec2 HelixPolicy::detour(const Vec2& contact, const Vec2& land) const {
+  // Settling rolls the contact straight to the landing point; a forbidden
+  // zone in the way is passed on the side the contact is already on, at a
+  // waypoint its own size plus 1 mm beside it (a box counts as its circle).
+  const Vec2 path = land - contact;
+  const double length = path.norm();
+  if (length < 1e-9) return land;
+  const Vec2 along = path / length;
+  for (int i = 0; i < goal_.zoneCount; ++i) {
+    const Zone& z = goal_.zones[static_cast<std::size_t>(i)];
+    const Vec2 centre = z.circle ? z.centre : Vec2(0.5 * (z.min + z.max));
+    const double radius = z.circle ? z.radius : 0.5 * (z.max - z.min).norm();
+    const double reach = radius + 0.5 * radius + 0.001;
+    const double s = std::clamp((centre - contact).dot(along), 0.0, length);
+    if ((contact + s * along - centre).norm() >= reach) continue;  // the path clears it
+    Vec2 side(-along.y(), along.x());
+    if (side.dot(contact - centre) < 0.0) side = -side;
+    const Vec2 waypoint = centre + (reach + 0.5 * radius) * side;
+    if ((waypoint - contact).norm() > 0.5 * radius) return waypoint;
+  }
+  return land;
+}
+
 Vec3 HelixPolicy::despin(const physics::ForceDrivenState& x) {
   const double spin = x[physics::force_slot::w_z];
   const double radius = std::min(params_.despinGain * std::abs(spin), params_.amplitude);
@@ -98,7 +121,7 @@ Vec3 HelixPolicy::proxyFor(const physics::ForceDrivenState& x) {
   const UprightContact up = uprightContact(*constants_, x);
   Vec3 proxy;
   if (phase_ == HelixPhase::Settle) {
-    const Vec2 land = landingPoint(up.point);
+    const Vec2 land = detour(Vec2(x[u_a], x[v_a]), landingPoint(up.point));
     const Vec2 error = land - Vec2(x[u_a], x[v_a]);
     settleOffset_ += limited(params_.settleGain * error, params_.glideSpeed) * dt_;
     settleOffset_ = limited(settleOffset_, 0.5 * R);

@@ -82,6 +82,7 @@ class HelixPolicy {
  private:
   physics::Vec2 contactTarget() const;
   physics::Vec3 despin(const physics::ForceDrivenState& x);
+  physics::Vec2 detour(const physics::Vec2& contact, const physics::Vec2& land) const;
 
   const physics::ModelConstants* constants_;
   HelixParams params_;

@@ -33,6 +33,16 @@ struct BotObservation {
   std::array<bool, 12> targetSet{};
   bool omegaNormSet = false;         // a band on |omega| (not one of the twelve slots)
   double omegaNormTarget = 0.0, omegaNormTolerance = 0.0;  // [rad/s]
+  // Forbidden zones of the task (the contact point must never enter them),
+  // the first kMaxZones of them: a circle (centre, radius) or a box (min, max).
+  static constexpr int kMaxZones = 8;
+  struct Zone {
+    bool circle = true;
+    double centreX = 0.0, centreY = 0.0, radius = 0.0;  // circle [m]
+    double minX = 0.0, minY = 0.0, maxX = 0.0, maxY = 0.0;  // box [m]
+  };
+  std::array<Zone, kMaxZones> zones{};
+  int zoneCount = 0;
   double timeLimit = 0.0;            // [s]; 0 = none
   double holdTime = 0.0;             // how long the target must hold [s]
   double held = 0.0;                 // how long it has held so far [s]

@@ -1,5 +1,7 @@
 #include "game/play/AutopilotBot.h"
 
+#include <algorithm>
+
 #include "engine/script/ScriptError.h"
 
 namespace hemiroll::game {
@@ -62,6 +64,16 @@ script::BotAction AutopilotBot::act(const script::BotObservation& obs) {
   goal.omegaNormTarget = obs.omegaNormTarget;
   goal.omegaNormTolerance = obs.omegaNormTolerance;
   goal.hold = obs.holdTime;
+  goal.zoneCount = std::min(obs.zoneCount, autopilot::Goal::kMaxZones);
+  for (int i = 0; i < goal.zoneCount; ++i) {
+    const script::BotObservation::Zone& z = obs.zones[static_cast<std::size_t>(i)];
+    autopilot::Zone& out = goal.zones[static_cast<std::size_t>(i)];
+    out.circle = z.circle;
+    out.centre = physics::Vec2(z.centreX, z.centreY);
+    out.radius = z.radius;
+    out.min = physics::Vec2(z.minX, z.minY);
+    out.max = physics::Vec2(z.maxX, z.maxY);
+  }
   const autopilot::ProxyCommand command = autopilot_->act(input_);
   script::BotAction action;
   action.position = triple(command.position);

@@ -1,5 +1,7 @@
 #include "game/play/ObservationBuilder.h"
 
+#include <algorithm>
+
 #include "engine/physics/ForceDrivenSystem.h"
 
 namespace hemiroll::game {
@@ -41,6 +43,20 @@ void ObservationBuilder::fill(double time, const physics::ForceDrivenState& x, c
     out.omegaNormSet = true;
     out.omegaNormTarget = c.target;
     out.omegaNormTolerance = c.tolerance;
+  }
+  const auto& forbidden = judge.task().forbidden;
+  out.zoneCount = static_cast<int>(std::min<std::size_t>(forbidden.size(), script::BotObservation::kMaxZones));
+  for (int i = 0; i < out.zoneCount; ++i) {
+    const script::ZoneDef& z = forbidden[static_cast<std::size_t>(i)];
+    script::BotObservation::Zone& o = out.zones[static_cast<std::size_t>(i)];
+    o.circle = z.shape == script::ZoneShape::Circle;
+    o.centreX = z.center[0];
+    o.centreY = z.center[1];
+    o.radius = z.radius;
+    o.minX = z.min[0];
+    o.minY = z.min[1];
+    o.maxX = z.max[0];
+    o.maxY = z.max[1];
   }
   out.timeLimit = judge.task().timeLimit;
   out.holdTime = judge.requiredHold();
