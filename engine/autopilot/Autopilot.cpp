@@ -295,7 +295,11 @@ bool Autopilot::tryLanding(const AutopilotInput& input) {
   // hemisphere only passes through needs none, and a shape tuned to swing
   // through its band would hand the next stage a wild start.
   const bool atRest = goal_.set[4] || goal_.set[5] || goal_.set[6] || goal_.omegaNormSet;
-  if (!atRest || uprightError(upright) > def_.refineConsider || input.time < nextRefinement_ || psiNearest > 3.0)
+  // Landing from a shallow tilt leaves less to undo: the hovering helix
+  // wobbles between about 0.2 and 0.6 rad, so the search waits for the low.
+  const double tilt = uprightContact(constants_, input.state).tilt;
+  if (!atRest || uprightError(upright) > def_.refineConsider || input.time < nextRefinement_ || psiNearest > 3.0 ||
+      tilt > def_.refineTilt)
     return false;
   nextRefinement_ = input.time + def_.refineRetryPeriod;
   return refineLanding(input, horizon);
@@ -307,9 +311,9 @@ bool Autopilot::refineLanding(const AutopilotInput& input, double horizon) {
   // errors met on the way, refit the mean and spread, repeat. The first
   // sample that the model says ends inside every band is the plan.
   constexpr int n = 2 * LandingShape::kKnots;
-  const int population = std::max(8, static_cast<int>(std::lround(24 * def_.budget)));
+  const int population = std::max(8, static_cast<int>(std::lround(32 * def_.budget)));
   const int elites = std::max(3, population / 5);
-  const int iterations = std::max(2, static_cast<int>(std::lround(4 * def_.budget)));
+  const int iterations = std::max(2, static_cast<int>(std::lround(8 * def_.budget)));
   std::array<double, n> mean{}, spread{};
   spread.fill(def_.refineSpread);
   Normal normal(def_.seed ^ (0x5bd1e995ULL * static_cast<std::uint64_t>(++refinements_)));

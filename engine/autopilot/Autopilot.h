@@ -58,6 +58,7 @@ struct AutopilotDef {
   double refineLandRate = 0.003;  // [m/s]
   double refineSpread = 0.002;    // [m]
   double refineRetryPeriod = 1.0; // [s] between refinements
+  double refineTilt = 0.35;       // [rad] refine only below this tilt
   std::uint64_t seed = 0;         // the refinement's draws (same seed, same plan)
 };
 
