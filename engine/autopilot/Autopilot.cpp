@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 
+#include "engine/autopilot/PlannerWorker.h"
 #include "engine/autopilot/UprightContact.h"
 
 namespace hemiroll::autopilot {
@@ -29,6 +30,10 @@ bool sameGoal(const Goal& a, const Goal& b) {
 // Landing fades the circle at these rates [m/s]; slower landings leave less
 // wobble, faster ones less drift. The planner tries them all.
 constexpr double kMaxProxySpeed = 0.25;  // [m/s]
+
+// How long a rollout goes on after the bands first held, to see that the
+// hemisphere stays in its domain [s].
+constexpr double kAfterSuccess = 1.0;
 
 // Share of the steering offset kept while turning psi on the spot: the
 // symmetric helix precesses steadily (about 0.5 rad/s on the paper's model);
@@ -68,17 +73,21 @@ Autopilot::Autopilot(const AutopilotDef& def)
     : def_(def),
       constants_(def.params),
       policy_(constants_, def.helix, def.dt),
+      work_(policy_),
       model_(def.params, def.coupling, def.dt) {
   def_.budget = std::clamp(def_.budget, 0.25, 4.0);
   stats_.decisionWall.reserve(4096);
+  if (def_.plannerThread) worker_ = std::make_unique<PlannerWorker>([this](const PlanJob& j) { return plan(j); });
 }
 
-Vec3 Autopilot::deliverable(const Vec3& wanted, const Vec3& last) const {
+Autopilot::~Autopilot() = default;
+
+Vec3 Autopilot::deliverable(const Vec3& wanted, const Vec3& last, long long ticks) const {
   // A hand moves the stylus smoothly: at most kMaxProxySpeed, far below the
   // device's velocity guard (2 m/s), so that a jump of the plan (a new stage,
   // a new steering angle) never trips it.
   Vec3 step = insideWorkspace(wanted) - last;
-  const double most = kMaxProxySpeed * def_.dt;
+  const double most = kMaxProxySpeed * static_cast<double>(ticks) * def_.dt;
   if (step.norm() > most) step *= most / step.norm();
   return last + step;
 }
@@ -92,10 +101,10 @@ Vec3 Autopilot::insideWorkspace(const Vec3& p) const {
 }
 
 double Autopilot::uprightError(const Vec2& upright) const {
-  if (!goal_.contactSet()) return 0.0;
+  if (!planGoal_.contactSet()) return 0.0;
   Vec2 d = Vec2::Zero();
-  if (goal_.set[7]) d.x() = goal_.target[7] - upright.x();
-  if (goal_.set[8]) d.y() = goal_.target[8] - upright.y();
+  if (planGoal_.set[7]) d.x() = planGoal_.target[7] - upright.x();
+  if (planGoal_.set[8]) d.y() = planGoal_.target[8] - upright.y();
   return d.norm();
 }
 
@@ -110,6 +119,7 @@ ProxyCommand Autopilot::act(const AutopilotInput& input) {
     return out;
   }
   if (input.stage != stage_ || !sameGoal(input.goal, given_)) {
+    ++generation_;  // a plan still running for the old goal is dropped
     stage_ = input.stage;
     given_ = input.goal;
     goal_ = input.goal;
@@ -127,7 +137,7 @@ ProxyCommand Autopilot::act(const AutopilotInput& input) {
     }
     if (goal_.contactSet()) policy_.travel();
     else policy_.settleNow();
-    lastSteer_ = -1e9;
+    resetPlanner_ = true;
   }
   if (!input.engaged) {
     // Take hold: bring the proxy onto the mass point, as a player does.
@@ -145,11 +155,16 @@ ProxyCommand Autopilot::act(const AutopilotInput& input) {
     policy_.travel();
     policy_.params().amplitude = kTurnAmplitudeShare * def_.helix.amplitude;
     policy_.params().steerLimit = kTurnSteerShare * def_.helix.steerLimit;
-    lastSteer_ = input.time;  // keep the full circle for a while before steering again
+    ++generation_;
+    holdSteer_ = true;  // keep the gentle circle for a while before steering again
     nextDecision_ = input.time;
   }
-  if (input.time >= nextDecision_ - 1e-9) {
-    plan(input);
+  if (def_.plannerThread) {
+    Decision ready;
+    if (worker_->take(ready) && ready.generation == generation_) apply(ready);
+    if (input.time >= nextDecision_ - 1e-9 && worker_->post(job(input))) nextDecision_ = input.time + def_.decisionPeriod;
+  } else if (input.time >= nextDecision_ - 1e-9) {
+    apply(plan(job(input)));
     nextDecision_ = input.time + def_.decisionPeriod;
   }
   // One policy step per servo tick since the last call: headless that is
@@ -158,31 +173,68 @@ ProxyCommand Autopilot::act(const AutopilotInput& input) {
   policyTime_ = input.time;
   Vec3 proxy;
   for (long long i = 0; i < steps; ++i) proxy = policy_.proxyFor(input.state);
-  out.position = deliverable(proxy, lastProxy_);
-  out.velocity = (out.position - lastProxy_) / def_.dt;
+  out.position = deliverable(proxy, lastProxy_, steps);
+  // Over the ticks this call stands for, so that a device that extrapolates
+  // with it (real-time hand-over) follows the same path.
+  out.velocity = (out.position - lastProxy_) / (static_cast<double>(steps) * def_.dt);
   lastProxy_ = out.position;
   return out;
 }
 
-void Autopilot::plan(const AutopilotInput& input) {
+
+Autopilot::PlanJob Autopilot::job(const AutopilotInput& input) {
+  PlanJob j(policy_);
+  j.input = input;
+  j.goal = goal_;
+  j.turning = turningPsi_;
+  j.lastProxy = lastProxy_;
+  j.generation = generation_;
+  j.resetTimers = resetPlanner_;
+  j.holdSteer = holdSteer_;
+  resetPlanner_ = holdSteer_ = false;
+  return j;
+}
+
+void Autopilot::apply(const Decision& d) {
+  if (d.steer) {
+    policy_.params().steerAngle = d.steerAngle;
+    policy_.params().amplitude = d.amplitude;
+  }
+  if (d.action == Decision::Action::Land && policy_.phase() == HelixPhase::Travel)
+    policy_.land(d.landRate, d.despin, d.shape);
+  else if (d.action == Decision::Action::Travel)
+    policy_.travel();
+}
+
+Autopilot::Decision Autopilot::plan(const PlanJob& job) {
   const auto start = std::chrono::steady_clock::now();
+  const AutopilotInput& input = job.input;
+  work_ = job.policy;
+  planGoal_ = job.goal;
+  planTurning_ = job.turning;
+  planLastProxy_ = job.lastProxy;
+  decision_ = Decision{};
+  decision_.generation = job.generation;
+  if (job.resetTimers) lastSteer_ = -1e9;
+  if (job.holdSteer) lastSteer_ = input.time;
   ++stats_.decisions;
-  if (policy_.phase() == HelixPhase::Travel) {
+  if (work_.phase() == HelixPhase::Travel) {
     if (input.time - lastSteer_ >= def_.steerPeriod - 1e-9) steer(input);
     tryLanding(input);
   } else {
     verifyLanding(input);
   }
   stats_.decisionWall.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  return decision_;
 }
 
 Autopilot::Outcome Autopilot::rollout(HelixPolicy policy, const AutopilotInput& input, double horizon, bool judge) {
   ++stats_.rollouts;
   model_.reset(input.state, input.time);
-  Vec3 last = lastProxy_;
+  Vec3 last = planLastProxy_;
   Outcome o;
-  const long long ticks = std::llround(horizon / def_.dt);
-  const long long holdTicks = std::llround(goal_.hold / def_.dt);
+  long long ticks = std::llround(horizon / def_.dt);
+  const long long holdTicks = std::llround(planGoal_.hold / def_.dt);
   long long inside = 0;
   long long k = 0;
   double meanError = 0.0;
@@ -191,10 +243,12 @@ Autopilot::Outcome Autopilot::rollout(HelixPolicy policy, const AutopilotInput& 
     const Vec3 proxy = deliverable(policy.proxyFor(model_.state()), last);
     const Vec3 velocity = (proxy - last) / def_.dt;
     last = proxy;
-    if (model_.tick(proxy, velocity) != physics::DomainEvent::None || inForbiddenZone(goal_, model_.state())) {
+    if (model_.tick(proxy, velocity) != physics::DomainEvent::None || inForbiddenZone(planGoal_, model_.state())) {
       o.event = true;
+      o.success = false;
       break;
     }
+    if (o.success) continue;
     if (!judge) {
       // The second half of the horizon: c_up rides a loop per turn of the
       // helix, so its mean, not its last value, says where the drift goes.
@@ -206,20 +260,23 @@ Autopilot::Outcome Autopilot::rollout(HelixPolicy policy, const AutopilotInput& 
       }
       continue;
     }
-    const double e = normalisedError(goal_, model_.state());
+    const double e = normalisedError(planGoal_, model_.state());
     o.bestError = std::min(o.bestError, e);
-    const double soft = squaredError(goal_, model_.state());
+    const double soft = squaredError(planGoal_, model_.state());
     if (soft < o.softCost) {
       o.softCost = soft;
-      o.psiError = goal_.set[11] ? std::abs(std::remainder(model_.state()[11] - goal_.target[11], 2.0 * M_PI)) /
-                                       goal_.tolerance[11]
+      o.psiError = planGoal_.set[11] ? std::abs(std::remainder(model_.state()[11] - planGoal_.target[11], 2.0 * M_PI)) /
+                                       planGoal_.tolerance[11]
                                  : 0.0;
     }
     inside = e <= 1.0 ? inside + 1 : 0;
-    if (inside > holdTicks) {
+    if (inside > holdTicks && !o.success) {
+      // Held: but a plan that swings through the bands and tips over a
+      // moment later hands the next stage a wreck, so it must also stay in
+      // the domain for kAfterSuccess more.
       o.success = true;
       o.time = static_cast<double>(k + 1) * def_.dt;
-      break;
+      ticks = std::min(ticks, k + 1 + std::llround(kAfterSuccess / def_.dt));
     }
   }
   stats_.rolloutSeconds += static_cast<double>(k) * def_.dt;
@@ -230,19 +287,19 @@ Autopilot::Outcome Autopilot::rollout(HelixPolicy policy, const AutopilotInput& 
 
 void Autopilot::steer(const AutopilotInput& input) {
   lastSteer_ = input.time;
-  if (!goal_.contactSet()) return;
+  if (!planGoal_.contactSet()) return;
   const int each = std::max(1, static_cast<int>(std::lround(def_.budget)));
-  const double baseAngle = policy_.params().steerAngle;
-  const double baseAmplitude = policy_.params().amplitude;
+  const double baseAngle = work_.params().steerAngle;
+  const double baseAmplitude = work_.params().amplitude;
   double bestAngle = baseAngle, bestAmplitude = baseAmplitude, bestCost = 1e30;
   // Turning psi on the spot keeps the full circle: it is what precesses.
   const std::array<double, 3> scales = {1.0, 0.7, 1.3};
-  for (int si = 0; si < (turningPsi_ ? 1 : 3); ++si) {
+  for (int si = 0; si < (planTurning_ ? 1 : 3); ++si) {
     const double scale = scales[static_cast<std::size_t>(si)];
     for (int i = -each; i <= each; ++i) {
-      HelixPolicy candidate = policy_;
+      HelixPolicy candidate = work_;
       candidate.params().steerAngle = baseAngle + i * def_.steerStep / each;
-      candidate.params().amplitude = turningPsi_ ? baseAmplitude
+      candidate.params().amplitude = planTurning_ ? baseAmplitude
                                                  : std::clamp(baseAmplitude * scale, 0.3 * def_.helix.amplitude, def_.helix.amplitude);
       const Outcome o = rollout(candidate, input, def_.steerHorizon, false);
       // A candidate that tips over or throws the mass point off is never
@@ -255,8 +312,11 @@ void Autopilot::steer(const AutopilotInput& input) {
       }
     }
   }
-  policy_.params().steerAngle = std::remainder(bestAngle, 2.0 * M_PI);
-  policy_.params().amplitude = bestAmplitude;
+  work_.params().steerAngle = std::remainder(bestAngle, 2.0 * M_PI);
+  work_.params().amplitude = bestAmplitude;
+  decision_.steer = true;
+  decision_.steerAngle = work_.params().steerAngle;
+  decision_.amplitude = bestAmplitude;
 }
 
 bool Autopilot::tryLanding(const AutopilotInput& input) {
@@ -271,7 +331,7 @@ bool Autopilot::tryLanding(const AutopilotInput& input) {
   double bestRate = 0.0, bestDespin = 0.0, psiNearest = 1e30;
   for (const double despin : kDespinGains) {
     for (const double rate : kLandRates) {
-      HelixPolicy candidate = policy_;
+      HelixPolicy candidate = work_;
       candidate.land(rate, despin);
       const Outcome o = rollout(candidate, input, horizon, true);
       psiNearest = std::min(psiNearest, o.psiError);
@@ -284,7 +344,10 @@ bool Autopilot::tryLanding(const AutopilotInput& input) {
     if (best.success) break;  // the plainest landing that works
   }
   if (best.success) {
-    policy_.land(bestRate, bestDespin);
+    work_.land(bestRate, bestDespin);
+    decision_.action = Decision::Action::Land;
+    decision_.landRate = bestRate;
+    decision_.despin = bestDespin;
     stats_.landedAt = input.time;
     return true;
   }
@@ -294,7 +357,7 @@ bool Autopilot::tryLanding(const AutopilotInput& input) {
   // It is for stages that end at rest (a band on omega); a stage the
   // hemisphere only passes through needs none, and a shape tuned to swing
   // through its band would hand the next stage a wild start.
-  const bool atRest = goal_.set[4] || goal_.set[5] || goal_.set[6] || goal_.omegaNormSet;
+  const bool atRest = planGoal_.set[4] || planGoal_.set[5] || planGoal_.set[6] || planGoal_.omegaNormSet;
   // Landing from a shallow tilt leaves less to undo: the hovering helix
   // wobbles between about 0.2 and 0.6 rad, so the search waits for the low.
   const double tilt = uprightContact(constants_, input.state).tilt;
@@ -314,9 +377,15 @@ bool Autopilot::refineLanding(const AutopilotInput& input, double horizon) {
   const int population = std::max(8, static_cast<int>(std::lround(32 * def_.budget)));
   const int elites = std::max(3, population / 5);
   const int iterations = std::max(2, static_cast<int>(std::lround(8 * def_.budget)));
+  // Successive searches vary the fade rate and the first spread, so that a
+  // hover that defeats one setting meets another.
+  const std::uint64_t attempt = ++refinements_;
+  constexpr double kRateScale[] = {1.0, 0.5, 2.0};
+  constexpr double kSpreadScale[] = {1.0, 1.5, 0.75};
+  const double landRate = def_.refineLandRate * kRateScale[attempt % 3];
   std::array<double, n> mean{}, spread{};
-  spread.fill(def_.refineSpread);
-  Normal normal(def_.seed ^ (0x5bd1e995ULL * static_cast<std::uint64_t>(++refinements_)));
+  spread.fill(def_.refineSpread * kSpreadScale[(attempt / 3) % 3]);
+  Normal normal(def_.seed ^ (0x5bd1e995ULL * attempt));
   std::vector<std::pair<double, std::array<double, n>>> samples(static_cast<std::size_t>(population));
   for (int it = 0; it < iterations; ++it) {
     for (int k = 0; k < population; ++k) {
@@ -328,11 +397,15 @@ bool Autopilot::refineLanding(const AutopilotInput& input, double horizon) {
       for (int j = 0; j < LandingShape::kKnots; ++j)
         shape.knots[static_cast<std::size_t>(j)] =
             Vec2(theta[static_cast<std::size_t>(2 * j)], theta[static_cast<std::size_t>(2 * j + 1)]);
-      HelixPolicy candidate = policy_;
-      candidate.land(def_.refineLandRate, 0.0, shape);
+      HelixPolicy candidate = work_;
+      candidate.land(landRate, 0.0, shape);
       const Outcome o = rollout(candidate, input, horizon, true);
       if (o.success) {
-        policy_.land(def_.refineLandRate, 0.0, shape);
+        work_.land(landRate, 0.0, shape);
+        decision_.action = Decision::Action::Land;
+        decision_.landRate = landRate;
+        decision_.despin = 0.0;
+        decision_.shape = shape;
         stats_.landedAt = input.time;
         return true;
       }
@@ -358,11 +431,12 @@ bool Autopilot::refineLanding(const AutopilotInput& input, double horizon) {
 void Autopilot::verifyLanding(const AutopilotInput& input) {
   // Every few decisions is enough: the landing takes seconds.
   if (stats_.decisions % 3 != 0) return;
-  const Outcome o = rollout(policy_, input, def_.landHorizon, true);
+  const Outcome o = rollout(work_, input, def_.landHorizon, true);
   if (o.success) return;
   const Vec2 upright = uprightContact(constants_, input.state).point;
   if (uprightError(upright) > def_.landConsider || o.event) {
-    policy_.travel();
+    work_.travel();
+    decision_.action = Decision::Action::Travel;
     lastSteer_ = -1e9;
   }
 }

@@ -25,6 +25,7 @@
 // Deterministic: same inputs, same outputs, bit for bit.
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -60,6 +61,11 @@ struct AutopilotDef {
   double refineRetryPeriod = 1.0; // [s] between refinements
   double refineTilt = 0.35;       // [rad] refine only below this tilt
   std::uint64_t seed = 0;         // the refinement's draws (same seed, same plan)
+  // Plan on a thread of its own (real-time play): act() then never waits
+  // for a plan; it posts the state and applies each decision when it is
+  // ready, a few ticks later. Off (headless): plans run inside act(), so a
+  // run is deterministic.
+  bool plannerThread = false;
 };
 
 struct AutopilotInput {
@@ -86,9 +92,14 @@ struct PlannerStats {
   double landedAt = -1.0;             // when the last landing started [s]
 };
 
+class PlannerWorker;
+
 class Autopilot {
  public:
   explicit Autopilot(const AutopilotDef& def);
+  ~Autopilot();
+  Autopilot(const Autopilot&) = delete;
+  Autopilot& operator=(const Autopilot&) = delete;
 
   ProxyCommand act(const AutopilotInput& input);
 
@@ -96,7 +107,30 @@ class Autopilot {
   const std::string& failure() const { return failure_; }
   HelixPhase phase() const { return policy_.phase(); }
   const HelixPolicy& policy() const { return policy_; }
+  // Read it only while no plan is running (headless, or after the trial).
   const PlannerStats& stats() const { return stats_; }
+
+  // What one plan decides, applied to the running policy.
+  struct Decision {
+    enum class Action { None, Land, Travel };
+    bool steer = false;
+    double steerAngle = 0.0, amplitude = 0.0;
+    Action action = Action::None;
+    double landRate = 0.0, despin = 0.0;
+    LandingShape shape;
+    std::uint64_t generation = 0;  // the goal it was made for
+  };
+  // Everything a plan reads, copied when it is posted.
+  struct PlanJob {
+    explicit PlanJob(const HelixPolicy& p) : policy(p) {}
+    AutopilotInput input;
+    HelixPolicy policy;
+    Goal goal;
+    bool turning = false;
+    physics::Vec3 lastProxy = physics::Vec3::Zero();
+    std::uint64_t generation = 0;
+    bool resetTimers = false, holdSteer = false;
+  };
 
  private:
   struct Outcome {
@@ -111,7 +145,9 @@ class Autopilot {
     double psiError = 1e30;          // |psi - target| / tolerance there (0 without a psi band)
   };
 
-  void plan(const AutopilotInput& input);
+  Decision plan(const PlanJob& job);
+  PlanJob job(const AutopilotInput& input);
+  void apply(const Decision& decision);
   void steer(const AutopilotInput& input);
   bool tryLanding(const AutopilotInput& input);
   bool refineLanding(const AutopilotInput& input, double horizon);
@@ -119,11 +155,21 @@ class Autopilot {
   Outcome rollout(HelixPolicy policy, const AutopilotInput& input, double horizon, bool judge);
   double uprightError(const physics::Vec2& upright) const;
   physics::Vec3 insideWorkspace(const physics::Vec3& p) const;
-  physics::Vec3 deliverable(const physics::Vec3& wanted, const physics::Vec3& last) const;
+  // `wanted` moved no further from `last` than the proxy speed limit allows in
+  // `ticks` servo ticks, and kept inside the workspace.
+  physics::Vec3 deliverable(const physics::Vec3& wanted, const physics::Vec3& last, long long ticks = 1) const;
 
   AutopilotDef def_;
   physics::ModelConstants constants_;
-  HelixPolicy policy_;
+  HelixPolicy policy_;  // the running law (act's thread)
+
+  // The planner's side: touched only by plan() (act's thread headless, the
+  // worker's in real time).
+  HelixPolicy work_;    // the copy a plan works on
+  Goal planGoal_;
+  bool planTurning_ = false;
+  physics::Vec3 planLastProxy_ = physics::Vec3::Zero();
+  Decision decision_;
   PlantModel model_;
   Goal given_;  // the stage's goal as given
   Goal goal_;   // the one pursued now (given_ without psi until the rest holds)
@@ -139,6 +185,9 @@ class Autopilot {
   physics::Vec3 lastProxy_ = physics::Vec3::Zero();
   std::string failure_;
   PlannerStats stats_;
+  std::uint64_t generation_ = 0;
+  bool resetPlanner_ = false, holdSteer_ = false;
+  std::unique_ptr<PlannerWorker> worker_;
 };
 
 }  // namespace hemiroll::autopilot

@@ -90,6 +90,7 @@ int runRunCommand(const std::vector<std::string>& args) {
     if (options.botPath == kAutopilotBotName) {
       AutopilotBotOptions autopilotOptions;
       autopilotOptions.budget = options.autopilotBudget;
+      autopilotOptions.plannerThread = options.realtime;
       bot = std::make_unique<AutopilotBot>(autopilotOptions);
     } else {
       script::BotLoadOptions botOptions;

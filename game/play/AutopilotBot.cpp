@@ -45,6 +45,7 @@ void AutopilotBot::init(const script::BotLevelInfo& info, std::int64_t seed) {
   def.workspace.radius = info.workspaceRadius;
   def.budget = options_.budget;
   def.seed = static_cast<std::uint64_t>(seed);
+  def.plannerThread = options_.plannerThread;
   autopilot_ = std::make_unique<autopilot::Autopilot>(def);
 }
 

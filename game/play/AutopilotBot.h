@@ -17,6 +17,7 @@ inline constexpr const char* kAutopilotBotName = "autopilot";
 
 struct AutopilotBotOptions {
   double budget = 1.0;  // planning effort (AutopilotDef::budget)
+  bool plannerThread = false;  // plan beside the trial's thread (real-time play)
 };
 
 class AutopilotBot final : public script::BotPolicy {
