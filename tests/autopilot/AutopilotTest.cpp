@@ -7,9 +7,13 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <chrono>
 #include <cmath>
+#include <thread>
 #include <cstring>
 
+#include "engine/autopilot/PlannerWorker.h"
 #include "engine/autopilot/UprightContact.h"
 #include "engine/physics/ForceDrivenSystem.h"
 
@@ -177,6 +181,38 @@ TEST(Autopilot, SameInputsSameProxyBitForBit) {
   const Played b = play(paperGoal(), physics::ForceDrivenState::Zero(), 60.0);
   EXPECT_EQ(a.time, b.time);
   EXPECT_EQ(std::memcmp(a.final.data(), b.final.data(), sizeof(double) * 12), 0);
+}
+
+}  // namespace
+}  // namespace hemiroll::autopilot
+
+namespace hemiroll::autopilot {
+namespace {
+
+TEST(PlannerWorker, RunsOneJobAtATimeAndHandsBackItsDecision) {
+  std::atomic<bool> release{false};
+  PlannerWorker worker([&](const Autopilot::PlanJob& job) {
+    while (!release.load()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    Autopilot::Decision d;
+    d.generation = job.generation;
+    d.steer = true;
+    d.steerAngle = job.input.time;
+    return d;
+  });
+  const physics::ModelConstants constants{physics::HemisphereParams{}};
+  HelixPolicy policy(constants, HelixParams{}, 0.001);
+  Autopilot::PlanJob job(policy);
+  job.generation = 7;
+  job.input.time = 1.25;
+  ASSERT_TRUE(worker.post(job));
+  EXPECT_FALSE(worker.post(job));  // busy: refused, not queued
+  Autopilot::Decision d;
+  EXPECT_FALSE(worker.take(d));    // not done yet: take does not wait
+  release = true;
+  for (int i = 0; i < 5000 && !worker.take(d); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  EXPECT_EQ(d.generation, 7u);
+  EXPECT_EQ(d.steerAngle, 1.25);
+  EXPECT_TRUE(worker.post(job));   // free again once taken
 }
 
 }  // namespace

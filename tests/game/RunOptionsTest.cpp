@@ -65,3 +65,21 @@ TEST(RunOptions, HelpNeedsNothingElse) {
 
 }  // namespace
 }  // namespace hemiroll::game
+
+namespace hemiroll::game {
+namespace {
+
+TEST(RunOptions, TheAutopilotTakesABudgetWithinItsRange) {
+  const RunOptionsResult ok = parseRunOptions({"level.lua", "--bot", "autopilot", "--autopilot-budget", "2.5"});
+  EXPECT_EQ(ok.error, "");
+  EXPECT_EQ(ok.options.botPath, "autopilot");
+  EXPECT_EQ(ok.options.autopilotBudget, 2.5);
+  EXPECT_EQ(parseRunOptions({"level.lua", "--bot", "autopilot"}).options.autopilotBudget, 1.0);
+  EXPECT_NE(parseRunOptions({"level.lua", "--bot", "autopilot", "--autopilot-budget", "5"}).error.find("0.25 to 4"),
+            std::string::npos);
+  EXPECT_NE(parseRunOptions({"level.lua", "--bot", "autopilot", "--autopilot-budget", "x"}).error.find("--autopilot-budget"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace hemiroll::game

@@ -1,0 +1,75 @@
+// The autopilot (issue 13) through the real trial loop, as `hemiroll run
+// LEVEL --bot autopilot` plays it. One iteration is one whole trial; loading
+// the level is not timed. Counters:
+//   task_s        simulated time to success [s] (0 if the trial failed);
+//   success       1 when the trial was won;
+//   wall_s        wall time of the trial [s] (target: paper task < 30 s);
+//   decision_median_ms, decision_p99_ms, decision_max_ms
+//                 wall time of one planning decision (most decisions only
+//                 check; the landing searches make the tail);
+//   decisions, rollout_s  plans made and simulated seconds rolled out.
+// The success rate over generated tasks is tools/autopilot-success.sh (it
+// takes minutes: failed seeds run to the 240 s time limit).
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <chrono>
+#include <string>
+#include <vector>
+
+#include "engine/script/LevelLoader.h"
+#include "game/play/AutopilotBot.h"
+#include "game/play/HeadlessTrial.h"
+
+namespace {
+
+using namespace hemiroll;
+
+const std::string kSource = HEMIROLL_SOURCE_DIR;
+
+void playLevel(benchmark::State& state, const std::string& level) {
+  std::vector<double> decisions;
+  double task = 0.0, wall = 0.0, rolled = 0.0, won = 0.0, count = 0.0;
+  long long decisionCount = 0;
+  for (auto _ : state) {
+    state.PauseTiming();
+    script::LoadedLevel loaded = script::LevelLoader().loadFile(kSource + "/levels/" + level);
+    game::AutopilotBot bot;
+    state.ResumeTiming();
+    const auto wall0 = std::chrono::steady_clock::now();
+    const game::TrialResult r = game::HeadlessTrial(loaded, bot, game::TrialSettings{}).run();
+    wall += std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+    const bool success = r.outcome == script::TrialOutcome::Success;
+    won += success ? 1.0 : 0.0;
+    task += success ? r.time : 0.0;
+    count += 1.0;
+    const autopilot::PlannerStats& stats = bot.autopilot()->stats();
+    decisions.insert(decisions.end(), stats.decisionWall.begin(), stats.decisionWall.end());
+    decisionCount += stats.decisions;
+    rolled += stats.rolloutSeconds;
+  }
+  std::sort(decisions.begin(), decisions.end());
+  const auto at = [&](double q) {
+    return decisions.empty() ? 0.0 : 1e3 * decisions[static_cast<std::size_t>(q * static_cast<double>(decisions.size() - 1))];
+  };
+  state.counters["task_s"] = task / count;
+  state.counters["success"] = won / count;
+  state.counters["wall_s"] = wall / count;
+  state.counters["decision_median_ms"] = at(0.5);
+  state.counters["decision_p99_ms"] = at(0.99);
+  state.counters["decision_max_ms"] = at(1.0);
+  state.counters["decisions"] = static_cast<double>(decisionCount) / count;
+  state.counters["rollout_s"] = rolled / count;
+}
+
+void BM_AutopilotPaperTask(benchmark::State& state) { playLevel(state, "paper_reaching.lua"); }
+void BM_AutopilotTutorial04(benchmark::State& state) { playLevel(state, "tutorial_04_stop_on_target.lua"); }
+void BM_AutopilotFullOrientation(benchmark::State& state) { playLevel(state, "challenge_full_orientation.lua"); }
+
+}  // namespace
+
+BENCHMARK(BM_AutopilotPaperTask)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_AutopilotTutorial04)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_AutopilotFullOrientation)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+BENCHMARK_MAIN();
