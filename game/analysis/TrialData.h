@@ -15,6 +15,7 @@ struct TrialData {
   std::string kind;                // "recording" (trial CSV + sidecar) or "sim" (`hemiroll sim` CSV)
   std::vector<std::string> notes;  // what the reader had to say (an interrupted recording, ...)
   std::vector<double> time, massX, massY, contactX, contactY, psi;  // [s], [m], [rad]
+  std::vector<double> proxyX, proxyY;  // the proxy on the plane [m]; recordings only (empty for sim CSVs)
 
   analysis::TrialSamples samples() const { return {time, massX, massY, contactX, contactY, psi}; }
 };

@@ -48,6 +48,8 @@ TrialData readRecording(const fs::path& path) {
     trial.contactX.push_back(row.state[slot::u_a]);
     trial.contactY.push_back(row.state[slot::v_a]);
     trial.psi.push_back(row.state[slot::psi]);
+    trial.proxyX.push_back(row.proxyPosition[0]);
+    trial.proxyY.push_back(row.proxyPosition[1]);
   }
   if (trial.time.empty()) throw AnalysisInputError(path.string() + ": line 2: no rows after the header");
   return trial;

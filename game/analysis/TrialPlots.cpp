@@ -58,6 +58,9 @@ report::LinePlotDef contactTracePlot(const TrialData& trial, const analysis::Tri
   report::LinePlotDef plot =
       planarPlot("contact point on the plane", "u_a [cm]", "v_a [cm]", "trace", trial.contactX, trial.contactY);
   const analysis::HelixFeatures& h = f.helix;
+  // The hand's path (the proxy), where the recording has it: what moved the
+  // contact, in the same plane and scale.
+  if (!trial.proxyX.empty()) plot.series.push_back({"proxy (the hand)", trial.proxyX, trial.proxyY, "#8c564b", 0.8});
   plot.series.push_back(within(trial.time, trial.contactX, trial.contactY, f.helixWindow, "analysed window", "#1f77b4"));
   if (!h.arc.x.empty()) plot.series.push_back({"low-passed", h.arc.x, h.arc.y, "#d62728", 2.0});
   if (h.arc.found) {
