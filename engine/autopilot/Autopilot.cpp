@@ -376,7 +376,9 @@ bool Autopilot::refineLanding(const AutopilotInput& input, double horizon) {
   constexpr int n = 2 * LandingShape::kKnots;
   const int population = std::max(8, static_cast<int>(std::lround(32 * def_.budget)));
   const int elites = std::max(3, population / 5);
-  const int iterations = std::max(2, static_cast<int>(std::lround(8 * def_.budget)));
+  // A hover that has defeated searches before gets longer ones (up to 4x).
+  const double escalation = 1.0 + static_cast<double>(std::min<std::uint64_t>(refinements_, 3));
+  const int iterations = std::max(2, static_cast<int>(std::lround(8 * def_.budget * escalation)));
   // Successive searches vary the fade rate and the first spread, so that a
   // hover that defeats one setting meets another.
   const std::uint64_t attempt = ++refinements_;
