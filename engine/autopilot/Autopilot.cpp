@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 
+#include "engine/autopilot/LandingSearch.h"
 #include "engine/autopilot/PlannerWorker.h"
 #include "engine/autopilot/UprightContact.h"
 
@@ -45,27 +46,6 @@ constexpr double kLandRates[] = {0.0015, 0.002, 0.003, 0.004, 0.006, 0.009};
 // Despin circle radius per rad/s of spin (HelixParams::despinGain) [m s/rad].
 constexpr double kDespinGains[] = {0.0, 0.01};
 
-// A small deterministic generator for the landing refinement: splitmix64
-// and Box-Muller, so that the same seed gives the same plan on every
-// standard library.
-class Normal {
- public:
-  explicit Normal(std::uint64_t seed) : state_(seed) {}
-  double operator()() {
-    const double u1 = (static_cast<double>(next() >> 11) + 0.5) * 0x1.0p-53;
-    const double u2 = static_cast<double>(next() >> 11) * 0x1.0p-53;
-    return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * M_PI * u2);
-  }
-
- private:
-  std::uint64_t next() {
-    std::uint64_t z = (state_ += 0x9e3779b97f4a7c15ULL);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-  }
-  std::uint64_t state_;
-};
 
 }  // namespace
 
@@ -369,65 +349,35 @@ bool Autopilot::tryLanding(const AutopilotInput& input) {
 }
 
 bool Autopilot::refineLanding(const AutopilotInput& input, double horizon) {
-  // Cross-entropy search over the landing shape's knots: sample shapes about
-  // a mean, keep the best few by the smallest sum of squared normalised
-  // errors met on the way, refit the mean and spread, repeat. The first
-  // sample that the model says ends inside every band is the plan.
-  constexpr int n = 2 * LandingShape::kKnots;
-  const int population = std::max(8, static_cast<int>(std::lround(32 * def_.budget)));
-  const int elites = std::max(3, population / 5);
-  // A hover that has defeated searches before gets longer ones (up to 4x).
-  const double escalation = 1.0 + static_cast<double>(std::min<std::uint64_t>(refinements_, 3));
-  const int iterations = std::max(2, static_cast<int>(std::lround(8 * def_.budget * escalation)));
   // Successive searches vary the fade rate and the first spread, so that a
-  // hover that defeats one setting meets another.
-  const std::uint64_t attempt = ++refinements_;
+  // hover that defeats one setting meets another, and a hover that has
+  // defeated searches before gets longer ones (up to 4x the rounds).
   constexpr double kRateScale[] = {1.0, 0.5, 2.0};
   constexpr double kSpreadScale[] = {1.0, 1.5, 0.75};
+  const double escalation = 1.0 + static_cast<double>(std::min<std::uint64_t>(refinements_, 3));
+  const std::uint64_t attempt = ++refinements_;
+  LandingSearchDef search;
+  search.population = std::max(8, static_cast<int>(std::lround(32 * def_.budget)));
+  search.elites = std::max(3, search.population / 5);
+  search.rounds = std::max(2, static_cast<int>(std::lround(8 * def_.budget * escalation)));
+  search.spread = def_.refineSpread * kSpreadScale[(attempt / 3) % 3];
+  search.seed = def_.seed ^ (0x5bd1e995ULL * attempt);
   const double landRate = def_.refineLandRate * kRateScale[attempt % 3];
-  std::array<double, n> mean{}, spread{};
-  spread.fill(def_.refineSpread * kSpreadScale[(attempt / 3) % 3]);
-  Normal normal(def_.seed ^ (0x5bd1e995ULL * attempt));
-  std::vector<std::pair<double, std::array<double, n>>> samples(static_cast<std::size_t>(population));
-  for (int it = 0; it < iterations; ++it) {
-    for (int k = 0; k < population; ++k) {
-      std::array<double, n>& theta = samples[static_cast<std::size_t>(k)].second;
-      for (int i = 0; i < n; ++i)
-        theta[static_cast<std::size_t>(i)] =
-            mean[static_cast<std::size_t>(i)] + (k == 0 ? 0.0 : spread[static_cast<std::size_t>(i)] * normal());
-      LandingShape shape;
-      for (int j = 0; j < LandingShape::kKnots; ++j)
-        shape.knots[static_cast<std::size_t>(j)] =
-            Vec2(theta[static_cast<std::size_t>(2 * j)], theta[static_cast<std::size_t>(2 * j + 1)]);
-      HelixPolicy candidate = work_;
-      candidate.land(landRate, 0.0, shape);
-      const Outcome o = rollout(candidate, input, horizon, true);
-      if (o.success) {
-        work_.land(landRate, 0.0, shape);
-        decision_.action = Decision::Action::Land;
-        decision_.landRate = landRate;
-        decision_.despin = 0.0;
-        decision_.shape = shape;
-        stats_.landedAt = input.time;
-        return true;
-      }
-      samples[static_cast<std::size_t>(k)].first = o.event ? 1e30 : o.softCost;
-    }
-    std::partial_sort(samples.begin(), samples.begin() + elites, samples.end(),
-                      [](const auto& a, const auto& b) { return a.first < b.first; });
-    for (int i = 0; i < n; ++i) {
-      double m = 0.0, v = 0.0;
-      for (int e = 0; e < elites; ++e) m += samples[static_cast<std::size_t>(e)].second[static_cast<std::size_t>(i)];
-      m /= elites;
-      for (int e = 0; e < elites; ++e) {
-        const double d = samples[static_cast<std::size_t>(e)].second[static_cast<std::size_t>(i)] - m;
-        v += d * d;
-      }
-      mean[static_cast<std::size_t>(i)] = m;
-      spread[static_cast<std::size_t>(i)] = std::sqrt(v / elites) + 1e-5;
-    }
-  }
-  return false;
+  const std::optional<LandingShape> shape = searchLandingShape(search, [&](const LandingShape& candidateShape) {
+    HelixPolicy candidate = work_;
+    candidate.land(landRate, 0.0, candidateShape);
+    const Outcome o = rollout(candidate, input, horizon, true);
+    // Scored by the smallest sum of squared normalised errors on the way.
+    return ShapeScore{o.success, o.event ? 1e30 : o.softCost};
+  });
+  if (!shape) return false;
+  work_.land(landRate, 0.0, *shape);
+  decision_.action = Decision::Action::Land;
+  decision_.landRate = landRate;
+  decision_.despin = 0.0;
+  decision_.shape = *shape;
+  stats_.landedAt = input.time;
+  return true;
 }
 
 void Autopilot::verifyLanding(const AutopilotInput& input) {

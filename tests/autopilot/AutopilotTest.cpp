@@ -13,6 +13,7 @@
 #include <thread>
 #include <cstring>
 
+#include "engine/autopilot/LandingSearch.h"
 #include "engine/autopilot/PlannerWorker.h"
 #include "engine/autopilot/UprightContact.h"
 #include "engine/physics/ForceDrivenSystem.h"
@@ -125,6 +126,27 @@ TEST(Goal, ErrorIsTheWorstBandAndPsiWraps) {
   EXPECT_NEAR(normalisedError(g, x), 2.0, 1e-12);
 }
 
+TEST(Goal, ZonesKnowTheirEdge) {
+  Zone circle;
+  circle.centre = physics::Vec2(0.01, 0.0);
+  circle.radius = 0.002;
+  EXPECT_NEAR(circle.clearance(physics::Vec2(0.0, 0.0)), 0.008, 1e-15);
+  EXPECT_NEAR(circle.clearance(physics::Vec2(0.01, 0.001)), -0.001, 1e-15);
+  Zone box;
+  box.circle = false;
+  box.min = physics::Vec2(0.0, 0.0);
+  box.max = physics::Vec2(0.01, 0.02);
+  EXPECT_NEAR(box.clearance(physics::Vec2(0.013, 0.024)), 0.005, 1e-15);  // 3-4-5 from the corner
+  EXPECT_NEAR(box.clearance(physics::Vec2(0.002, 0.01)), -0.002, 1e-15);  // nearest side 2 mm away
+  Goal g;
+  g.zones[0] = circle;
+  g.zoneCount = 1;
+  physics::ForceDrivenState x = physics::ForceDrivenState::Zero();
+  EXPECT_FALSE(inForbiddenZone(g, x));
+  x[physics::force_slot::u_a] = 0.0095;
+  EXPECT_TRUE(inForbiddenZone(g, x));
+}
+
 TEST(Reachability, RefusesWhatCanNeverBeReached) {
   const physics::HemisphereParams params;
   Workspace ws;
@@ -213,6 +235,48 @@ TEST(PlannerWorker, RunsOneJobAtATimeAndHandsBackItsDecision) {
   EXPECT_EQ(d.generation, 7u);
   EXPECT_EQ(d.steerAngle, 1.25);
   EXPECT_TRUE(worker.post(job));   // free again once taken
+}
+
+}  // namespace
+}  // namespace hemiroll::autopilot
+
+namespace hemiroll::autopilot {
+namespace {
+
+TEST(LandingSearch, FindsAShapeNearAnOptimumAndRepeatsItsDrawsPerSeed) {
+  // A bowl in the 16 knot coordinates with its floor at 1 mm on every one:
+  // success within 0.2 mm of it (the spread starts at 2 mm).
+  const auto score = [](const LandingShape& s) {
+    double cost = 0.0, worst = 0.0;
+    for (const physics::Vec2& k : s.knots)
+      for (int c = 0; c < 2; ++c) {
+        const double d = k[c] - 0.001;
+        cost += d * d;
+        worst = std::max(worst, std::abs(d));
+      }
+    return ShapeScore{worst < 2e-4, cost};
+  };
+  LandingSearchDef def;
+  def.rounds = 40;
+  def.seed = 3;
+  const std::optional<LandingShape> a = searchLandingShape(def, score);
+  ASSERT_TRUE(a.has_value());
+  EXPECT_NEAR(a->knots[0].x(), 0.001, 2e-4);
+  const std::optional<LandingShape> b = searchLandingShape(def, score);
+  ASSERT_TRUE(b.has_value());
+  EXPECT_EQ(a->knots, b->knots);  // same seed, same draws
+  def.rounds = 1;
+  EXPECT_FALSE(searchLandingShape(def, score).has_value());  // one round from zero cannot get there
+}
+
+TEST(LandingShape, IsLinearBetweenKnotsAndZeroAfterTheLast) {
+  LandingShape s;
+  s.knots[0] = physics::Vec2(0.002, 0.0);
+  s.knots[1] = physics::Vec2(0.0, 0.004);
+  EXPECT_NEAR(s.at(0.2).x(), 0.001, 1e-15);  // halfway from knot 0 to knot 1 (0.4 s apart)
+  EXPECT_NEAR(s.at(0.2).y(), 0.002, 1e-15);
+  EXPECT_EQ(s.at(-0.1), physics::Vec2::Zero());
+  EXPECT_EQ(s.at(LandingShape::kKnots * s.spacing + 0.1), physics::Vec2::Zero());
 }
 
 }  // namespace

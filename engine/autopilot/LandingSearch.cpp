@@ -1,0 +1,63 @@
+#include "engine/autopilot/LandingSearch.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <utility>
+#include <vector>
+
+namespace hemiroll::autopilot {
+
+double NormalDraws::operator()() {
+  const double u1 = (static_cast<double>(next() >> 11) + 0.5) * 0x1.0p-53;
+  const double u2 = static_cast<double>(next() >> 11) * 0x1.0p-53;
+  return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * M_PI * u2);
+}
+
+std::uint64_t NormalDraws::next() {
+  std::uint64_t z = (state_ += 0x9e3779b97f4a7c15ULL);
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return z ^ (z >> 31);
+}
+
+std::optional<LandingShape> searchLandingShape(const LandingSearchDef& def, const ScoreShape& score) {
+  constexpr int n = 2 * LandingShape::kKnots;
+  using Vector = std::array<double, n>;
+  const int elites = std::clamp(def.elites, 1, def.population);
+  Vector mean{}, spread{};
+  spread.fill(def.spread);
+  NormalDraws normal(def.seed);
+  std::vector<std::pair<double, Vector>> samples(static_cast<std::size_t>(def.population));
+  const auto shapeOf = [](const Vector& theta) {
+    LandingShape shape;
+    for (std::size_t j = 0; j < LandingShape::kKnots; ++j) shape.knots[j] = physics::Vec2(theta[2 * j], theta[2 * j + 1]);
+    return shape;
+  };
+  for (int round = 0; round < def.rounds; ++round) {
+    for (std::size_t k = 0; k < samples.size(); ++k) {
+      Vector& theta = samples[k].second;
+      for (std::size_t i = 0; i < n; ++i) theta[i] = mean[i] + (k == 0 ? 0.0 : spread[i] * normal());
+      const LandingShape shape = shapeOf(theta);
+      const ShapeScore s = score(shape);
+      if (s.success) return shape;
+      samples[k].first = s.cost;
+    }
+    std::partial_sort(samples.begin(), samples.begin() + elites, samples.end(),
+                      [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (std::size_t i = 0; i < n; ++i) {
+      double m = 0.0, v = 0.0;
+      for (int e = 0; e < elites; ++e) m += samples[static_cast<std::size_t>(e)].second[i];
+      m /= elites;
+      for (int e = 0; e < elites; ++e) {
+        const double d = samples[static_cast<std::size_t>(e)].second[i] - m;
+        v += d * d;
+      }
+      mean[i] = m;
+      spread[i] = std::sqrt(v / elites) + 1e-5;  // never quite zero: keep searching
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace hemiroll::autopilot

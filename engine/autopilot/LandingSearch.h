@@ -1,0 +1,47 @@
+#pragma once
+// Cross-entropy search over a landing shape (HelixPolicy.h): sample shapes
+// about a mean, keep the best few by their score, refit the mean and the
+// spread to them, repeat; stop at the first shape that succeeds. The caller
+// scores a shape (Autopilot: a rollout of the landing through the model).
+//
+// Deterministic: the draws are splitmix64 + Box-Muller from `seed`, the same
+// on every standard library.
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+
+#include "engine/autopilot/HelixPolicy.h"
+
+namespace hemiroll::autopilot {
+
+struct LandingSearchDef {
+  int population = 32;   // shapes per round (the first is the mean itself)
+  int elites = 6;        // kept to refit the mean and spread
+  int rounds = 8;
+  double spread = 0.002; // first spread of every knot coordinate [m]
+  std::uint64_t seed = 0;
+};
+
+struct ShapeScore {
+  bool success = false;  // the model says this landing ends inside every band
+  double cost = 1e30;    // lower is better (used while none succeeds)
+};
+
+using ScoreShape = std::function<ShapeScore(const LandingShape&)>;
+
+// The first shape that succeeds, or nothing after `rounds` rounds.
+std::optional<LandingShape> searchLandingShape(const LandingSearchDef& def, const ScoreShape& score);
+
+// Standard normal draws from splitmix64 and Box-Muller.
+class NormalDraws {
+ public:
+  explicit NormalDraws(std::uint64_t seed) : state_(seed) {}
+  double operator()();
+
+ private:
+  std::uint64_t next();
+  std::uint64_t state_;
+};
+
+}  // namespace hemiroll::autopilot
