@@ -141,8 +141,18 @@ ProxyCommand Autopilot::act(const AutopilotInput& input) {
   }
   if (def_.plannerThread) {
     Decision ready;
-    if (worker_->take(ready) && ready.generation == generation_) apply(ready);
-    if (input.time >= nextDecision_ - 1e-9 && worker_->post(job(input))) nextDecision_ = input.time + def_.decisionPeriod;
+    if (!pending_ && worker_->take(ready) && ready.generation == generation_) pending_ = ready;
+    if (pending_ && input.time >= pending_->applyAt - 0.5 * def_.dt) {
+      // Applied at the moment it was planned for; one that came too late
+      // (the plan took longer than its lead) is dropped.
+      if (input.time - pending_->applyAt <= 0.005) apply(*pending_);
+      pending_.reset();
+    }
+    if (!pending_ && input.time >= nextDecision_ - 1e-9) {
+      PlanJob next = job(input);
+      next.lead = def_.planLead;
+      if (worker_->post(next)) nextDecision_ = input.time + def_.decisionPeriod;
+    }
   } else if (input.time >= nextDecision_ - 1e-9) {
     apply(plan(job(input)));
     nextDecision_ = input.time + def_.decisionPeriod;
@@ -188,13 +198,15 @@ void Autopilot::apply(const Decision& d) {
 
 Autopilot::Decision Autopilot::plan(const PlanJob& job) {
   const auto start = std::chrono::steady_clock::now();
-  const AutopilotInput& input = job.input;
+  AutopilotInput input = job.input;
   work_ = job.policy;
   planGoal_ = job.goal;
   planTurning_ = job.turning;
   planLastProxy_ = job.lastProxy;
+  if (job.lead > 0.0) predict(input, job.lead);
   decision_ = Decision{};
   decision_.generation = job.generation;
+  decision_.applyAt = input.time;
   if (job.resetTimers) lastSteer_ = -1e9;
   if (job.holdSteer) lastSteer_ = input.time;
   ++stats_.decisions;
@@ -206,6 +218,21 @@ Autopilot::Decision Autopilot::plan(const PlanJob& job) {
   }
   stats_.decisionWall.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   return decision_;
+}
+
+void Autopilot::predict(AutopilotInput& input, double lead) {
+  // The running law for `lead` seconds through the model, from the job's
+  // state: where the trial will be when the decision is applied.
+  model_.reset(input.state, input.time);
+  const long long ticks = std::llround(lead / def_.dt);
+  for (long long k = 0; k < ticks; ++k) {
+    const Vec3 proxy = deliverable(work_.proxyFor(model_.state()), planLastProxy_);
+    const Vec3 velocity = (proxy - planLastProxy_) / def_.dt;
+    planLastProxy_ = proxy;
+    if (model_.tick(proxy, velocity) != physics::DomainEvent::None) break;
+  }
+  input.time = model_.time();
+  input.state = model_.state();
 }
 
 Autopilot::Outcome Autopilot::rollout(HelixPolicy policy, const AutopilotInput& input, double horizon, bool judge) {

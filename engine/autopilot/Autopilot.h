@@ -26,6 +26,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -66,6 +67,7 @@ struct AutopilotDef {
   // ready, a few ticks later. Off (headless): plans run inside act(), so a
   // run is deterministic.
   bool plannerThread = false;
+  double planLead = 0.3;  // [s] how far ahead a real-time plan is made (PlanJob::lead)
 };
 
 struct AutopilotInput {
@@ -119,6 +121,7 @@ class Autopilot {
     double landRate = 0.0, despin = 0.0;
     LandingShape shape;
     std::uint64_t generation = 0;  // the goal it was made for
+    double applyAt = 0.0;          // the time of the state it was made for [s]
   };
   // Everything a plan reads, copied when it is posted.
   struct PlanJob {
@@ -130,6 +133,10 @@ class Autopilot {
     physics::Vec3 lastProxy = physics::Vec3::Zero();
     std::uint64_t generation = 0;
     bool resetTimers = false, holdSteer = false;
+    // Plan for the state `lead` seconds ahead, predicted by running the
+    // policy through the model, so that the decision can be applied at that
+    // very moment (real time: a plan takes time; 0 headless).
+    double lead = 0.0;
   };
 
  private:
@@ -146,6 +153,7 @@ class Autopilot {
   };
 
   Decision plan(const PlanJob& job);
+  void predict(AutopilotInput& input, double lead);
   PlanJob job(const AutopilotInput& input);
   void apply(const Decision& decision);
   void steer(const AutopilotInput& input);
@@ -188,6 +196,7 @@ class Autopilot {
   std::uint64_t generation_ = 0;
   bool resetPlanner_ = false, holdSteer_ = false;
   std::unique_ptr<PlannerWorker> worker_;
+  std::optional<Decision> pending_;  // a real-time decision waiting for its moment
 };
 
 }  // namespace hemiroll::autopilot
