@@ -194,6 +194,8 @@ void Autopilot::apply(const Decision& d) {
     policy_.land(d.landRate, d.despin, d.shape);
   else if (d.action == Decision::Action::Travel)
     policy_.travel();
+  else if (d.action == Decision::Action::Reshape && policy_.phase() != HelixPhase::Travel)
+    policy_.reshape(d.shape);
 }
 
 Autopilot::Decision Autopilot::plan(const PlanJob& job) {
@@ -372,10 +374,10 @@ bool Autopilot::tryLanding(const AutopilotInput& input) {
       tilt > def_.refineTilt)
     return false;
   nextRefinement_ = input.time + def_.refineRetryPeriod;
-  return refineLanding(input, horizon);
+  return refineLanding(input, horizon, false);
 }
 
-bool Autopilot::refineLanding(const AutopilotInput& input, double horizon) {
+bool Autopilot::refineLanding(const AutopilotInput& input, double horizon, bool reshape) {
   // Successive searches vary the fade rate and the first spread, so that a
   // hover that defeats one setting meets another, and a hover that has
   // defeated searches before gets longer ones (up to 4x the rounds).
@@ -392,12 +394,21 @@ bool Autopilot::refineLanding(const AutopilotInput& input, double horizon) {
   const double landRate = def_.refineLandRate * kRateScale[attempt % 3];
   const std::optional<LandingShape> shape = searchLandingShape(search, [&](const LandingShape& candidateShape) {
     HelixPolicy candidate = work_;
-    candidate.land(landRate, 0.0, candidateShape);
+    if (reshape)
+      candidate.reshape(candidateShape);
+    else
+      candidate.land(landRate, 0.0, candidateShape);
     const Outcome o = rollout(candidate, input, horizon, true);
     // Scored by the smallest sum of squared normalised errors on the way.
     return ShapeScore{o.success, o.event ? 1e30 : o.softCost};
   });
   if (!shape) return false;
+  if (reshape) {
+    work_.reshape(*shape);
+    decision_.action = Decision::Action::Reshape;
+    decision_.shape = *shape;
+    return true;
+  }
   work_.land(landRate, 0.0, *shape);
   decision_.action = Decision::Action::Land;
   decision_.landRate = landRate;
@@ -417,6 +428,14 @@ void Autopilot::verifyLanding(const AutopilotInput& input) {
     work_.travel();
     decision_.action = Decision::Action::Travel;
     lastSteer_ = -1e9;
+    return;
+  }
+  // Still near: the landing drifted from its plan (a small shove, or real
+  // time's hand-over). Search a new shape for the rest of it, from here.
+  const bool atRest = planGoal_.set[4] || planGoal_.set[5] || planGoal_.set[6] || planGoal_.omegaNormSet;
+  if (atRest && input.time >= nextRefinement_) {
+    nextRefinement_ = input.time + def_.refineRetryPeriod;
+    refineLanding(input, def_.landHorizon, true);
   }
 }
 

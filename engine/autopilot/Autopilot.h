@@ -114,7 +114,7 @@ class Autopilot {
 
   // What one plan decides, applied to the running policy.
   struct Decision {
-    enum class Action { None, Land, Travel };
+    enum class Action { None, Land, Travel, Reshape };
     bool steer = false;
     double steerAngle = 0.0, amplitude = 0.0;
     Action action = Action::None;
@@ -158,7 +158,9 @@ class Autopilot {
   void apply(const Decision& decision);
   void steer(const AutopilotInput& input);
   bool tryLanding(const AutopilotInput& input);
-  bool refineLanding(const AutopilotInput& input, double horizon);
+  // reshape: replace the running landing's shape from now (landing or
+  // settling already) instead of starting a landing.
+  bool refineLanding(const AutopilotInput& input, double horizon, bool reshape);
   void verifyLanding(const AutopilotInput& input);
   Outcome rollout(HelixPolicy policy, const AutopilotInput& input, double horizon, bool judge);
   double uprightError(const physics::Vec2& upright) const;

@@ -66,6 +66,11 @@ void HelixPolicy::travel() {
   settleOffset_ = Vec2::Zero();
 }
 
+void HelixPolicy::reshape(const LandingShape& shape) {
+  shape_ = shape;
+  landingTime_ = 0.0;
+}
+
 void HelixPolicy::settleNow() {
   phase_ = HelixPhase::Settle;
   shape_ = {};

@@ -68,6 +68,9 @@ class HelixPolicy {
   void startAt(const physics::Vec3& proxy);
   void land(double landRate, double despinGain = 0.0, const LandingShape& shape = {});
   void travel();
+  // A new landing shape from now on, the phase unchanged (a landing corrected
+  // on its way).
+  void reshape(const LandingShape& shape);
   void settleNow();
 
   // The proxy for the next tick, from the state after the last one.
