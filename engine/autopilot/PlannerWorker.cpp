@@ -1,5 +1,11 @@
 #include "engine/autopilot/PlannerWorker.h"
 
+#if defined(__linux__)
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+#endif
+
 namespace hemiroll::autopilot {
 
 PlannerWorker::PlannerWorker(Plan plan) : plan_(std::move(plan)), thread_([this] { run(); }) {}
@@ -33,6 +39,13 @@ bool PlannerWorker::take(Autopilot::Decision& out) {
 }
 
 void PlannerWorker::run() {
+  // Planning yields to everything else: on a machine with few cores the
+  // servo thread must never wait behind a landing search. Linux applies
+  // nice values per thread; elsewhere (or if refused) it plans at the
+  // default priority.
+#if defined(__linux__)
+  setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), 19);
+#endif
   std::unique_lock<std::mutex> lock(mutex_);
   for (;;) {
     wake_.wait(lock, [this] { return stop_ || job_.has_value(); });
