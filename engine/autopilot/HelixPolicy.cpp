@@ -62,6 +62,7 @@ void HelixPolicy::land(double landRate, double despinGain, const LandingShape& s
 
 void HelixPolicy::travel() {
   phase_ = HelixPhase::Travel;
+  detourZone_ = -1;
   shape_ = {};
   settleOffset_ = Vec2::Zero();
 }
@@ -90,25 +91,47 @@ Vec2 HelixPolicy::landingPoint(const Vec2& upright) const {
   return upright + limited(want - upright, landReach_);
 }
 
-Vec2 HelixPolicy::detour(const Vec2& contact, const Vec2& land) const {
+Vec2 HelixPolicy::detour(const Vec2& contact, const Vec2& land) {
   // Settling rolls the contact straight to the landing point; a forbidden
   // zone in the way is passed on the side the contact is already on, at a
-  // waypoint its own size plus 1 mm beside it (a box counts as its circle).
-  const Vec2 path = land - contact;
-  const double length = path.norm();
-  if (length < 1e-9) return land;
-  const Vec2 along = path / length;
-  for (int i = 0; i < goal_.zoneCount; ++i) {
-    const Zone& z = goal_.zones[static_cast<std::size_t>(i)];
-    const Vec2 centre = z.circle ? z.centre : Vec2(0.5 * (z.min + z.max));
-    const double radius = z.circle ? z.radius : 0.5 * (z.max - z.min).norm();
-    const double reach = radius + 0.5 * radius + 0.001;
+  // waypoint beside it (a box counts as its circle). A waypoint, once taken,
+  // is kept until reached or until the straight path clears the zone by a
+  // wider margin than the one that blocked it: a goal that flips between
+  // the two every tick shakes the hemisphere.
+  const auto pathClearance = [&](const Vec2& centre) {
+    const Vec2 path = land - contact;
+    const double length = path.norm();
+    if (length < 1e-9) return (contact - centre).norm();
+    const Vec2 along = path / length;
     const double s = std::clamp((centre - contact).dot(along), 0.0, length);
-    if ((contact + s * along - centre).norm() >= reach) continue;  // the path clears it
+    return (contact + s * along - centre).norm();
+  };
+  const auto circleOf = [&](int i, Vec2& centre, double& radius) {
+    const Zone& z = goal_.zones[static_cast<std::size_t>(i)];
+    centre = z.circle ? z.centre : Vec2(0.5 * (z.min + z.max));
+    radius = z.circle ? z.radius : 0.5 * (z.max - z.min).norm();
+  };
+  if (detourZone_ >= 0) {
+    Vec2 centre;
+    double radius = 0.0;
+    circleOf(detourZone_, centre, radius);
+    const bool reached = (waypoint_ - contact).norm() < 0.5 * radius;
+    if (!reached && pathClearance(centre) < radius + 0.0006) return waypoint_;
+    detourZone_ = -1;
+  }
+  for (int i = 0; i < goal_.zoneCount; ++i) {
+    Vec2 centre;
+    double radius = 0.0;
+    circleOf(i, centre, radius);
+    if (pathClearance(centre) >= radius + 0.0003) continue;  // the path clears it
+    const Vec2 along = (land - contact).normalized();
     Vec2 side(-along.y(), along.x());
     if (side.dot(contact - centre) < 0.0) side = -side;
-    const Vec2 waypoint = centre + (reach + 0.5 * radius) * side;
-    if ((waypoint - contact).norm() > 0.5 * radius) return waypoint;
+    const Vec2 waypoint = centre + (1.5 * radius + 0.001) * side;
+    if ((waypoint - contact).norm() < 0.5 * radius) continue;  // already beside it
+    detourZone_ = i;
+    waypoint_ = waypoint;
+    return waypoint;
   }
   return land;
 }

@@ -85,7 +85,7 @@ class HelixPolicy {
  private:
   physics::Vec2 contactTarget() const;
   physics::Vec3 despin(const physics::ForceDrivenState& x);
-  physics::Vec2 detour(const physics::Vec2& contact, const physics::Vec2& land) const;
+  physics::Vec2 detour(const physics::Vec2& contact, const physics::Vec2& land);
 
   const physics::ModelConstants* constants_;
   HelixParams params_;
@@ -99,6 +99,8 @@ class HelixPolicy {
   LandingShape shape_;
   double despinAngle_ = 0.0;
   double landingTime_ = 0.0;  // since landing started [s]
+  int detourZone_ = -1;       // the zone being passed (-1: none)
+  physics::Vec2 waypoint_ = physics::Vec2::Zero();
 };
 
 }  // namespace hemiroll::autopilot
