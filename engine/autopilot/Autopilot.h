@@ -67,7 +67,7 @@ struct AutopilotDef {
   // ready, a few ticks later. Off (headless): plans run inside act(), so a
   // run is deterministic.
   bool plannerThread = false;
-  double planLead = 1.0;  // [s] how far ahead a real-time plan is made (PlanJob::lead)
+  double planLead = 0.3;  // [s] how far ahead a real-time plan is made (PlanJob::lead)
 };
 
 struct AutopilotInput {
