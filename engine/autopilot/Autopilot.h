@@ -6,23 +6,29 @@
 // parameters and the moment to land by rolling copies of it forward through
 // the engine's own model (PlantModel), and the up-front check of targets it
 // can never reach (Reachability).
-// Must not know: Lua, levels, devices, threads, the judge, the game. It gets
-// a Goal and a state, and gives a proxy pose; what the proxy does to the
-// model (coupling, ramp, safety, judging) is the game's own.
+// Must not know: Lua, levels, devices, the judge, the game. It gets a Goal
+// and a state, and gives a proxy pose; what the proxy does to the model
+// (coupling, ramp, safety, judging) is the game's own. Its one thread of its
+// own (PlannerWorker, real time only) shares nothing with the servo tick.
 //
 // How it decides (docs/AUTOPILOT.md): every tick it runs HelixPolicy; every
-// `decisionPeriod` it plans:
-//   travelling: every `steerPeriod` it tries the steering angles a - d, a,
-//     a + d over `steerHorizon` and keeps the one that brings c_up closest
+// `decisionPeriod` it plans, by rolling copies of the policy out:
+//   travelling: every `steerPeriod` it tries steering angles and circle
+//     radii over `steerHorizon` and keeps the pair that brings c_up closest
 //     to the target; once c_up is within `landConsider` of it, it rolls out
-//     landing now at each of `landRates` for up to `landHorizon` and lands
-//     with the first that the model says ends inside every band (for the
-//     stage's hold time). That rollout is the plan: it closes the loop on
-//     the measured state at every decision.
+//     landing now at each fade rate for up to `landHorizon` and lands with
+//     the first that the model says ends inside every band (for the stage's
+//     hold time, and stays in the domain a second more); if none does and
+//     c_up is within `refineConsider`, it searches a landing shape
+//     (LandingSearch). That rollout is the plan: it closes the loop on the
+//     measured state at every decision.
 //   landing or settling: it rolls the current plan out again; if the model
-//     no longer predicts success (a shove, a model mismatch) and c_up has left
-//     the landing reach, it travels again.
-// Deterministic: same inputs, same outputs, bit for bit.
+//     no longer predicts success, it travels again when c_up has left the
+//     landing reach (a shove), else it searches a new shape for the rest of
+//     the landing.
+//   psi: a stage with a psi band is played without it first, then psi is
+//     turned on the spot by a gentle helix from rest.
+// Headless plans run inside act(): same inputs, same outputs, bit for bit.
 
 #include <cstdint>
 #include <memory>
