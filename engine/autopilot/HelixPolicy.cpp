@@ -98,12 +98,16 @@ Vec2 HelixPolicy::detour(const Vec2& contact, const Vec2& land) {
   // is kept until reached or until the straight path clears the zone by a
   // wider margin than the one that blocked it: a goal that flips between
   // the two every tick shakes the hemisphere.
+  // How close the straight path passes the zone's centre; a path whose
+  // nearest point is its end (a target just beside a zone) does not cross
+  // it, however close that end is.
   const auto pathClearance = [&](const Vec2& centre) {
     const Vec2 path = land - contact;
     const double length = path.norm();
-    if (length < 1e-9) return (contact - centre).norm();
+    if (length < 1e-9) return 1e30;
     const Vec2 along = path / length;
-    const double s = std::clamp((centre - contact).dot(along), 0.0, length);
+    const double s = (centre - contact).dot(along);
+    if (s <= 0.0 || s >= length) return 1e30;
     return (contact + s * along - centre).norm();
   };
   const auto circleOf = [&](int i, Vec2& centre, double& radius) {
