@@ -57,6 +57,12 @@ void HelixPolicy::land(double landRate, double despinGain, const LandingShape& s
   params_.despinGain = despinGain;
   shape_ = shape;
   landingTime_ = 0.0;
+  // A circle that never started has nothing to fade: settle at once, without
+  // the steering offset's step (a kick a light mass point feels).
+  if (phase_ == HelixPhase::Travel && radius_ <= 0.0) {
+    phase_ = HelixPhase::Settle;
+    return;
+  }
   phase_ = HelixPhase::Land;
 }
 

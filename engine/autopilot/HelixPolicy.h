@@ -54,9 +54,16 @@ enum class HelixPhase { Travel, Land, Settle };
 // ends inside the bands: what it must undo is mostly spin.
 struct LandingShape {
   static constexpr int kKnots = 8;
-  std::array<physics::Vec2, kKnots> knots{};  // [m]
+  // Eigen vectors are not zeroed by value-initialisation: every knot is set.
+  std::array<physics::Vec2, kKnots> knots = zeroKnots();  // [m]
   double spacing = 0.4;                       // [s]
   physics::Vec2 at(double t) const;           // offset t seconds into the landing [m]
+
+  static std::array<physics::Vec2, kKnots> zeroKnots() {
+    std::array<physics::Vec2, kKnots> k;
+    k.fill(physics::Vec2::Zero());
+    return k;
+  }
 };
 
 class HelixPolicy {

@@ -269,6 +269,13 @@ TEST(LandingSearch, FindsAShapeNearAnOptimumAndRepeatsItsDrawsPerSeed) {
   EXPECT_FALSE(searchLandingShape(def, score).has_value());  // one round from zero cannot get there
 }
 
+TEST(LandingShape, ADefaultShapeIsNoOffsetAtAll) {
+  // Eigen vectors are not zeroed by value-initialisation; a plain landing
+  // (no shape) must add nothing.
+  const LandingShape s;
+  for (double t = 0.0; t < LandingShape::kKnots * s.spacing; t += 0.05) EXPECT_EQ(s.at(t), physics::Vec2::Zero()) << t;
+}
+
 TEST(LandingShape, IsLinearBetweenKnotsAndZeroAfterTheLast) {
   LandingShape s;
   s.knots[0] = physics::Vec2(0.002, 0.0);
