@@ -56,7 +56,7 @@ struct AutopilotDef {
   double steerPeriod = 0.5;     // [s] between steering updates
   double steerHorizon = 2.0;    // [s]
   double steerStep = 0.4;       // [rad] between steering candidates
-  double landHorizon = 8.0;     // [s]
+  double landHorizon = 10.0;    // [s]
   double landConsider = 0.01;   // [m] c_up this close to the target: try landing
   double landRetryPeriod = 0.3; // [s] between landing searches
   // When no plain landing works and c_up is this close: search the landing

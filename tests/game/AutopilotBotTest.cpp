@@ -56,9 +56,9 @@ TEST(AutopilotBot, WinsTutorialFour) {
   EXPECT_EQ(r.outcome, TrialOutcome::Success) << r.reason;
 }
 
-TEST(AutopilotBot, WinsTheChallenges) {
-  // Not the forbidden zone yet: the helix starts beside its pit (AUTOPILOT.md).
-  for (const char* name : {"challenge_slalom.lua", "challenge_time_trial.lua", "challenge_full_orientation.lua"}) {
+TEST(AutopilotBot, WinsEveryChallenge) {
+  for (const char* name : {"challenge_slalom.lua", "challenge_time_trial.lua", "challenge_full_orientation.lua",
+                           "challenge_forbidden_zone.lua"}) {
     const TrialResult r = playFile(kLevels + name);
     EXPECT_EQ(r.outcome, TrialOutcome::Success) << name << ": " << r.reason;
   }
