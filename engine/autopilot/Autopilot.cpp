@@ -1,8 +1,8 @@
 #include "engine/autopilot/Autopilot.h"
 
 #include <algorithm>
-#include <chrono>
 #include <array>
+#include <chrono>
 #include <cmath>
 
 #include "engine/autopilot/LandingSearch.h"
@@ -16,21 +16,16 @@ using physics::Vec3;
 
 namespace {
 
+// The zones past zoneCount are not part of the goal (the caller may leave
+// old ones there), so Goal gets no defaulted ==.
 bool sameGoal(const Goal& a, const Goal& b) {
-  if (a.zoneCount != b.zoneCount) return false;
-  for (int i = 0; i < a.zoneCount; ++i) {
-    const Zone& za = a.zones[static_cast<std::size_t>(i)];
-    const Zone& zb = b.zones[static_cast<std::size_t>(i)];
-    if (za.circle != zb.circle || za.centre != zb.centre || za.radius != zb.radius || za.min != zb.min || za.max != zb.max)
-      return false;
-  }
+  if (a.zoneCount != b.zoneCount || !std::equal(a.zones.begin(), a.zones.begin() + a.zoneCount, b.zones.begin()))
+    return false;
   return a.target == b.target && a.tolerance == b.tolerance && a.set == b.set && a.omegaNormSet == b.omegaNormSet &&
          a.omegaNormTarget == b.omegaNormTarget && a.omegaNormTolerance == b.omegaNormTolerance && a.hold == b.hold;
 }
 
-// Landing fades the circle at these rates [m/s]; slower landings leave less
-// wobble, faster ones less drift. The planner tries them all.
-constexpr double kMaxProxySpeed = 0.25;  // [m/s]
+constexpr double kMaxProxySpeed = 0.25;  // [m/s], see deliverable()
 
 // How long a rollout goes on after the bands first held, to see that the
 // hemisphere stays in its domain [s].
@@ -42,10 +37,11 @@ constexpr double kAfterSuccess = 1.0;
 constexpr double kTurnSteerShare = 0.3;
 constexpr double kTurnAmplitudeShare = 0.4;
 
+// Landing fades the circle at these rates [m/s]; slower landings leave less
+// wobble, faster ones less drift. The planner tries them all.
 constexpr double kLandRates[] = {0.0015, 0.002, 0.003, 0.004, 0.006, 0.009};
 // Despin circle radius per rad/s of spin (HelixParams::despinGain) [m s/rad].
 constexpr double kDespinGains[] = {0.0, 0.01};
-
 
 }  // namespace
 
@@ -171,7 +167,6 @@ ProxyCommand Autopilot::act(const AutopilotInput& input) {
   return out;
 }
 
-
 Autopilot::PlanJob Autopilot::job(const AutopilotInput& input) {
   PlanJob j(policy_);
   j.input = input;
@@ -238,7 +233,6 @@ void Autopilot::predict(AutopilotInput& input, double lead) {
 }
 
 Autopilot::Outcome Autopilot::rollout(HelixPolicy policy, const AutopilotInput& input, double horizon, bool judge) {
-  ++stats_.rollouts;
   model_.reset(input.state, input.time);
   Vec3 last = planLastProxy_;
   Outcome o;
@@ -270,7 +264,6 @@ Autopilot::Outcome Autopilot::rollout(HelixPolicy policy, const AutopilotInput& 
       continue;
     }
     const double e = normalisedError(planGoal_, model_.state());
-    o.bestError = std::min(o.bestError, e);
     const double soft = squaredError(planGoal_, model_.state());
     if (soft < o.softCost) {
       o.softCost = soft;
@@ -290,7 +283,6 @@ Autopilot::Outcome Autopilot::rollout(HelixPolicy policy, const AutopilotInput& 
   }
   stats_.rolloutSeconds += static_cast<double>(k) * def_.dt;
   o.meanUprightError = meanCount > 0 ? meanError / static_cast<double>(meanCount) : 1e30;
-  o.upright = uprightContact(constants_, model_.state()).point;
   return o;
 }
 
@@ -357,7 +349,6 @@ bool Autopilot::tryLanding(const AutopilotInput& input) {
     decision_.action = Decision::Action::Land;
     decision_.landRate = bestRate;
     decision_.despin = bestDespin;
-    stats_.landedAt = input.time;
     return true;
   }
   // The refinement reshapes the landing by millimetres: it can take spin
@@ -414,7 +405,6 @@ bool Autopilot::refineLanding(const AutopilotInput& input, double horizon, bool 
   decision_.landRate = landRate;
   decision_.despin = 0.0;
   decision_.shape = *shape;
-  stats_.landedAt = input.time;
   return true;
 }
 

@@ -94,10 +94,8 @@ struct ProxyCommand {
 // What the planner did, for the issue note and the benchmark.
 struct PlannerStats {
   long long decisions = 0;
-  long long rollouts = 0;
   double rolloutSeconds = 0.0;        // simulated time rolled out [s]
   std::vector<double> decisionWall;   // wall time of each decision [s]
-  double landedAt = -1.0;             // when the last landing started [s]
 };
 
 class PlannerWorker;
@@ -113,8 +111,6 @@ class Autopilot {
 
   // Non-empty once the autopilot has given up ("the target ... is beyond ...").
   const std::string& failure() const { return failure_; }
-  HelixPhase phase() const { return policy_.phase(); }
-  const HelixPolicy& policy() const { return policy_; }
   // Read it only while no plan is running (headless, or after the trial).
   const PlannerStats& stats() const { return stats_; }
 
@@ -150,8 +146,6 @@ class Autopilot {
     bool success = false;
     bool event = false;
     double time = 0.0;       // when the bands were first held [s after start]
-    double bestError = 1e30; // smallest normalised error on the way
-    physics::Vec2 upright = physics::Vec2::Zero();  // c_up at the end
     double meanUprightError = 1e30;  // |c_up - target| averaged over the second half [m]
     double excess = 0.0;             // largest spin above 1.2 rad/s plus tilt above 0.9 rad
     double softCost = 1e30;          // smallest sum of squared normalised errors on the way

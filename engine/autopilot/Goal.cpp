@@ -16,21 +16,21 @@ double slotError(const Goal& goal, const physics::ForceDrivenState& x, int slot)
   return std::abs(d) / goal.tolerance[i];
 }
 
-double errorOver(const Goal& goal, const physics::ForceDrivenState& x, bool withContact) {
-  double e = 0.0;
-  for (int slot = 0; slot < 12; ++slot) {
-    if (!goal.set[static_cast<std::size_t>(slot)]) continue;
-    if (!withContact && (slot == physics::force_slot::u_a || slot == physics::force_slot::v_a)) continue;
-    e = std::max(e, slotError(goal, x, slot));
-  }
-  if (goal.omegaNormSet) {
-    const double w = std::sqrt(x[4] * x[4] + x[5] * x[5] + x[6] * x[6]);
-    e = std::max(e, std::abs(w - goal.omegaNormTarget) / goal.omegaNormTolerance);
-  }
-  return std::isfinite(e) ? e : 1e30;  // a non-finite state is as far as it gets
+// (|omega| - target) / tolerance, signed.
+double omegaNormError(const Goal& goal, const physics::ForceDrivenState& x) {
+  const double w = std::sqrt(x[4] * x[4] + x[5] * x[5] + x[6] * x[6]);
+  return (w - goal.omegaNormTarget) / goal.omegaNormTolerance;
 }
 
 }  // namespace
+
+double normalisedError(const Goal& goal, const physics::ForceDrivenState& x) {
+  double e = 0.0;
+  for (int slot = 0; slot < 12; ++slot)
+    if (goal.set[static_cast<std::size_t>(slot)]) e = std::max(e, slotError(goal, x, slot));
+  if (goal.omegaNormSet) e = std::max(e, std::abs(omegaNormError(goal, x)));
+  return std::isfinite(e) ? e : 1e30;  // a non-finite state is as far as it gets
+}
 
 double squaredError(const Goal& goal, const physics::ForceDrivenState& x) {
   double sum = 0.0;
@@ -39,11 +39,7 @@ double squaredError(const Goal& goal, const physics::ForceDrivenState& x) {
     const double e = slotError(goal, x, slot);
     sum += e * e;
   }
-  if (goal.omegaNormSet) {
-    const double w = std::sqrt(x[4] * x[4] + x[5] * x[5] + x[6] * x[6]);
-    const double e = (w - goal.omegaNormTarget) / goal.omegaNormTolerance;
-    sum += e * e;
-  }
+  if (goal.omegaNormSet) sum += omegaNormError(goal, x) * omegaNormError(goal, x);
   return std::isfinite(sum) ? sum : 1e30;
 }
 
@@ -61,12 +57,5 @@ bool inForbiddenZone(const Goal& goal, const physics::ForceDrivenState& x) {
   return false;
 }
 
-bool Goal::any() const { return omegaNormSet || std::any_of(set.begin(), set.end(), [](bool b) { return b; }); }
-
-double normalisedError(const Goal& goal, const physics::ForceDrivenState& x) { return errorOver(goal, x, true); }
-
-double normalisedErrorOffContact(const Goal& goal, const physics::ForceDrivenState& x) {
-  return errorOver(goal, x, false);
-}
 
 }  // namespace hemiroll::autopilot

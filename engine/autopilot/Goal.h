@@ -18,6 +18,7 @@ struct Zone {
 
   // Distance from the zone's edge, negative inside [m].
   double clearance(const physics::Vec2& point) const;
+  bool operator==(const Zone&) const = default;
 };
 
 struct Goal {
@@ -32,7 +33,6 @@ struct Goal {
   int zoneCount = 0;
 
   bool contactSet() const { return set[7] || set[8]; }
-  bool any() const;
 };
 
 // Whether the contact point of x is inside a forbidden zone.
@@ -45,9 +45,5 @@ double normalisedError(const Goal& goal, const physics::ForceDrivenState& x);
 // Sum of squared normalised errors over the set bands: a smooth measure for
 // searches (normalisedError is their max).
 double squaredError(const Goal& goal, const physics::ForceDrivenState& x);
-
-// The same, leaving out the contact point on the plane (u_a, v_a): how far
-// the rest of the state is from its bands once the hemisphere is there.
-double normalisedErrorOffContact(const Goal& goal, const physics::ForceDrivenState& x);
 
 }  // namespace hemiroll::autopilot

@@ -28,4 +28,10 @@ const char* forceMethodName(ForceMethod m) {
   return "?";
 }
 
+std::optional<ForceMethod> forceMethodFromName(std::string_view name) {
+  for (const ForceMethod m : {ForceMethod::M1, ForceMethod::M2, ForceMethod::M3})
+    if (name == forceMethodName(m)) return m;
+  return std::nullopt;
+}
+
 }  // namespace hemiroll::physics

@@ -10,7 +10,9 @@
 // Visual only (Sec. 4.1): the model is driven exactly as by the chosen method,
 // but no force is rendered.
 
+#include <optional>
 #include <string>
+#include <string_view>
 
 #include "engine/physics/RollingDynamics.h"
 
@@ -71,5 +73,7 @@ PointKinematics pointKinematics(const RollingGeometry& g, double radius, double 
                                 const Vec3& omega);
 
 const char* forceMethodName(ForceMethod m);
+// The method named "M1", "M2" or "M3"; nullopt for anything else.
+std::optional<ForceMethod> forceMethodFromName(std::string_view name);
 
 }  // namespace hemiroll::physics

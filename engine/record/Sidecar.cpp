@@ -22,8 +22,7 @@ const char* engagementName(int i) { return haptics::engagementName(static_cast<h
 const char* faultName(int i) { return haptics::safetyFaultName(static_cast<haptics::SafetyFault>(i)); }
 
 physics::ForceMethod methodFromName(const std::string& name) {
-  for (const auto m : {physics::ForceMethod::M1, physics::ForceMethod::M2, physics::ForceMethod::M3})
-    if (name == physics::forceMethodName(m)) return m;
+  if (const std::optional<physics::ForceMethod> m = physics::forceMethodFromName(name)) return *m;
   throw RecordError("unknown force method '" + name + "'");
 }
 

@@ -11,19 +11,18 @@ namespace {
 physics::Vec3 vec(const script::Triple3& t) { return {t[0], t[1], t[2]}; }
 script::Triple3 triple(const physics::Vec3& v) { return {v.x(), v.y(), v.z()}; }
 
-}  // namespace
-
+// The coupling of a level info whose method is "M1", "M2" or "M3" (init
+// refuses "visual" before this).
 physics::CouplingDef couplingOf(const script::BotLevelInfo& info) {
   physics::CouplingDef c;
   c.stiffness = info.stiffness;
   c.damping = info.damping;
   c.alpha = info.alpha;
-  c.visualOnly = info.method == "visual";
-  c.method = info.method == "M1" ? physics::ForceMethod::M1
-             : info.method == "M2" ? physics::ForceMethod::M2
-                                   : physics::ForceMethod::M3;
+  c.method = physics::forceMethodFromName(info.method).value_or(physics::ForceMethod::M3);
   return c;
 }
+
+}  // namespace
 
 AutopilotBot::AutopilotBot(const AutopilotBotOptions& options) : options_(options) {}
 AutopilotBot::~AutopilotBot() = default;

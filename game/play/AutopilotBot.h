@@ -40,7 +40,4 @@ class AutopilotBot final : public script::BotPolicy {
   autopilot::AutopilotInput input_;
 };
 
-// The coupling method of a level info ("M1", "M2", "M3", "visual").
-physics::CouplingDef couplingOf(const script::BotLevelInfo& info);
-
 }  // namespace hemiroll::game

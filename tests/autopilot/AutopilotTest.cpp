@@ -10,6 +10,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <new>
 #include <thread>
 #include <cstring>
 
@@ -187,6 +188,9 @@ TEST(Autopilot, RecoversFromAShove) {
   // planner, rolling out from the measured state, must still get there.
   const Played p = play(paperGoal(), physics::ForceDrivenState::Zero(), 120.0, 3.0, physics::Vec2(0.05, 0.0));
   EXPECT_TRUE(p.success) << "final u_a " << p.final[7] << ", v_a " << p.final[8];
+  // The shove mattered: the unshoved run ends elsewhere and at another time.
+  const Played calm = play(paperGoal(), physics::ForceDrivenState::Zero(), 120.0);
+  EXPECT_NE(p.time, calm.time);
 }
 
 TEST(Autopilot, GivesUpAtOnceOnAnUnreachableTarget) {
@@ -271,9 +275,13 @@ TEST(LandingSearch, FindsAShapeNearAnOptimumAndRepeatsItsDrawsPerSeed) {
 
 TEST(LandingShape, ADefaultShapeIsNoOffsetAtAll) {
   // Eigen vectors are not zeroed by value-initialisation; a plain landing
-  // (no shape) must add nothing.
-  const LandingShape s;
-  for (double t = 0.0; t < LandingShape::kKnots * s.spacing; t += 0.05) EXPECT_EQ(s.at(t), physics::Vec2::Zero()) << t;
+  // (no shape) must add nothing. Built in memory filled with garbage first,
+  // so that a shape that forgot to set its knots shows it.
+  alignas(LandingShape) unsigned char memory[sizeof(LandingShape)];
+  std::memset(memory, 0x5a, sizeof memory);
+  const LandingShape* s = new (memory) LandingShape;  // default-initialised, as `= {}` and members are
+  for (double t = 0.0; t < LandingShape::kKnots * s->spacing; t += 0.05) EXPECT_EQ(s->at(t), physics::Vec2::Zero()) << t;
+  s->~LandingShape();
 }
 
 TEST(LandingShape, IsLinearBetweenKnotsAndZeroAfterTheLast) {

@@ -204,3 +204,17 @@ TEST(ForceCoupling, DampedCouplingToMovingProxyObeysWorkEnergyBalance) {
 
 }  // namespace
 }  // namespace hemiroll::test
+
+namespace hemiroll::physics {
+namespace {
+
+TEST(ForceMethodName, ReadsBackEveryNameAndNothingElse) {
+  for (const ForceMethod m : {ForceMethod::M1, ForceMethod::M2, ForceMethod::M3})
+    EXPECT_EQ(forceMethodFromName(forceMethodName(m)), m);
+  EXPECT_FALSE(forceMethodFromName("m3").has_value());
+  EXPECT_FALSE(forceMethodFromName("visual").has_value());
+  EXPECT_FALSE(forceMethodFromName("").has_value());
+}
+
+}  // namespace
+}  // namespace hemiroll::physics

@@ -8,6 +8,7 @@
 //                 wall time of one planning decision (most decisions only
 //                 check; the landing searches make the tail);
 //   decisions, rollout_s  plans made and simulated seconds rolled out.
+//   BM_HelixPolicyTick*: the feedback law's cost per servo tick.
 // The success rate over generated tasks is tools/autopilot-success.sh (it
 // takes minutes: failed seeds run to the 240 s time limit).
 #include <benchmark/benchmark.h>
@@ -62,12 +63,40 @@ void playLevel(benchmark::State& state, const std::string& level) {
   state.counters["rollout_s"] = rolled / count;
 }
 
+// The work the autopilot adds to every servo tick: one step of its feedback
+// law (the proxy for the next tick), on a tilted, turning state of the
+// paper's task. Planning is not in it (it runs every 0.1 s, off the tick).
+void policyTick(benchmark::State& state, bool settling) {
+  const physics::HemisphereParams params;
+  const physics::ModelConstants constants(params);
+  autopilot::Goal goal;
+  for (int slot : {7, 8}) {
+    goal.set[static_cast<std::size_t>(slot)] = true;
+    goal.target[static_cast<std::size_t>(slot)] = -0.04;
+    goal.tolerance[static_cast<std::size_t>(slot)] = 0.004;
+  }
+  autopilot::HelixPolicy policy(constants, autopilot::HelixParams{}, 0.001);
+  policy.setGoal(goal);
+  if (settling) policy.land(0.003);
+  physics::ForceDrivenState x = physics::ForceDrivenState::Zero();
+  x << 0.005, 0.002, 0.01, 0.0, 0.3, -0.2, 0.7, -0.01, 0.02, 0.2, -0.1, 0.5;
+  for (auto _ : state) {
+    x[11] += 1e-9;  // a new state each tick, as the loop gives
+    benchmark::DoNotOptimize(policy.proxyFor(x));
+  }
+}
+
+void BM_HelixPolicyTickTravelling(benchmark::State& state) { policyTick(state, false); }
+void BM_HelixPolicyTickSettling(benchmark::State& state) { policyTick(state, true); }
+
 void BM_AutopilotPaperTask(benchmark::State& state) { playLevel(state, "paper_reaching.lua"); }
 void BM_AutopilotTutorial04(benchmark::State& state) { playLevel(state, "tutorial_04_stop_on_target.lua"); }
 void BM_AutopilotFullOrientation(benchmark::State& state) { playLevel(state, "challenge_full_orientation.lua"); }
 
 }  // namespace
 
+BENCHMARK(BM_HelixPolicyTickTravelling);
+BENCHMARK(BM_HelixPolicyTickSettling);
 BENCHMARK(BM_AutopilotPaperTask)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_AutopilotTutorial04)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_AutopilotFullOrientation)->Unit(benchmark::kMillisecond)->Iterations(1);
