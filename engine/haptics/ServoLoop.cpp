@@ -7,14 +7,13 @@
 #include <string>
 
 #include "engine/physics/Energy.h"
+#include "engine/physics/StateKinematics.h"
 
 namespace hemiroll::haptics {
 
 using physics::ForceDrivenState;
 
 namespace {
-
-ForceDrivenState toState(const std::array<double, 12>& a) { return Eigen::Map<const ForceDrivenState>(a.data()); }
 
 Triple toTriple(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
 
@@ -33,7 +32,7 @@ ServoLoop::ServoLoop(const ServoLoopDef& def, HapticDevice& device)
     : def_(def),
       device_(device),
       system_(def.params, def.limits),
-      stepper_(system_, integrator_, toState(def.initialState), def.startTime),
+      stepper_(system_, integrator_, physics::forceStateOf(def.initialState), def.startTime),
       safety_(def.safety, device.spec()),
       coupling_(def.coupling) {
   if (!(def.period > 0.0) || !std::isfinite(def.period)) throw std::invalid_argument("ServoLoop: period must be positive");
@@ -142,7 +141,7 @@ void ServoLoop::apply(const ServoCommand& c) {
       if (system_.coupled()) system_.setCoupling(coupling_);
       break;
     case ServoCommandKind::ResetState:
-      stepper_.reset(toState(c.state), c.time);
+      stepper_.reset(physics::forceStateOf(c.state), c.time);
       energyAtEngage_ = physics::mechanicalEnergy(system_.dynamics(), stepper_.state()).total();
       handWork_ = 0.0;
       if (safety_.fault() == SafetyFault::ModelHalted && !stepper_.halted()) safety_.clearFault();

@@ -4,6 +4,7 @@
 
 #include "engine/record/CsvRowFormat.h"
 #include "engine/record/DurableFile.h"
+#include "engine/record/FileNames.h"
 #include "engine/record/RecordError.h"
 #include "engine/record/Sidecar.h"
 #include "engine/record/WriterThread.h"
@@ -11,19 +12,6 @@
 namespace hemiroll::record {
 
 using Clock = std::chrono::steady_clock;
-
-namespace {
-
-bool safeFileName(const std::string& name) {
-  if (name.empty() || name == "." || name == "..") return false;
-  for (const char c : name)
-    if (!((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '_' ||
-          c == '.'))
-      return false;
-  return true;
-}
-
-}  // namespace
 
 struct TrialRecorder::Impl {
   Impl(const std::filesystem::path& dir, const TrialMeta& m, const RecorderOptions& o)
@@ -91,7 +79,7 @@ struct TrialRecorder::Impl {
 };
 
 TrialRecorder::TrialRecorder(const std::filesystem::path& dir, const TrialMeta& meta, const RecorderOptions& options) {
-  if (!safeFileName(meta.trialId))
+  if (!isSafeFileName(meta.trialId))
     throw RecordError("trial id '" + meta.trialId + "' is not a safe file name (letters, digits, '-', '_', '.')");
   if (!(meta.tickPeriod > 0.0) || meta.recordEvery < 1)
     throw RecordError("trial '" + meta.trialId + "': tickPeriod must be positive and recordEvery at least 1");

@@ -29,7 +29,7 @@ struct AppDef {
   bool vsync = true;
   bool hidden = false;              // tests and benchmarks: no visible window
   std::string levelsDir = "levels"; // the level select lists *.lua here
-  std::string scoresFile;           // "" = dataDirectory()/scores.sqlite
+  std::string scoresFile;           // "" = record::dataDirectory()/scores.sqlite
   std::string settingsFile;         // "" = configDirectory()/settings.json
   bool requestRealtime = true;      // SCHED_FIFO for the servo thread when permitted
 };

@@ -9,6 +9,7 @@
 
 #include "engine/platform/KeyNames.h"
 #include "engine/record/DurableFile.h"
+#include "engine/script/ProtocolDef.h"
 
 namespace hemiroll::game {
 
@@ -108,12 +109,8 @@ class Reader {
   }
 
  private:
-  static bool isIdentifier(const std::string& s) {
-    if (s.empty() || s.size() > 64) return false;
-    for (char c : s)
-      if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_') return false;
-    return true;
-  }
+  // Ids name folders and files (a session's participant): the protocols' rule.
+  static bool isIdentifier(const std::string& s) { return script::isFolderName(s); }
   static bool knownAction(const std::string& id) {
     for (int i = 0; i < kKeyActionCount; ++i)
       if (id == keyActionInfo(static_cast<KeyAction>(i)).id) return true;

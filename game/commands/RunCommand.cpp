@@ -6,17 +6,20 @@
 #include <memory>
 #include <stdexcept>
 
+#include "engine/record/ContentHash.h"
+#include "engine/record/FileNames.h"
 #include "engine/script/BotScript.h"
 #include "engine/script/LevelLoader.h"
 #include "engine/script/ScriptError.h"
 #include "game/commands/CommandUsage.h"
 #include "game/commands/ExitCode.h"
 #include "game/commands/RunOptions.h"
-#include "game/play/AutopilotBot.h"
-#include "game/play/HeadlessTrial.h"
-#include "game/play/JsonLine.h"
-#include "game/play/ReplayCapture.h"
-#include "game/play/TrialRecording.h"
+#include "game/trial/AutopilotBot.h"
+#include "game/trial/HeadlessTrial.h"
+#include "game/trial/JsonLine.h"
+#include "game/trial/ReplayCapture.h"
+#include "game/trial/TrialRecording.h"
+#include "game/trial/TrialSetup.h"
 
 namespace hemiroll::game {
 
@@ -28,14 +31,7 @@ int badInput(const std::string& message) {
 }
 
 // Letters, digits, '-' and '_' only (TrialMeta's rule for file names).
-std::string safeName(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '_';
-    out += ok ? c : '_';
-  }
-  return out.empty() ? "trial" : out;
-}
+std::string safeName(const std::string& text) { return record::fileStemOf(text, "-_", "trial"); }
 
 std::string stem(const std::string& path) { return std::filesystem::path(path).stem().string(); }
 
@@ -47,7 +43,7 @@ TrialRecordingDef recordingDef(const RunOptions& o) {
   def.trialId = safeName(stem(o.levelPath)) + "_" + safeName(stem(o.botPath)) + "_seed" + std::to_string(o.seed);
   def.renameIfTaken = true;
   def.taskName = "hemiroll run";
-  def.levelHash = levelFileHash(o.levelPath);
+  def.levelHash = record::fileContentHash(o.levelPath);
   def.seed = o.seed;
   def.sidecarExtra = {{"level_file", o.levelPath}, {"bot_file", o.botPath}, {"realtime", o.realtime ? "true" : "false"}};
   return def;
@@ -109,7 +105,7 @@ int runRunCommand(const std::vector<std::string>& args) {
   try {
     if (options.recordDir) {
       recording = std::make_unique<TrialRecording>(recordingDef(options), level.def,
-                                                   HeadlessTrial::loopDefFor(level.def));
+                                                   trialLoopDef(level.def));
       recording->attach(settings);
     }
     result = HeadlessTrial(level, *bot, settings).run();

@@ -9,6 +9,7 @@
 
 #include "engine/physics/ForceCoupling.h"
 #include "engine/physics/Orientation.h"
+#include "engine/physics/StateKinematics.h"
 #include "engine/platform/PlatformError.h"
 #include "engine/platform/Window.h"
 #include "engine/render/Framebuffer.h"
@@ -33,7 +34,7 @@ constexpr const char* kPrefix = "hemiroll screenshot: ";
 void addProxy(const script::LevelDef& level, const physics::ForceDrivenState& x, const std::array<double, 3>& proxy,
               render::RenderScene& scene) {
   namespace slot = physics::force_slot;
-  const render::Vec3d p = massPointPosition(level, x);
+  const physics::Vec3 p = physics::massPointPosition(x, level.params.radius);
   const physics::Orientation o = physics::makeOrientation(x[slot::u_o], x[slot::v_o], x[slot::psi]);
   const physics::Real3 dr{p[0] - proxy[0], p[1] - proxy[1], p[2] - proxy[2]};
   const physics::Real3 f = physics::handForce(level.coupling, physics::Real3::from(o.faceNormal()), dr, {0, 0, 0});

@@ -11,9 +11,10 @@
 #include "game/commands/ExitCode.h"
 #include "game/commands/SessionOptions.h"
 #include "engine/script/BotScript.h"
-#include "game/play/HeadlessTrial.h"
-#include "game/play/JsonLine.h"
+#include "game/trial/HeadlessTrial.h"
+#include "game/trial/JsonLine.h"
 #include "game/research/ResearchSession.h"
+#include "game/trial/TrialSetup.h"
 
 namespace hemiroll::game {
 
@@ -72,7 +73,7 @@ TrialResult playNext(ResearchSession& session, const std::string& botPath) {
     throw SessionError(SessionError::Kind::BadInput, e.what());
   }
   const std::unique_ptr<TrialRecording> recording =
-      session.recordNext(level.def, HeadlessTrial::loopDefFor(level.def), "bot", HeadlessTrial::deviceSpec());
+      session.recordNext(level.def, trialLoopDef(level.def), "bot", botDeviceSpec());
   TrialSettings settings;
   settings.seed = trial.seed;
   recording->attach(settings);
@@ -114,7 +115,7 @@ int runSessionCommand(const std::vector<std::string>& args) {
   Tally tally;
   try {
     ResearchSession session(request);
-    if (const std::string problem = session.couplingProblem(HeadlessTrial::deviceSpec()); !problem.empty())
+    if (const std::string problem = session.couplingProblem(botDeviceSpec()); !problem.empty())
       return fail(kExitUsage, problem);
     session.begin(*o.botPath);
     for (const auto& [trialId, reason] : session.interrupted())

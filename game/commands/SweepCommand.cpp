@@ -12,7 +12,7 @@
 #include "game/commands/CommandUsage.h"
 #include "game/commands/ExitCode.h"
 #include "game/commands/SweepOptions.h"
-#include "game/play/JsonLine.h"
+#include "game/trial/JsonLine.h"
 #include "game/report/Heatmap.h"
 #include "game/sweep/OrderedPool.h"
 #include "game/sweep/PhysicsFingerprint.h"

@@ -2,23 +2,14 @@
 
 #include <algorithm>
 
-#include "game/view/RenderSceneBuilder.h"
+#include "engine/physics/StateKinematics.h"
+#include "game/trial/TrialSetup.h"
 
 namespace hemiroll::game {
 
-namespace {
-
-// 1 s of ticks at 1 kHz is 1000 rows; the ring holds 4096, so a frame may
-// take up to ~4 s before the judge falls behind (a dragged window, a hitch).
-physics::ForceDrivenState stateOf(const std::array<double, 12>& a) {
-  return Eigen::Map<const physics::ForceDrivenState>(a.data());
-}
-
-}  // namespace
-
 PlaySession::PlaySession(script::LoadedLevel& level, const PlaySessionDef& def)
     : level_(level),
-      loopDef_(HeadlessTrial::loopDefFor(level.def, def.device)),
+      loopDef_(trialLoopDef(level.def, def.device)),
       mapping_(def.pointer),
       ring_(std::make_unique<haptics::RecordRing>()),
       deviceName_(def.device),
@@ -46,14 +37,14 @@ PlaySession::PlaySession(script::LoadedLevel& level, const PlaySessionDef& def)
     }
   }
   loop_ = std::make_unique<haptics::ServoLoop>(loopDef_, *device_);
-  initial_ = stateOf(loopDef_.initialState);
+  initial_ = physics::forceStateOf(loopDef_.initialState);
   snapshot_.state = loopDef_.initialState;
   if (mouse_) {
     // The proxy starts on the mass point (the device origin is mapped to
     // where a level's mass point starts, at its height), so that a click
     // takes hold at once, without aiming or touching the wheel.
-    const render::Vec3d p = massPointPosition(level.def, initial_);
-    const double zDevice = (p[2] - loopDef_.mapping.offset.z()) / loopDef_.mapping.scale;
+    const physics::Vec3 p = physics::massPointPosition(initial_, level.def.params.radius);
+    const double zDevice = (p.z() - loopDef_.mapping.offset.z()) / loopDef_.mapping.scale;
     mapping_.wheel(zDevice / mapping_.def().wheelStep);
     sendPointer(/*jump=*/true);
   }

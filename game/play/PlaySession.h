@@ -10,7 +10,7 @@
 //                  MouseDevice (the proxy moves by the mouse's strokes,
 //                  turned with the camera: PointerMapping.h says why not by
 //                  its place);
-//                  once per frame: RingJudge drains the ring (every tick
+//                  once per frame: TrialJudge drains the ring (every tick
 //                  judged, level callbacks at their rate), latest snapshot
 //                  for the renderer and the HUD.
 // frame() never waits for the servo loop. A safety fault (a watchdog: the
@@ -34,8 +34,8 @@
 #include "engine/haptics/devices/DeviceFactory.h"
 #include "engine/haptics/PointerMapping.h"
 #include "engine/haptics/ServoLoop.h"
-#include "game/play/ReplayCapture.h"
-#include "game/play/RingJudge.h"
+#include "game/trial/ReplayCapture.h"
+#include "game/trial/TrialJudge.h"
 
 namespace hemiroll::game {
 
@@ -46,7 +46,7 @@ struct PlaySessionDef {
   bool requestRealtime = true;         // SCHED_FIFO for the servo thread when permitted
   std::optional<physics::CouplingDef> coupling;  // the player's settings; none = the level's
   // Log the trial for a replay here ("" = no replay); levelHash goes into
-  // its header (levelFileHash of the level file).
+  // its header (record::fileContentHash of the level file).
   std::filesystem::path replayFile;
   std::string levelHash;
   // Recording (a research session's trial): every recordEvery-th judged
@@ -90,7 +90,7 @@ class PlaySession {
   // Once per frame: judge what the loop produced; returns true while running.
   bool frame();
   const haptics::ServoSnapshot& snapshot() const { return snapshot_; }
-  const RingJudge& judging() const { return judging_; }
+  const TrialJudge& judging() const { return judging_; }
   bool paused() const { return paused_; }
   bool finished() const { return judging_.finished(); }
   // Stops the loop (idempotent) and returns the result.
@@ -113,6 +113,8 @@ class PlaySession {
   script::LoadedLevel& level_;
   haptics::ServoLoopDef loopDef_;
   haptics::PointerMapping mapping_;
+  // Every tick, for the judge: 4096 rows let a frame take up to ~4 s (a
+  // dragged window, a hitch) before the judge falls behind.
   std::unique_ptr<haptics::RecordRing> ring_;
   std::unique_ptr<ReplayCapture> capture_;
   std::string replayError_;
@@ -120,7 +122,7 @@ class PlaySession {
   std::unique_ptr<haptics::HapticDevice> device_;
   haptics::MouseDevice* mouse_ = nullptr;  // device_ when it is the mouse
   std::unique_ptr<haptics::ServoLoop> loop_;
-  RingJudge judging_;
+  TrialJudge judging_;
   haptics::ServoSnapshot snapshot_;
   physics::ForceDrivenState initial_;
   std::string waitingFor_;

@@ -2,13 +2,14 @@
 
 #include <map>
 
+#include "engine/record/ContentHash.h"
 #include "engine/record/CsvRowFormat.h"
 #include "engine/record/DurableFile.h"
 #include "engine/record/RecordError.h"
 #include "engine/script/ProtocolLoader.h"
 #include "engine/script/ProtocolPlan.h"
 #include "engine/script/ScriptError.h"
-#include "game/play/ReplayCapture.h"
+#include "game/trial/ReplayCapture.h"
 #include "game/research/SessionFolder.h"
 #include "game/research/SessionResume.h"
 
@@ -39,7 +40,7 @@ struct LevelFacts {
 LevelFacts factsOf(const std::string& path) {
   try {
     const script::LoadedLevel level = script::LevelLoader().loadFile(path);
-    return {level.def.name, levelFileHash(path), level.def.coupling, level.def.task.timeLimit};
+    return {level.def.name, record::fileContentHash(path), level.def.coupling, level.def.task.timeLimit};
   } catch (const script::ScriptError& e) {
     badInput(e.what());
   }
@@ -99,7 +100,7 @@ void ResearchSession::buildPlan(const SessionRequest& request, std::uint64_t see
   manifest_.experiment = protocol_.experiment;
   manifest_.description = protocol_.description;
   manifest_.protocolFile = request.protocolPath;
-  manifest_.protocolHash = levelFileHash(request.protocolPath);
+  manifest_.protocolHash = record::fileContentHash(request.protocolPath);
   manifest_.protocolVersion = protocol_.version;
   manifest_.seed = seed;
   std::map<std::string, LevelFacts> levels;

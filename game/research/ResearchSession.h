@@ -27,7 +27,7 @@
 #include "engine/haptics/ServoLoop.h"
 #include "engine/script/LevelLoader.h"
 #include "engine/script/ProtocolDef.h"
-#include "game/play/TrialRecording.h"
+#include "game/trial/TrialRecording.h"
 #include "game/research/SessionError.h"
 #include "game/research/SessionManifest.h"
 

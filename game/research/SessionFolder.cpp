@@ -2,12 +2,12 @@
 
 #include <cstdio>
 
+#include "engine/record/DataDirectory.h"
 #include "engine/script/ProtocolDef.h"
-#include "game/scores/ScoreStore.h"
 
 namespace hemiroll::game {
 
-std::filesystem::path defaultSessionsRoot() { return dataDirectory() / "sessions"; }
+std::filesystem::path defaultSessionsRoot() { return record::dataDirectory() / "sessions"; }
 
 std::string checkFolderId(const std::string& id, const char* what) {
   if (script::isFolderName(id)) return "";

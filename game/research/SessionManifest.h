@@ -33,7 +33,7 @@ struct ManifestTrial {
   std::string conditionLabel;
   std::string levelFile;       // as found (relative to the working directory, or absolute)
   std::string levelName;
-  std::string levelHash;       // levelFileHash of the file when the session started
+  std::string levelHash;       // record::fileContentHash of the file when the session started
   std::string method;          // the effective coupling: "M1", "M2", "M3", "visual"
   double stiffness = 0.0;      // kr [N/m]
   double damping = 0.0;        // kv [N s/m]

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <ctime>
 #include <system_error>
+#include "engine/record/DataDirectory.h"
 
 namespace hemiroll::game {
 
@@ -25,14 +26,7 @@ int medalRank(const std::string& m) {
 
 }  // namespace
 
-std::filesystem::path dataDirectory() {
-  if (const char* d = std::getenv("HEMIROLL_DATA_DIR"); d && *d) return d;
-  if (const char* x = std::getenv("XDG_DATA_HOME"); x && *x) return std::filesystem::path(x) / "hemiroll";
-  if (const char* h = std::getenv("HOME"); h && *h) return std::filesystem::path(h) / ".local/share/hemiroll";
-  return std::filesystem::path(".hemiroll");
-}
-
-ScoreStore::ScoreStore(std::filesystem::path file) : file_(file.empty() ? dataDirectory() / "scores.sqlite" : file) {
+ScoreStore::ScoreStore(std::filesystem::path file) : file_(file.empty() ? record::dataDirectory() / "scores.sqlite" : file) {
   std::error_code ec;
   std::filesystem::create_directories(file_.parent_path(), ec);
   if (open(file_)) return;

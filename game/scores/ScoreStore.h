@@ -1,7 +1,6 @@
 #pragma once
-// Highscores and personal bests in a small SQLite database:
-//   $HEMIROLL_DATA_DIR (tests), else $XDG_DATA_HOME/hemiroll, else
-//   ~/.local/share/hemiroll; the file is scores.sqlite there.
+// Highscores and personal bests in a small SQLite database, scores.sqlite
+// in the data directory (record::dataDirectory).
 // One row per finished trial (level, player, outcome, time, score, medal,
 // when); bests are queries over them. A corrupt or unreadable database is
 // moved aside (scores.sqlite.corrupt-<unix time>) with a note, and a fresh
@@ -35,12 +34,9 @@ struct LevelBest {
   int attempts = 0;
 };
 
-// The directory scores (and replays) go to, by the rule above.
-std::filesystem::path dataDirectory();
-
 class ScoreStore {
  public:
-  // Opens (creating) `file`; "" = dataDirectory()/scores.sqlite.
+  // Opens (creating) `file`; "" = record::dataDirectory()/scores.sqlite.
   explicit ScoreStore(std::filesystem::path file = {});
   ~ScoreStore();
   ScoreStore(const ScoreStore&) = delete;

@@ -7,16 +7,19 @@
 
 #include "engine/physics/StateLayout.h"
 #include "engine/haptics/devices/DeviceFactory.h"
+#include "engine/record/ContentHash.h"
+#include "engine/record/DataDirectory.h"
 #include "game/app/App.h"
-#include "game/play/TrialRecording.h"
+#include "game/trial/TrialRecording.h"
 #include "game/research/ResearchSession.h"
 #include "game/screens/PauseScreen.h"
 #include "game/screens/ResultsScreen.h"
 #include "game/screens/ScreenLayout.h"
 #include "game/scores/ScoreStore.h"
 #include "engine/render/Camera.h"
-#include "game/play/GhostFile.h"
+#include "game/trial/GhostFile.h"
 #include "game/view/RenderSceneBuilder.h"
+#include "game/trial/TrialSetup.h"
 
 namespace hemiroll::game {
 
@@ -37,7 +40,7 @@ void PlayScreen::beginSessionTrial(PlaySessionDef& def) {
   def.replayFile = research_->folder() / (trial.trialId + ".replay");
   def.levelHash = trial.levelHash;
   // The player's device: its mapping and spec go into the trial's sidecar.
-  haptics::ServoLoopDef loop = HeadlessTrial::loopDefFor(level_.def, def.device);
+  haptics::ServoLoopDef loop = trialLoopDef(level_.def, def.device);
   const std::optional<haptics::DeviceSpec> spec = haptics::DeviceFactory().specOf(def.device, def.deviceOptions);
   if (!spec) throw std::runtime_error("unknown device '" + def.device + "'");
   recording_ = research_->recordNext(level_.def, loop, def.device, *spec);
@@ -80,8 +83,8 @@ void PlayScreen::begin() {
       // A replay repeats the trial only on the level's own loop definition:
       // none while the player overrides the force method.
       if (!app_.settings().overrideCoupling) {
-        def.replayFile = dataDirectory() / "replays" / "last-trial.hrr";
-        def.levelHash = levelFileHash(levelPath_);
+        def.replayFile = record::dataDirectory() / "replays" / "last-trial.hrr";
+        def.levelHash = record::fileContentHash(levelPath_);
       }
       session_ = std::make_unique<PlaySession>(level_, def);
     }
@@ -117,7 +120,7 @@ void PlayScreen::loadGhost() {
   // No ghost in a research session's trial: it would be a condition the
   // protocol did not ask for.
   if (!app_.settings().ghost || research_ != nullptr) return;
-  const std::filesystem::path file = ghostFile(dataDirectory(), level_.def.name, app_.settings().participant);
+  const std::filesystem::path file = ghostFile(record::dataDirectory(), level_.def.name, app_.settings().participant);
   std::error_code ec;
   if (!std::filesystem::exists(file, ec)) return;
   try {

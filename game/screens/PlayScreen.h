@@ -29,7 +29,7 @@
 #include "game/app/KeyBindings.h"
 #include "game/hud/PlayHud.h"
 #include "game/play/PlaySession.h"
-#include "game/play/ReplayPlayer.h"
+#include "game/trial/ReplayPlayer.h"
 #include "game/screens/Screen.h"
 
 namespace hemiroll::game {

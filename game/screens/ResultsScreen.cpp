@@ -5,8 +5,10 @@
 #include <cctype>
 #include <ctime>
 
+#include "engine/record/DataDirectory.h"
+#include "engine/record/FileNames.h"
 #include "game/app/App.h"
-#include "game/play/GhostFile.h"
+#include "game/trial/GhostFile.h"
 #include "game/screens/PlayScreen.h"
 #include "game/screens/ReplayScreen.h"
 #include "game/screens/ScreenLayout.h"
@@ -34,7 +36,7 @@ ResultsScreen::ResultsScreen(App& app, std::string levelPath, std::string levelN
   entry.medal = script::medalName(result_.medal);
   stored_ = app_.scores().add(entry);
   if (newBest_ && !replay_.empty()) {
-    const std::string error = keepAsGhost(replay_, ghostFile(dataDirectory(), levelName_, player));
+    const std::string error = keepAsGhost(replay_, ghostFile(record::dataDirectory(), levelName_, player));
     replayNote_ = error.empty() ? "kept as your ghost: race it next time" : error;
   }
 }
@@ -46,8 +48,7 @@ ResultsScreen::~ResultsScreen() {
 
 void ResultsScreen::saveReplay() {
   if (replay_.empty() || replaySaved_) return;
-  std::string stem;
-  for (char c : levelName_) stem += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+  const std::string stem = record::fileStemOf(levelName_, "", "");
   char stamp[32];
   const std::time_t now = std::time(nullptr);
   std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", std::localtime(&now));

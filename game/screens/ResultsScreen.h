@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <string>
 
-#include "game/play/HeadlessTrial.h"
+#include "game/trial/HeadlessTrial.h"
 #include "game/scores/ScoreStore.h"
 #include "game/screens/Screen.h"
 

@@ -1,6 +1,6 @@
 #include "game/sweep/PhysicsFingerprint.h"
 
-#include "game/play/ReplayCapture.h"
+#include "engine/record/ContentHash.h"
 #include "game/sweep/PointMeasurement.h"
 #include "game/sweep/SweepGrid.h"
 #include "game/sweep/SweepTable.h"
@@ -19,7 +19,7 @@ std::string physicsFingerprintOf(const script::SweepDef& base) {
     const SweepPoint point = grid.point(0);
     rows += sweepRow(point, measurePoint(grid, point));
   }
-  return contentHash(rows);
+  return record::contentHash(rows);
 }
 
 const std::string& physicsFingerprint() {

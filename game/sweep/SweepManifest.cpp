@@ -2,9 +2,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "engine/record/ContentHash.h"
 #include "engine/record/DurableFile.h"
 #include "engine/record/RecordError.h"
-#include "game/play/ReplayCapture.h"
 #include "game/sweep/SweepError.h"
 
 namespace hemiroll::game {
@@ -62,7 +62,7 @@ SweepManifest parseManifest(const std::string& text, const std::filesystem::path
   } catch (const std::exception& e) {  // json's parse, type and missing-key errors, and the checks above
     throw SweepError(SweepError::Kind::BadInput, path.string() + ": not a sweep manifest (" + e.what() + ")");
   }
-  if (contentHash(m.specJson) != m.specHash)
+  if (record::contentHash(m.specJson) != m.specHash)
     throw SweepError(SweepError::Kind::BadInput,
                      path.string() + ": its spec does not match its spec_hash (was the file edited by hand?)");
   return m;

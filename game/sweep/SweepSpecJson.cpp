@@ -2,7 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "game/play/ReplayCapture.h"
+#include "engine/record/ContentHash.h"
 #include "game/sweep/SweepError.h"
 
 namespace hemiroll::game {
@@ -34,7 +34,7 @@ json toJson(const script::SweepDef& d) {
 
 std::string specJson(const script::SweepDef& def) { return toJson(def).dump(); }
 
-std::string specHash(const script::SweepDef& def) { return contentHash(specJson(def)); }
+std::string specHash(const script::SweepDef& def) { return record::contentHash(specJson(def)); }
 
 script::SweepDef specFromJson(const std::string& text, const std::string& where) {
   script::SweepDef d;

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "engine/physics/Orientation.h"
+#include "engine/physics/StateKinematics.h"
 
 namespace hemiroll::game {
 
@@ -52,13 +53,6 @@ void fillZones(const script::LevelDef& level, render::RenderScene& scene) {
 
 }  // namespace
 
-render::Vec3d massPointPosition(const script::LevelDef& level, const physics::ForceDrivenState& x) {
-  const physics::Orientation o = physics::makeOrientation(x[slot::u_o], x[slot::v_o], x[slot::psi]);
-  const physics::Vec3 centre(x[slot::u_a], x[slot::v_a], level.params.radius);
-  const physics::Vec3 p = centre + o.R * physics::Vec3(x[slot::x_p], x[slot::y_p], 0.0);
-  return {p.x(), p.y(), p.z()};
-}
-
 void fillFromState(const script::LevelDef& level, const physics::ForceDrivenState& x, std::size_t stage,
                    render::RenderScene& scene) {
   const double radius = level.params.radius;
@@ -81,7 +75,7 @@ std::vector<render::PropDef> propsOf(const script::LevelDef& level) {
 }
 
 void fillGhost(const script::LevelDef& level, const haptics::ServoSnapshot& ghost, render::GhostPose& out) {
-  const physics::ForceDrivenState& x = Eigen::Map<const physics::ForceDrivenState>(ghost.state.data());
+  const physics::ForceDrivenState x = physics::forceStateOf(ghost.state);
   const physics::Orientation o = physics::makeOrientation(x[slot::u_o], x[slot::v_o], x[slot::psi]);
   out.shown = true;
   out.centre = {x[slot::u_a], x[slot::v_a], level.params.radius};
@@ -92,7 +86,7 @@ void fillGhost(const script::LevelDef& level, const haptics::ServoSnapshot& ghos
 
 void fillFromSnapshot(const script::LevelDef& level, const haptics::ServoSnapshot& snapshot, std::size_t stage,
                       render::RenderScene& scene) {
-  const physics::ForceDrivenState x = Eigen::Map<const physics::ForceDrivenState>(snapshot.state.data());
+  const physics::ForceDrivenState x = physics::forceStateOf(snapshot.state);
   fillFromState(level, x, stage, scene);
   scene.showProxy = true;
   scene.proxyPosition = snapshot.proxyPosition;

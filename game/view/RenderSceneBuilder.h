@@ -34,7 +34,4 @@ void fillGhost(const script::LevelDef& level, const haptics::ServoSnapshot& ghos
 void fillFromSnapshot(const script::LevelDef& level, const haptics::ServoSnapshot& snapshot, std::size_t stage,
                       render::RenderScene& scene);
 
-// Where the mass point is in the base frame [m] for this state.
-render::Vec3d massPointPosition(const script::LevelDef& level, const physics::ForceDrivenState& state);
-
 }  // namespace hemiroll::game

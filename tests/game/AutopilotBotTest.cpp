@@ -1,8 +1,8 @@
-// game/play/AutopilotBot through the real trial loop (HeadlessTrial: servo
+// game/trial/AutopilotBot through the real trial loop (HeadlessTrial: servo
 // loop, coupling, ramp, safety, judge): the shipped levels it must win, a few
 // generated tasks, determinism per seed, and refusals with "autopilot: ...".
 
-#include "game/play/AutopilotBot.h"
+#include "game/trial/AutopilotBot.h"
 
 #include <gtest/gtest.h>
 
@@ -12,7 +12,8 @@
 #include <string>
 
 #include "engine/script/LevelLoader.h"
-#include "game/play/HeadlessTrial.h"
+#include "game/trial/HeadlessTrial.h"
+#include "game/trial/TrialSetup.h"
 
 namespace hemiroll::game {
 namespace {
@@ -48,7 +49,7 @@ TEST(AutopilotBot, WinsThePapersTaskWithGold) {
   const TrialResult r = playFile(kLevels + "paper_reaching.lua");
   ASSERT_EQ(r.outcome, TrialOutcome::Success) << r.reason;
   EXPECT_EQ(r.medal, script::Medal::Gold);  // under 40 s
-  EXPECT_LE(r.maxRenderedForce, HeadlessTrial::deviceSpec().maxForce);
+  EXPECT_LE(r.maxRenderedForce, botDeviceSpec().maxForce);
 }
 
 TEST(AutopilotBot, WinsTutorialFour) {

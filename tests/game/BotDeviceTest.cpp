@@ -1,8 +1,8 @@
-// game/play/BotDevice: a bot's pose reaches the servo loop as a device
+// game/trial/BotDevice: a bot's pose reaches the servo loop as a device
 // reading, through the inverse workspace mapping, held inside the device's
 // reach, with a velocity consistent with the poses.
 
-#include "game/play/BotDevice.h"
+#include "game/trial/BotDevice.h"
 
 #include <gtest/gtest.h>
 

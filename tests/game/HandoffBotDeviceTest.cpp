@@ -1,8 +1,8 @@
-// game/play/HandoffBotDevice: the bot's poses reach the servo thread through
+// game/trial/HandoffBotDevice: the bot's poses reach the servo thread through
 // a latest-value hand-over and are extrapolated to each tick's time, held
 // after kMaxExtrapolation, and marked stale after kStaleAfter.
 
-#include "game/play/HandoffBotDevice.h"
+#include "game/trial/HandoffBotDevice.h"
 
 #include <gtest/gtest.h>
 

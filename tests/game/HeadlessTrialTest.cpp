@@ -1,9 +1,10 @@
-// game/play/HeadlessTrial in process: the tick loop's contract (determinism,
+// game/trial/HeadlessTrial in process: the tick loop's contract (determinism,
 // bot errors and safety faults as outcomes, forces within the device limit)
 // and the rose bot against the paper's prescribed drive.
 
 #include "engine/script/BotScript.h"
-#include "game/play/HeadlessTrial.h"
+#include "game/trial/HeadlessTrial.h"
+#include "game/trial/TrialSetup.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -137,7 +138,7 @@ TEST(HeadlessTrial, RenderedForceNeverExceedsTheDeviceLimit) {
   // Adversarial seeds: goals far outside the workspace, teleports, fast moves.
   for (std::uint64_t seed = 0; seed < 12; ++seed) {
     const TrialResult r = play(kOpenLevel, kBots + "random.lua", seed);
-    EXPECT_LE(r.maxRenderedForce, HeadlessTrial::deviceSpec().maxForce) << "seed " << seed;
+    EXPECT_LE(r.maxRenderedForce, botDeviceSpec().maxForce) << "seed " << seed;
     EXPECT_TRUE(r.finalState.allFinite()) << "seed " << seed;
     EXPECT_FALSE(r.reason.empty()) << "seed " << seed;
   }

@@ -1,7 +1,7 @@
-// game/play/JsonLine: one JSON object per line, strings escaped per RFC 8259,
+// game/trial/JsonLine: one JSON object per line, strings escaped per RFC 8259,
 // numbers that read back to the same double, null for non-finite numbers.
 
-#include "game/play/JsonLine.h"
+#include "game/trial/JsonLine.h"
 
 #include <gtest/gtest.h>
 

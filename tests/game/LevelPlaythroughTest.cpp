@@ -15,7 +15,8 @@
 
 #include "engine/script/BotScript.h"
 #include "engine/script/LevelLoader.h"
-#include "game/play/HeadlessTrial.h"
+#include "game/trial/HeadlessTrial.h"
+#include "game/trial/TrialSetup.h"
 
 namespace hemiroll::game {
 namespace {
@@ -62,7 +63,7 @@ TEST(LevelPlaythrough, EveryLevelSurvivesTheRandomBot) {
       EXPECT_NE(r.outcome, TrialOutcome::Running);
       EXPECT_FALSE(r.reason.empty());
       EXPECT_TRUE(r.finalState.allFinite());
-      EXPECT_LE(r.maxRenderedForce, HeadlessTrial::deviceSpec().maxForce);
+      EXPECT_LE(r.maxRenderedForce, botDeviceSpec().maxForce);
       EXPECT_LE(r.time, 3.0 + 0.0015);
       if (r.score) {
         EXPECT_TRUE(std::isfinite(*r.score));

@@ -41,10 +41,6 @@ TEST(RenderSceneBuilderTest, PoseFromTheState) {
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) EXPECT_EQ(scene.orientation[3 * i + j], o.R(i, j));  // copied, not recomputed
   EXPECT_EQ(scene.massPoint, (render::Vec2d{0.01, 0.0}));
-  // The mass point in the base frame: centre + R (x_p, y_p, 0).
-  const render::Vec3d p = massPointPosition(level, x);
-  EXPECT_NEAR(p[0], 0.01 + o.R(0, 0) * 0.01, 1e-15);
-  EXPECT_NEAR(p[2], 0.05 + o.R(2, 0) * 0.01, 1e-15);
 }
 
 TEST(RenderSceneBuilderTest, TheContactTargetAndZonesOfTheStage) {

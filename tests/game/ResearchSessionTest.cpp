@@ -2,6 +2,7 @@
 // folder, trial by trial; resumed only with the same protocol, seed and
 // levels; breaks that end a sitting.
 
+#include "engine/record/ContentHash.h"
 #include "game/research/ResearchSession.h"
 
 #include <gmock/gmock.h>
@@ -12,8 +13,9 @@
 
 #include "engine/record/DurableFile.h"
 #include "engine/record/ResultsFile.h"
-#include "game/play/ReplayCapture.h"
+#include "game/trial/ReplayCapture.h"
 #include "game/research/SessionFolder.h"
+#include "game/trial/TrialSetup.h"
 #include "tests/support/TempDirectory.h"
 
 namespace hemiroll::game {
@@ -60,8 +62,8 @@ class ResearchSessionTest : public ::testing::Test {
   // Records the next trial as a trial that ended at once, as the runners do.
   void finishOne(ResearchSession& s) const {
     const script::LoadedLevel level = s.loadNextLevel();
-    const haptics::ServoLoopDef loop = HeadlessTrial::loopDefFor(level.def);
-    auto recording = s.recordNext(level.def, loop, "bot", HeadlessTrial::deviceSpec());
+    const haptics::ServoLoopDef loop = trialLoopDef(level.def);
+    auto recording = s.recordNext(level.def, loop, "bot", botDeviceSpec());
     TrialResult result;
     result.outcome = script::TrialOutcome::Success;
     result.reason = "target held";
@@ -95,7 +97,7 @@ TEST_F(ResearchSessionTest, OpeningWritesNothingBeginWritesTheManifest) {
   EXPECT_EQ(m.experiment, "unit");
   EXPECT_EQ(m.participant, "p01");
   EXPECT_EQ(m.seed, 5u);
-  EXPECT_EQ(m.protocolHash, levelFileHash(protocol_));
+  EXPECT_EQ(m.protocolHash, record::fileContentHash(protocol_));
   EXPECT_FALSE(m.startTime.empty());
   ASSERT_EQ(m.sittings.size(), 1u);
   EXPECT_EQ(m.sittings[0].firstTrial, 1);
@@ -105,7 +107,7 @@ TEST_F(ResearchSessionTest, OpeningWritesNothingBeginWritesTheManifest) {
   EXPECT_EQ(m.plan[0].method, "M1");
   EXPECT_EQ(m.plan[0].stiffness, 250.0);
   EXPECT_EQ(m.plan[0].timeLimit, 12.0);
-  EXPECT_EQ(m.plan[0].levelHash, levelFileHash(kLevels + "/tutorial_01_tilt_and_return.lua"));
+  EXPECT_EQ(m.plan[0].levelHash, record::fileContentHash(kLevels + "/tutorial_01_tilt_and_return.lua"));
   ASSERT_TRUE(m.plan[1].breakBefore);
   EXPECT_TRUE(m.plan[1].breakBefore->stop);
   EXPECT_EQ(m.plan[1].timeLimit, 60.0);  // the level's own

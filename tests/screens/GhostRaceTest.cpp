@@ -11,8 +11,8 @@
 
 #include "engine/script/LevelLoader.h"
 #include "game/app/App.h"
-#include "game/play/GhostFile.h"
-#include "game/play/ReplayCapture.h"
+#include "game/trial/GhostFile.h"
+#include "game/trial/ReplayCapture.h"
 #include "game/screens/PlayScreen.h"
 #include "game/screens/ResultsScreen.h"
 #include "tests/screens/support/StrokedTrial.h"

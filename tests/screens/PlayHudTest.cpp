@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "engine/physics/StateLayout.h"
+#include "engine/physics/StateKinematics.h"
 #include "engine/script/LevelLoader.h"
 
 namespace hemiroll::game {
@@ -19,7 +19,7 @@ struct Fixture {
     snapshot.time = time;
     script::JudgeInput in;
     in.time = time;
-    in.state = Eigen::Map<const physics::ForceDrivenState>(snapshot.state.data());
+    in.state = physics::forceStateOf(snapshot.state);
     judge.judge(in);
   }
 };

@@ -10,12 +10,14 @@
 
 #include "engine/haptics/ReplayDevice.h"
 #include "engine/haptics/UdpBridgeDevice.h"
-#include "engine/physics/StateLayout.h"
+#include "engine/physics/StateKinematics.h"
+#include "engine/record/ContentHash.h"
 #include "engine/record/ReplayReader.h"
 #include "engine/record/ReplayRunner.h"
 #include "engine/script/LevelLoader.h"
-#include "game/play/ReplayCapture.h"
+#include "game/trial/ReplayCapture.h"
 #include "game/view/RenderSceneBuilder.h"
+#include "game/trial/TrialSetup.h"
 #include "tests/screens/support/StrokedTrial.h"
 #include "tests/support/ChildProcess.h"
 #include "tests/support/TempDirectory.h"
@@ -111,10 +113,10 @@ TEST(PlaySessionTest, TheProxyMovesByTheStrokesAndStaysPutBetweenThem) {
   PlaySessionDef def;
   def.requestRealtime = false;
   PlaySession session(level, def);
-  const render::Vec3d massPoint =
-      massPointPosition(level.def, Eigen::Map<const physics::ForceDrivenState>(session.snapshot().state.data()));
+  const physics::Vec3 massPoint =
+      physics::massPointPosition(physics::forceStateOf(session.snapshot().state), level.def.params.radius);
   const haptics::Vec3 start = session.pointerScene();
-  for (int i = 0; i < 3; ++i) EXPECT_NEAR(start[i], massPoint[static_cast<std::size_t>(i)], 1e-12) << i;
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(start[i], massPoint[i], 1e-12) << i;
 
   const double metresPerStroke = 40.0 * def.pointer.metresPerPixel;  // device [m]; the level maps device to scene
   session.pointerMotion(40.0, 0.0);  // right on the screen
@@ -165,11 +167,11 @@ TEST(PlaySessionTest, AUdpDeviceWaitsForItsClientThenPlays) {
 
   // The client's hand rests on the mass point (device coordinates of the
   // level's udp mapping), as a person's would before taking hold.
-  const haptics::ServoLoopDef loopDef = HeadlessTrial::loopDefFor(level.def, "udp");
-  const render::Vec3d p = massPointPosition(level.def, level.def.initial);
+  const haptics::ServoLoopDef loopDef = trialLoopDef(level.def, "udp");
+  const physics::Vec3 p = physics::massPointPosition(level.def.initial, level.def.params.radius);
   std::string centre;
   for (int i = 0; i < 3; ++i)
-    centre += (i ? "," : "") + std::to_string((p[static_cast<std::size_t>(i)] - loopDef.mapping.offset[i]) / loopDef.mapping.scale);
+    centre += (i ? "," : "") + std::to_string((p[i] - loopDef.mapping.offset[i]) / loopDef.mapping.scale);
   test::ChildProcess client(HEMIROLL_HAPTIC_CLIENT,
                             {"--port", std::to_string(bridge->port()), "--duration", "5", "--centre", centre,
                              "--realtime-priority", "70"});
@@ -230,10 +232,10 @@ TEST(PlaySessionTest, ATrialsReplayRepeatsItExactly) {
   ASSERT_EQ(played.replayError, "");
 
   const record::ReplayLog log = record::ReplayReader::load(def.replayFile);
-  EXPECT_EQ(log.header.levelHash, levelFileHash(levelPath));
+  EXPECT_EQ(log.header.levelHash, record::fileContentHash(levelPath));
   EXPECT_EQ(log.inputs.size(), played.last.tick);
   haptics::ReplayDevice device(log.inputs, haptics::MouseDeviceDef{}.spec);
-  haptics::ServoLoop loop(HeadlessTrial::loopDefFor(level.def), device);
+  haptics::ServoLoop loop(trialLoopDef(level.def), device);
   record::ReplayRunner::run(loop, log);
   for (std::size_t i = 0; i < 12; ++i)
     EXPECT_EQ(loop.state()[static_cast<int>(i)], played.last.state[i]) << "slot " << i;  // bit for bit

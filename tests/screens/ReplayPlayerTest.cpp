@@ -1,4 +1,4 @@
-#include "game/play/ReplayPlayer.h"
+#include "game/trial/ReplayPlayer.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -7,7 +7,7 @@
 #include <fstream>
 
 #include "engine/script/LevelLoader.h"
-#include "game/play/ReplayCapture.h"
+#include "game/trial/ReplayCapture.h"
 #include "tests/screens/support/StrokedTrial.h"
 #include "tests/support/TempDirectory.h"
 

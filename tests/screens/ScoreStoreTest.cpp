@@ -67,19 +67,5 @@ TEST(ScoreStoreTest, ACorruptDatabaseIsMovedAsideWithANoteAndAFreshOneWorks) {
   EXPECT_EQ(store.best("Tilt").attempts, 1);
 }
 
-TEST(ScoreStoreTest, DataDirectoryFollowsTheOverrideThenXdg) {
-  const char* saved = std::getenv("HEMIROLL_DATA_DIR");
-  const std::string keep = saved ? saved : "";
-  setenv("HEMIROLL_DATA_DIR", "/some/where", 1);
-  EXPECT_EQ(dataDirectory(), std::filesystem::path("/some/where"));
-  unsetenv("HEMIROLL_DATA_DIR");
-  setenv("XDG_DATA_HOME", "/xdg", 1);
-  EXPECT_EQ(dataDirectory(), std::filesystem::path("/xdg/hemiroll"));
-  unsetenv("XDG_DATA_HOME");
-  setenv("HOME", "/home/p", 1);
-  EXPECT_EQ(dataDirectory(), std::filesystem::path("/home/p/.local/share/hemiroll"));
-  if (saved) setenv("HEMIROLL_DATA_DIR", keep.c_str(), 1);
-}
-
 }  // namespace
 }  // namespace hemiroll::game

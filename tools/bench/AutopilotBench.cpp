@@ -19,8 +19,8 @@
 #include <vector>
 
 #include "engine/script/LevelLoader.h"
-#include "game/play/AutopilotBot.h"
-#include "game/play/HeadlessTrial.h"
+#include "game/trial/AutopilotBot.h"
+#include "game/trial/HeadlessTrial.h"
 
 namespace {
 

@@ -1,6 +1,6 @@
 // Headless playthroughs (issue 5): the paper's level (levels/paper_reaching.lua,
 // 240 s time limit) played by a bot that calls Lua every tick, through the
-// same tick code as `hemiroll run` (game/play/HeadlessTrial). One iteration
+// same tick code as `hemiroll run` (game/trial/HeadlessTrial). One iteration
 // is one whole trial; loading the level and the bot is not timed.
 //   speedup_cpu   simulated seconds per second of CPU time on the one core
 //                 that runs it: the issue's figure (target >= 500);
@@ -18,7 +18,7 @@
 
 #include "engine/script/BotScript.h"
 #include "engine/script/LevelLoader.h"
-#include "game/play/HeadlessTrial.h"
+#include "game/trial/HeadlessTrial.h"
 
 namespace {
 

@@ -3,8 +3,9 @@
 #include <cmath>
 #include <thread>
 
+#include "engine/record/ContentHash.h"
 #include "engine/script/LevelLoader.h"
-#include "game/play/ReplayCapture.h"
+#include "game/trial/ReplayCapture.h"
 
 namespace hemiroll::test {
 
@@ -14,7 +15,7 @@ StrokedTrial playStrokedTrial(const StrokedTrialDef& def) {
   script::LoadedLevel level = script::LevelLoader().loadFile(def.level);
   game::PlaySessionDef sessionDef;
   sessionDef.replayFile = def.replayFile;
-  sessionDef.levelHash = game::levelFileHash(def.level);
+  sessionDef.levelHash = record::fileContentHash(def.level);
   game::PlaySession session(level, sessionDef);
   session.start();
   session.click();

@@ -1,4 +1,4 @@
-#include "game/play/ReplayCapture.h"
+#include "game/trial/ReplayCapture.h"
 
 #include <cstdio>
 #include <fstream>
@@ -9,21 +9,6 @@
 #include "engine/record/ReplayLogger.h"
 
 namespace hemiroll::game {
-
-std::string levelFileHash(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return "";
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  return contentHash(bytes);
-}
-
-std::string contentHash(std::string_view bytes) {
-  const std::uint64_t h =
-      record::fnv1a(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), record::kFnvOffset);
-  char text[32];
-  std::snprintf(text, sizeof text, "fnv1a-%016llx", static_cast<unsigned long long>(h));
-  return text;
-}
 
 ReplayCapture::ReplayCapture(const std::filesystem::path& file, const std::string& levelHash, double dt,
                              const std::string& deviceKind)

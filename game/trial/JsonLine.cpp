@@ -1,4 +1,4 @@
-#include "game/play/JsonLine.h"
+#include "game/trial/JsonLine.h"
 
 #include <cmath>
 #include <cstdio>

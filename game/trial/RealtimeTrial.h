@@ -12,7 +12,7 @@
 // Not deterministic (the threads' timing decides which pose each tick sees);
 // headless runs are the reproducible ones.
 
-#include "game/play/HeadlessTrial.h"
+#include "game/trial/HeadlessTrial.h"
 
 namespace hemiroll::game {
 

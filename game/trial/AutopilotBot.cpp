@@ -1,4 +1,4 @@
-#include "game/play/AutopilotBot.h"
+#include "game/trial/AutopilotBot.h"
 
 #include <algorithm>
 

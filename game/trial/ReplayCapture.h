@@ -19,11 +19,6 @@ class ReplayLogger;
 
 namespace hemiroll::game {
 
-// "fnv1a-<16 hex digits>" of the file's bytes; "" when it cannot be read.
-std::string levelFileHash(const std::string& path);
-// "fnv1a-<16 hex digits>" of the bytes (a sweep spec's canonical text).
-std::string contentHash(std::string_view bytes);
-
 class ReplayCapture {
  public:
   // Creates the log file (an existing one is replaced). Throws

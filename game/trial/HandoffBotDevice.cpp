@@ -1,8 +1,8 @@
-#include "game/play/HandoffBotDevice.h"
+#include "game/trial/HandoffBotDevice.h"
 
 #include <algorithm>
 
-#include "game/play/BotDevice.h"
+#include "game/trial/BotDevice.h"
 
 namespace hemiroll::game {
 

@@ -1,4 +1,4 @@
-#include "game/play/RealtimeTrial.h"
+#include "game/trial/RealtimeTrial.h"
 
 #include <algorithm>
 #include <chrono>
@@ -7,12 +7,12 @@
 
 #include "engine/haptics/RecordRow.h"
 #include "engine/haptics/ServoClock.h"
+#include "engine/physics/StateKinematics.h"
 #include "engine/script/ScriptError.h"
-#include "engine/script/TaskJudge.h"
-#include "engine/script/TrialSummaryAccumulator.h"
-#include "game/play/RingJudge.h"
-#include "game/play/HandoffBotDevice.h"
-#include "game/play/ObservationBuilder.h"
+#include "game/trial/HandoffBotDevice.h"
+#include "game/trial/ObservationBuilder.h"
+#include "game/trial/TrialJudge.h"
+#include "game/trial/TrialSetup.h"
 
 namespace hemiroll::game {
 
@@ -22,10 +22,6 @@ namespace {
 
 physics::Vec3 vec(const std::array<double, 3>& t) { return {t[0], t[1], t[2]}; }
 
-physics::ForceDrivenState stateOf(const std::array<double, 12>& a) {
-  return Eigen::Map<const physics::ForceDrivenState>(a.data());
-}
-
 }  // namespace
 
 TrialResult RealtimeTrial::run() {
@@ -33,16 +29,16 @@ TrialResult RealtimeTrial::run() {
   const script::LevelDef& def = level_.def;
 
   auto ring = std::make_unique<haptics::RecordRing>();  // every tick, for the judge
-  haptics::ServoLoopDef loopDef = HeadlessTrial::loopDefFor(def);
+  haptics::ServoLoopDef loopDef = trialLoopDef(def);
   loopDef.requestRealtime = true;
   loopDef.recordRing = ring.get();
   loopDef.recordEvery = 1;
-  HandoffBotDevice device(HeadlessTrial::deviceSpec(), loopDef.mapping);
+  HandoffBotDevice device(botDeviceSpec(), loopDef.mapping);
   haptics::ServoLoop loop(loopDef, device);
-  RingJudge judging(level_, settings_.recordRing, settings_.recordEvery);
+  TrialJudge judging(level_, settings_.recordRing, settings_.recordEvery);
   script::TaskJudge& judge = judging.judge();
   const ObservationBuilder observer(def.params);
-  const physics::ForceDrivenState initial = stateOf(loopDef.initialState);
+  const physics::ForceDrivenState initial = physics::forceStateOf(loopDef.initialState);
 
   haptics::ServoSnapshot snapshot;
   snapshot.state = loopDef.initialState;
@@ -52,7 +48,7 @@ TrialResult RealtimeTrial::run() {
   // One bot call on the latest snapshot; false when the bot failed (the
   // trial is then finished).
   auto callBot = [&](double time) {
-    observer.fill(time, stateOf(snapshot.state), snapshot, judge, obs);
+    observer.fill(time, physics::forceStateOf(snapshot.state), snapshot, judge, obs);
     try {
       const script::BotAction a = bot_.act(obs);
       if (std::string why = bot_.giveUpReason(); !why.empty()) {
@@ -76,7 +72,7 @@ TrialResult RealtimeTrial::run() {
   loop.post(engage);
   std::string initError;
   try {
-    bot_.init(HeadlessTrial::levelInfoFor(def, def.source), settings_.seed);
+    bot_.init(botLevelInfo(def, def.source), settings_.seed);
   } catch (const script::ScriptError& e) {
     initError = std::string("bot error: ") + e.what();
     judge.finish(TrialOutcome::Failure, initError, 0.0);

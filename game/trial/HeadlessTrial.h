@@ -1,10 +1,9 @@
 #pragma once
 // One trial of a level played by a bot, with the tick code of real-time play:
 // every tick
-//   observation -> bot.act (Lua) -> BotDevice pose
+//   observation -> bot.act (Lua or the autopilot) -> BotDevice pose
 //   -> ServoLoop::tick (device, coupling, physics, events, safety, ramp)
-//   -> TaskJudge::judge -> TrialSummaryAccumulator::add
-//   -> LevelScript::update (on_update at the level's rate, on_success/on_fail)
+//   -> TrialJudge (TaskJudge, summary, level callbacks, safety faults)
 // until the judge ends the trial; then the level's score function.
 //
 // Headless (the default) runs ticks back to back on the calling thread with
@@ -14,19 +13,17 @@
 // with a lock-free hand-over (no Lua in the servo thread).
 //
 // Ends early, as a failure with a reason, when the bot fails ("bot error:
-// file:line: ...", from init or act), when a safety watchdog trips ("safety:
-// <fault>"), or when a level callback fails (the level runtime reports it).
+// file:line: ...", from init or act), when it gives up ("autopilot: ..."),
+// when a safety watchdog trips ("safety: <fault>"), or when a level callback
+// fails (the level runtime reports it).
 
 #include <cstdint>
 #include <functional>
-#include <optional>
-#include <string>
 
-#include "engine/haptics/ServoLoop.h"
-#include "engine/physics/StateLayout.h"
+#include "engine/haptics/RecordRow.h"
 #include "engine/script/BotPolicy.h"
 #include "engine/script/LevelLoader.h"
-#include "engine/script/TrialSummary.h"
+#include "game/trial/TrialJudge.h"
 
 namespace hemiroll::game {
 
@@ -44,21 +41,6 @@ struct TrialSettings {
   std::function<void()> drainRecording;
 };
 
-struct TrialResult {
-  script::TrialOutcome outcome = script::TrialOutcome::Failure;
-  std::string reason;
-  double time = 0.0;                 // simulated time at the end [s]
-  long long ticks = 0;
-  std::optional<double> score;       // nullopt: no score function, or it failed
-  script::Medal medal = script::Medal::None;
-  std::string scoreError;            // the score function's failure, if any
-  script::TrialSummary summary;
-  physics::ForceDrivenState finalState = physics::ForceDrivenState::Zero();
-  double maxRenderedForce = 0.0;     // largest |force| sent to the device [N]
-  double maxProxyDistance = 0.0;     // largest proxy to mass point distance [m]
-  double wallTime = 0.0;             // [s]
-};
-
 class HeadlessTrial {
  public:
   // 1 s at 1 kHz: the ring (4096 rows) never fills between drains.
@@ -68,13 +50,6 @@ class HeadlessTrial {
   HeadlessTrial(script::LoadedLevel& level, script::BotPolicy& bot, const TrialSettings& settings);
 
   TrialResult run();
-
-  // The servo loop's definition for a level (params, initial state,
-  // coupling, mapping; default safety and device), for tests and tools.
-  // `device` picks the level's workspace mapping (script::kMappedDevices).
-  static haptics::ServoLoopDef loopDefFor(const script::LevelDef& level, const std::string& device = "bot");
-  static haptics::DeviceSpec deviceSpec();
-  static script::BotLevelInfo levelInfoFor(const script::LevelDef& level, const std::string& file);
 
  private:
   script::LoadedLevel& level_;

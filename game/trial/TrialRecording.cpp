@@ -1,4 +1,4 @@
-#include "game/play/TrialRecording.h"
+#include "game/trial/TrialRecording.h"
 
 #include <cmath>
 #include <filesystem>

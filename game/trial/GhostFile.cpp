@@ -1,17 +1,14 @@
-#include "game/play/GhostFile.h"
+#include "game/trial/GhostFile.h"
 
 #include <cctype>
+#include "engine/record/FileNames.h"
 
 namespace hemiroll::game {
 
 namespace {
 
 // Names become file names: letters and digits kept, the rest '_'.
-std::string fileStem(const std::string& name) {
-  std::string stem;
-  for (char c : name) stem += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
-  return stem.empty() ? "_" : stem;
-}
+std::string fileStem(const std::string& name) { return record::fileStemOf(name, "", "_"); }
 
 }  // namespace
 

@@ -1,22 +1,24 @@
-#include "game/play/ReplayPlayer.h"
+#include "game/trial/ReplayPlayer.h"
 
 #include <stdexcept>
 
 #include "engine/haptics/devices/DeviceFactory.h"
-#include "game/play/HeadlessTrial.h"
-#include "game/play/ReplayCapture.h"
+#include "engine/record/ContentHash.h"
+#include "game/trial/HeadlessTrial.h"
+#include "game/trial/ReplayCapture.h"
+#include "game/trial/TrialSetup.h"
 
 namespace hemiroll::game {
 
 ReplayPlayer::ReplayPlayer(const script::LevelDef& level, const std::string& levelPath,
                            const std::filesystem::path& file)
     : log_(record::ReplayReader::load(file)) {
-  if (log_.header.levelHash != levelFileHash(levelPath))
+  if (log_.header.levelHash != record::fileContentHash(levelPath))
     throw std::runtime_error(file.string() + " was recorded on another version of " + levelPath);
   const std::string& kind = log_.header.deviceKind;
   const std::optional<haptics::DeviceSpec> spec = haptics::DeviceFactory().specOf(kind);
   if (!spec) throw std::runtime_error(file.string() + " was played with a device this program does not know: '" + kind + "'");
-  haptics::ServoLoopDef def = HeadlessTrial::loopDefFor(level, kind);
+  haptics::ServoLoopDef def = trialLoopDef(level, kind);
   def.period = log_.header.dt;
   // The played device's spec: the safety layer clamps to it, as it did.
   device_ = std::make_unique<haptics::ReplayDevice>(log_.inputs, *spec);

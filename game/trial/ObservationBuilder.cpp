@@ -1,4 +1,4 @@
-#include "game/play/ObservationBuilder.h"
+#include "game/trial/ObservationBuilder.h"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "game/play/BotDevice.h"
+#include "game/trial/BotDevice.h"
 
 namespace hemiroll::game {
 

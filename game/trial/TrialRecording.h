@@ -15,7 +15,8 @@
 #include "engine/haptics/RecordRow.h"
 #include "engine/record/RecordingSession.h"
 #include "engine/script/LevelDef.h"
-#include "game/play/HeadlessTrial.h"
+#include "game/trial/HeadlessTrial.h"
+#include "game/trial/TrialSetup.h"
 
 namespace hemiroll::record {
 class TrialRecorder;
@@ -37,10 +38,10 @@ struct TrialRecordingDef {
   // never overwrites); otherwise existing files are an error.
   bool renameIfTaken = false;
   std::string taskName = "hemiroll";
-  std::string levelHash;            // levelFileHash of the level file
+  std::string levelHash;            // record::fileContentHash of the level file
   std::uint64_t seed = 0;
   std::string deviceName = "bot";
-  haptics::DeviceSpec deviceSpec = HeadlessTrial::deviceSpec();
+  haptics::DeviceSpec deviceSpec = botDeviceSpec();
   record::Fields sidecarExtra;      // the sidecar's `extra`
 };
 

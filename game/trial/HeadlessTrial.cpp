@@ -1,0 +1,89 @@
+#include "game/trial/HeadlessTrial.h"
+
+#include <chrono>
+#include <cmath>
+
+#include "engine/physics/StateKinematics.h"
+#include "engine/script/ScriptError.h"
+#include "game/trial/BotDevice.h"
+#include "game/trial/ObservationBuilder.h"
+#include "game/trial/RealtimeTrial.h"
+#include "game/trial/TrialSetup.h"
+
+namespace hemiroll::game {
+
+using script::TrialOutcome;
+
+namespace {
+
+physics::Vec3 vec(const haptics::Triple& t) { return {t[0], t[1], t[2]}; }
+
+}  // namespace
+
+HeadlessTrial::HeadlessTrial(script::LoadedLevel& level, script::BotPolicy& bot, const TrialSettings& settings)
+    : level_(level), bot_(bot), settings_(settings) {}
+
+TrialResult HeadlessTrial::run() {
+  if (settings_.realtime) return RealtimeTrial(level_, bot_, settings_).run();
+  const auto wallStart = std::chrono::steady_clock::now();
+  const script::LevelDef& def = level_.def;
+
+  haptics::ServoLoopDef loopDef = trialLoopDef(def);
+  loopDef.recordRing = settings_.recordRing;
+  loopDef.recordEvery = settings_.recordEvery;
+  BotDevice device(botDeviceSpec(), loopDef.mapping, loopDef.period);
+  haptics::ServoLoop loop(loopDef, device);
+  TrialJudge judging(level_);
+  const ObservationBuilder observer(def.params);
+  const physics::ForceDrivenState initial = physics::forceStateOf(loopDef.initialState);
+
+  haptics::ServoSnapshot snapshot;  // defaults until the first tick publishes
+  snapshot.state = loopDef.initialState;
+  script::BotObservation obs;
+
+  haptics::ServoCommand engage;
+  engage.kind = haptics::ServoCommandKind::Engage;
+  loop.post(engage);
+
+  try {
+    bot_.init(botLevelInfo(def, def.source), settings_.seed);
+  } catch (const script::ScriptError& e) {
+    judging.judge().finish(TrialOutcome::Failure, std::string("bot error: ") + e.what(), loop.time());
+  }
+  judging.start(initial);  // on_start, and on_fail for a failed init
+
+  const double period = loopDef.period;
+  const auto maxTicks = static_cast<std::uint64_t>(std::ceil(def.task.timeLimit * settings_.maxTimeFactor / period)) + 1;
+
+  while (!judging.finished() && loop.ticks() < maxTicks) {
+    observer.fill(loop.time(), loop.state(), snapshot, judging.judge(), obs);
+    script::BotAction action;
+    try {
+      action = bot_.act(obs);
+    } catch (const script::ScriptError& e) {
+      judging.fail(std::string("bot error: ") + e.what());
+      break;
+    }
+    if (std::string why = bot_.giveUpReason(); !why.empty()) {
+      judging.fail(why);
+      break;
+    }
+    if (action.hasVelocity)
+      device.setPose(vec(action.position), vec(action.velocity));
+    else
+      device.setPose(vec(action.position));
+
+    loop.tick();
+    loop.latest(snapshot);
+    judging.judgeTick(snapshot);
+    if (settings_.drainRecording && snapshot.tick % kDrainEveryTicks == 0) settings_.drainRecording();
+  }
+  if (!judging.finished()) judging.fail("the trial did not end within its time limit");
+  if (settings_.drainRecording) settings_.drainRecording();
+
+  TrialResult result = judging.result(initial);
+  result.wallTime = std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
+  return result;
+}
+
+}  // namespace hemiroll::game

@@ -1,0 +1,85 @@
+#pragma once
+// The one judge of a trial, whoever plays it and on whichever thread the
+// servo loop runs: headless bots (HeadlessTrial, one tick at a time), `run
+// --realtime` (RealtimeTrial) and a person in the window (PlaySession, both
+// draining the loop's record ring). Every tick, in order, none skipped:
+//   TaskJudge::judge -> TrialSummaryAccumulator::add -> LevelScript::update
+// and a safety fault ends the trial (a bot's), or is left to the caller (a
+// human's: the game pauses with the reason and goes on when asked). A rule
+// of judging is written here once, so that what a bot is judged by is what
+// a player is judged by.
+//
+// Allocates nothing per tick once warm (the judge and accumulator do not; a
+// level's messages are its own).
+
+#include <optional>
+#include <string>
+
+#include "engine/haptics/RecordRow.h"
+#include "engine/script/LevelLoader.h"
+#include "engine/script/TaskJudge.h"
+#include "engine/script/TrialSummaryAccumulator.h"
+
+namespace hemiroll::game {
+
+struct TrialResult {
+  script::TrialOutcome outcome = script::TrialOutcome::Failure;
+  std::string reason;
+  double time = 0.0;                 // simulated time at the end [s]
+  long long ticks = 0;
+  std::optional<double> score;       // nullopt: no score function, or it failed
+  script::Medal medal = script::Medal::None;
+  std::string scoreError;            // the score function's failure, if any
+  script::TrialSummary summary;
+  physics::ForceDrivenState finalState = physics::ForceDrivenState::Zero();
+  double maxRenderedForce = 0.0;     // largest |force| sent to the device [N]
+  double maxProxyDistance = 0.0;     // largest proxy to mass point distance [m]
+  double wallTime = 0.0;             // [s]
+};
+
+class TrialJudge {
+ public:
+  // `level` must outlive this; `forward` (may be null) receives every
+  // `forwardEvery`-th row drain() judges (a recording's ring).
+  TrialJudge(script::LoadedLevel& level, haptics::RecordRing* forward = nullptr, int forwardEvery = 10,
+             bool faultsEndTrial = true);
+
+  // on_start at the initial state (and on_fail for a trial failed before it).
+  void start(const physics::ForceDrivenState& initial);
+  // Judges one tick as the loop published it. Ignored once finished.
+  void judgeTick(const haptics::ServoSnapshot& tick);
+  void judgeTick(const haptics::RecordRow& tick);
+  // Judges every row the ring holds now; returns the number judged.
+  std::size_t drain(haptics::RecordRing& ring);
+  // Ends the trial from outside (bot error, stall, the player quit) at the
+  // last judged time; runs on_fail.
+  void fail(const std::string& reason);
+
+  script::TaskJudge& judge() { return judge_; }
+  const script::TaskJudge& judge() const { return judge_; }
+  bool finished() const { return judge_.finished(); }
+  const script::TrialObservation& view() const { return view_; }
+  long long judgedTicks() const { return judgedTicks_; }
+  // The trial summary so far (time, path, effort, margins), for a running score.
+  script::TrialSummary summary() const { return accumulator_.summary(judge_); }
+
+  // Outcome, summary, score and medal; `initial` stands for the final state
+  // when no tick was judged. wallTime is left to the caller.
+  TrialResult result(const physics::ForceDrivenState& initial);
+
+ private:
+  template <class Tick>
+  void judgeAny(const Tick& tick);
+
+  script::LoadedLevel& level_;
+  haptics::RecordRing* forward_;
+  int forwardEvery_;
+  bool faultsEndTrial_;
+  script::TaskJudge judge_;
+  script::TrialSummaryAccumulator accumulator_;
+  script::TrialObservation view_;
+  long long judgedTicks_ = 0;
+  double maxRenderedForce_ = 0.0, maxProxyDistance_ = 0.0;
+};
+
+}  // namespace hemiroll::game

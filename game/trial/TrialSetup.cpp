@@ -1,0 +1,46 @@
+#include "game/trial/TrialSetup.h"
+
+#include "engine/physics/ForceCoupling.h"
+
+namespace hemiroll::game {
+
+haptics::DeviceSpec botDeviceSpec() {
+  haptics::DeviceSpec spec;
+  spec.name = "bot";
+  return spec;
+}
+
+haptics::ServoLoopDef trialLoopDef(const script::LevelDef& level, const std::string& device) {
+  haptics::ServoLoopDef def;
+  def.requestRealtime = false;  // callers that start the loop's thread ask for it
+  def.params = level.params;
+  def.coupling = level.coupling;
+  const script::DeviceMappingDef& mapping = level.mappingFor(device);
+  def.mapping.scale = mapping.scale;
+  def.mapping.offset = physics::Vec3(mapping.offset[0], mapping.offset[1], mapping.offset[2]);
+  for (int i = 0; i < 12; ++i) def.initialState[static_cast<std::size_t>(i)] = level.initial[i];
+  return def;
+}
+
+script::BotLevelInfo botLevelInfo(const script::LevelDef& level, const std::string& file) {
+  const haptics::ServoLoopDef def = trialLoopDef(level);
+  script::BotLevelInfo info;
+  info.name = level.name;
+  info.file = file;
+  info.radius = level.params.radius;
+  info.shellMass = level.params.shellMass;
+  info.pointMass = level.params.pointMass;
+  info.gravity = level.params.gravity;
+  info.method = level.coupling.visualOnly ? "visual" : physics::forceMethodName(level.coupling.method);
+  info.stiffness = level.coupling.stiffness;
+  info.damping = level.coupling.damping;
+  info.alpha = level.coupling.alpha;
+  info.dt = def.period;
+  info.timeLimit = level.task.timeLimit;
+  info.engageDistance = def.safety.engagement.engageDistance;
+  info.workspaceRadius = botDeviceSpec().workspaceRadius * def.mapping.scale;
+  info.workspaceCentre = {def.mapping.offset.x(), def.mapping.offset.y(), def.mapping.offset.z()};
+  return info;
+}
+
+}  // namespace hemiroll::game
