@@ -43,7 +43,7 @@ void PauseScreen::paint() {
   const ImVec2 button(-1, 0);
   if (ImGui::Button("Continue  (Esc)", button)) resume();
   // A research session's trial is recorded once: it cannot be restarted.
-  if (!play_.inResearchSession() && ImGui::Button("Restart  (R)", button)) restart();
+  if (play_.restartAllowed() && ImGui::Button("Restart  (R)", button)) restart();
   if (ImGui::Button("Quit the trial  (Q)", button)) quit();
   ImGui::End();
 }

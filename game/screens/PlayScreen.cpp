@@ -6,65 +6,23 @@
 #include <cstdio>
 
 #include "engine/physics/StateLayout.h"
-#include "engine/haptics/devices/DeviceFactory.h"
-#include "engine/record/ContentHash.h"
 #include "engine/record/DataDirectory.h"
-#include "game/app/App.h"
-#include "game/trial/TrialRecording.h"
-#include "game/research/ResearchSession.h"
-#include "game/screens/PauseScreen.h"
-#include "game/screens/ResultsScreen.h"
-#include "game/screens/ScreenLayout.h"
-#include "game/scores/ScoreStore.h"
 #include "engine/render/Camera.h"
+#include "game/app/App.h"
+#include "game/screens/FreePlay.h"
+#include "game/screens/PauseScreen.h"
+#include "game/screens/ScreenLayout.h"
 #include "game/trial/GhostFile.h"
 #include "game/view/RenderSceneBuilder.h"
-#include "game/trial/TrialSetup.h"
 
 namespace hemiroll::game {
 
-PlayScreen::PlayScreen(App& app, std::string levelPath) : Screen(app), levelPath_(std::move(levelPath)) {}
+PlayScreen::PlayScreen(App& app, std::unique_ptr<PlayMode> mode) : Screen(app), mode_(std::move(mode)) {}
 
-PlayScreen::PlayScreen(App& app, ResearchSession& session, std::function<void(const SessionTrialEnd&)> done)
-    : Screen(app), levelPath_(session.nextTrial().levelFile), research_(&session), sessionDone_(std::move(done)) {}
+PlayScreen::PlayScreen(App& app, std::string levelPath)
+    : PlayScreen(app, std::make_unique<FreePlay>(app, std::move(levelPath))) {}
 
 PlayScreen::~PlayScreen() = default;
-
-// The session's next trial: its level with the plan's overrides, recorded
-// into the session folder (rows through the judge's forward ring, drained by
-// the recorder's writer thread), its replay log beside the trial's files.
-void PlayScreen::beginSessionTrial(PlaySessionDef& def) {
-  level_ = research_->loadNextLevel();
-  const ManifestTrial& trial = research_->nextTrial();
-  def.coupling = level_.def.coupling;
-  def.replayFile = research_->folder() / (trial.trialId + ".replay");
-  def.levelHash = trial.levelHash;
-  // The player's device: its mapping and spec go into the trial's sidecar.
-  haptics::ServoLoopDef loop = trialLoopDef(level_.def, def.device);
-  const std::optional<haptics::DeviceSpec> spec = haptics::DeviceFactory().specOf(def.device, def.deviceOptions);
-  if (!spec) throw std::runtime_error("unknown device '" + def.device + "'");
-  recording_ = research_->recordNext(level_.def, loop, def.device, *spec);
-  def.recordRing = &recording_->ring();
-  def.recordEvery = recording_->recordEvery();
-  session_ = std::make_unique<PlaySession>(level_, def);
-  recording_->startWriter();
-}
-
-void PlayScreen::endSessionTrial(SessionTrialEnd end) {
-  if (sessionEnded_) return;  // two Escapes in one frame: the stack changes once
-  sessionEnded_ = true;
-  if (end.recorded) {
-    try {
-      research_->finishNext(*recording_, end.result, session_->timing());
-    } catch (const std::exception& e) {
-      end.recorded = false;
-      end.error = e.what();
-    }
-  }
-  recording_.reset();
-  app_.screens().pop();  // applied after this frame: this screen lives until then
-  sessionDone_(end);
-}
 
 void PlayScreen::begin() {
   error_.clear();
@@ -75,19 +33,7 @@ void PlayScreen::begin() {
     def.deviceOptions.joystick.index = app_.settings().joystickIndex;
     def.deviceOptions.udp.port = static_cast<std::uint16_t>(app_.settings().udpPort);
     def.requestRealtime = app_.def().requestRealtime;
-    if (research_ != nullptr) {
-      beginSessionTrial(def);
-    } else {
-      level_ = script::LevelLoader().loadFile(levelPath_);
-      def.coupling = couplingFor(app_.settings(), level_.def.coupling);
-      // A replay repeats the trial only on the level's own loop definition:
-      // none while the player overrides the force method.
-      if (!app_.settings().overrideCoupling) {
-        def.replayFile = record::dataDirectory() / "replays" / "last-trial.hrr";
-        def.levelHash = record::fileContentHash(levelPath_);
-      }
-      session_ = std::make_unique<PlaySession>(level_, def);
-    }
+    session_ = mode_->begin(level_, def);
     session_->start();
   } catch (const std::exception& e) {
     error_ = e.what();
@@ -96,14 +42,8 @@ void PlayScreen::begin() {
   }
   const bool mouse = app_.settings().device == "mouse";
   hud_.reset();
-  const physics::CouplingDef coupling =
-      research_ != nullptr ? level_.def.coupling : couplingFor(app_.settings(), level_.def.coupling);
-  // In a research session the player sees where they are in the plan.
-  const std::string title = research_ == nullptr
-                                ? level_.def.name
-                                : "trial " + std::to_string(research_->nextTrial().index) + " of " +
-                                      std::to_string(research_->trialCount()) + ": " + level_.def.name;
-  hud_.setLabels(title, app_.settings().device,
+  const physics::CouplingDef coupling = mode_->coupling(level_.def);
+  hud_.setLabels(mode_->title(level_.def), app_.settings().device,
                  coupling.visualOnly ? "visual only" : physics::forceMethodName(coupling.method), mouse,
                  level_.def.params.radius);
   hud_.setTakeHoldKey(app_.settings().keys.keyName(KeyAction::TakeHold));
@@ -117,14 +57,12 @@ void PlayScreen::loadGhost() {
   ghost_.reset();
   scene_.ghost.shown = false;
   hud_.setGhost("");
-  // No ghost in a research session's trial: it would be a condition the
-  // protocol did not ask for.
-  if (!app_.settings().ghost || research_ != nullptr) return;
+  if (!app_.settings().ghost || !mode_->ghostAllowed()) return;
   const std::filesystem::path file = ghostFile(record::dataDirectory(), level_.def.name, app_.settings().participant);
   std::error_code ec;
   if (!std::filesystem::exists(file, ec)) return;
   try {
-    ghost_ = std::make_unique<ReplayPlayer>(level_.def, levelPath_, file);
+    ghost_ = std::make_unique<ReplayPlayer>(level_.def, mode_->levelPath(), file);
   } catch (const std::exception& e) {
     hud_.setGhost(std::string("no ghost: ") + e.what());
   }
@@ -152,7 +90,7 @@ void PlayScreen::resume() {
 }
 
 void PlayScreen::restart() {
-  if (research_ == nullptr) begin();  // a session's trial is recorded once: no restart
+  if (mode_->restartAllowed()) begin();
 }
 
 void PlayScreen::quit() {
@@ -222,28 +160,30 @@ void PlayScreen::update(double dt) {
   if (!session_) return;
   session_->frame();
   for (const script::LevelMessage& m : level_.script->takeMessages()) hud_.addMessage(m.text, m.time + m.duration);
-  // The score so far: the level's Lua score function twice a second (a
-  // call costs microseconds; every frame would be waste, not harm).
+  pollScore(dt);
+  const haptics::ServoSnapshot& s = session_->snapshot();
+  hud_.update(s, session_->judging().judge());
+  buildScene(s);
+  playSounds(s);
+  if (safetyStop()) return;
+  if (session_->finished()) endTrial();
+}
+
+// The score so far: the level's Lua score function twice a second (a call
+// costs microseconds; every frame would be waste, not harm).
+void PlayScreen::pollScore(double dt) {
   scoreClock_ += dt;
   if (level_.def.scoring.hasScoreFunction && scoreClock_ >= 0.5 && !session_->finished()) {
     scoreClock_ = 0.0;
     const script::ScoreResult score = level_.script->score(session_->judging().summary());
     hud_.setScore(score.score);
   }
-  const haptics::ServoSnapshot& s = session_->snapshot();
-  hud_.update(s, session_->judging().judge());
+}
+
+void PlayScreen::buildScene(const haptics::ServoSnapshot& s) {
   const std::size_t stage = static_cast<std::size_t>(std::max(0, session_->judging().judge().stage()));
   fillFromSnapshot(level_.def, s, stage, scene_);
-  if (ghost_) {
-    // In step by simulated time, which stands still while paused.
-    ghost_->playTo(static_cast<std::uint64_t>(std::llround(s.time / ghost_->period())));
-    fillGhost(level_.def, ghost_->snapshot(), scene_.ghost);
-    const double best = static_cast<double>(ghost_->ticksTotal()) * ghost_->period();
-    char line[96];
-    std::snprintf(line, sizeof line, ghost_->done() ? "ghost: your best finished at %.2f s" : "ghost: your best, %.2f s",
-                  best);
-    hud_.setGhost(line);
-  }
+  followGhost(s);
   // The proxy is the cursor: drawn where this frame's strokes put it, not
   // where the servo thread last read it (up to a tick behind).
   const haptics::Vec3 proxy = session_->pointerScene();
@@ -257,8 +197,23 @@ void PlayScreen::update(double dt) {
   scene_.camera.yaw = app_.settings().orbitYaw;
   scene_.camera.pitch = app_.settings().orbitPitch;
   session_->setScreenYaw(render::screenRightHeading(scene_.camera));
+}
 
-  // Sounds: clicks on taking hold and letting go; the tone while held.
+void PlayScreen::followGhost(const haptics::ServoSnapshot& s) {
+  if (!ghost_) return;
+  // In step by simulated time, which stands still while paused.
+  ghost_->playTo(static_cast<std::uint64_t>(std::llround(s.time / ghost_->period())));
+  fillGhost(level_.def, ghost_->snapshot(), scene_.ghost);
+  const double best = static_cast<double>(ghost_->ticksTotal()) * ghost_->period();
+  char line[96];
+  std::snprintf(line, sizeof line, ghost_->done() ? "ghost: your best finished at %.2f s" : "ghost: your best, %.2f s",
+                best);
+  hud_.setGhost(line);
+}
+
+// Clicks on taking hold and letting go; the tone while held, higher the
+// closer the worst tolerance is to being met.
+void PlayScreen::playSounds(const haptics::ServoSnapshot& s) {
   Audio& audio = app_.audio();
   if (s.engagement != lastEngagement_) {
     if (s.engagement == haptics::Engagement::Engaged) audio.play(Cue::Engage);
@@ -268,37 +223,28 @@ void PlayScreen::update(double dt) {
   const double worst = session_->judging().judge().worstNormalizedMargin();
   const double closeness = !std::isfinite(worst) ? 0.0 : worst >= 0.0 ? 1.0 : 1.0 / (1.0 - worst);
   audio.setProximity(s.engagement == haptics::Engagement::Engaged ? closeness : 0.0);
+}
 
-  // A watchdog stopped the loop (force already off): pause and say why.
-  if (session_->fault() != haptics::SafetyFault::None && !session_->finished()) {
-    audio.setProximity(0.0);
-    session_->pause();
-    app_.screens().push(std::make_unique<PauseScreen>(
-        app_, *this, std::string("safety stop: ") + haptics::safetyFaultName(session_->fault()) +
-                                     ". The force is off; continue to take hold again."));
-    return;
-  }
+// A watchdog stopped the loop (force already off): pause and say why.
+bool PlayScreen::safetyStop() {
+  if (session_->fault() == haptics::SafetyFault::None || session_->finished()) return false;
+  app_.audio().setProximity(0.0);
+  session_->pause();
+  app_.screens().push(std::make_unique<PauseScreen>(
+      app_, *this, std::string("safety stop: ") + haptics::safetyFaultName(session_->fault()) +
+                       ". The force is off; continue to take hold again."));
+  return true;
+}
 
-  if (session_->finished()) {
-    audio.setProximity(0.0);
-    TrialResult result = session_->finish();
-    audio.play(result.outcome == script::TrialOutcome::Success ? Cue::Success : Cue::Failure);
-    if (research_ != nullptr) {
-      endSessionTrial({true, std::move(result), {}});
-      return;
-    }
-    std::string replayNote = session_->replayError();
-    if (app_.settings().overrideCoupling) replayNote = "no replay: the force method was overridden in the settings";
-    app_.screens().replace(std::make_unique<ResultsScreen>(app_, levelPath_, level_.def.name, std::move(result),
-                                                           session_->replayFile(), replayNote));
-  }
+void PlayScreen::endTrial() {
+  app_.audio().setProximity(0.0);
+  TrialResult result = session_->finish();
+  app_.audio().play(result.outcome == script::TrialOutcome::Success ? Cue::Success : Cue::Failure);
+  mode_->finished(*session_, std::move(result), level_.def);
 }
 
 // Leaving a trial that could not start; a session hears why.
-void PlayScreen::back() {
-  if (research_ != nullptr) endSessionTrial({false, {}, error_});
-  else app_.screens().pop();
-}
+void PlayScreen::back() { mode_->leftWithoutTrial(error_); }
 
 void PlayScreen::paint() {
   if (!session_) {

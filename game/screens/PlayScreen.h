@@ -11,15 +11,10 @@
 // (as does the window losing focus), Tab changes the camera. When the judge
 // ends the trial the results screen takes this one's place.
 //
-// A research session's trial (SessionScreen) plays the session's next trial
-// instead: its level with the plan's overrides and seed (the settings'
-// override is not used), recorded into the session folder (trial CSV and
-// sidecar through the loop's ring, the replay log beside them), no restart;
-// when it ends the results row is appended, the screen goes and `done` says
-// how it went (no results screen, no scores).
+// What kind of trial it is (free play, a research session's trial) is a
+// PlayMode given to it (PlayMode.h): loading, titles, ghost and restart
+// rules and what follows the end are the mode's.
 
-#include <functional>
-#include <optional>
 #include <memory>
 #include <string>
 
@@ -29,25 +24,17 @@
 #include "game/app/KeyBindings.h"
 #include "game/hud/PlayHud.h"
 #include "game/play/PlaySession.h"
-#include "game/trial/ReplayPlayer.h"
+#include "game/screens/PlayMode.h"
 #include "game/screens/Screen.h"
+#include "game/trial/ReplayPlayer.h"
 
 namespace hemiroll::game {
 
-class ResearchSession;
-class TrialRecording;
-
-// How a session's trial ended: recorded (its result), or not (why).
-struct SessionTrialEnd {
-  bool recorded = false;
-  TrialResult result;
-  std::string error;
-};
-
 class PlayScreen final : public Screen {
  public:
+  PlayScreen(App& app, std::unique_ptr<PlayMode> mode);
+  // Free play of a level file (FreePlay).
   PlayScreen(App& app, std::string levelPath);
-  PlayScreen(App& app, ResearchSession& session, std::function<void(const SessionTrialEnd&)> done);
   ~PlayScreen() override;
   const char* name() const override { return "play"; }
   void enter() override;
@@ -66,7 +53,7 @@ class PlayScreen final : public Screen {
 
   PlaySession* session() { return session_.get(); }
   const ReplayPlayer* ghost() const { return ghost_.get(); }
-  bool inResearchSession() const { return research_ != nullptr; }
+  bool restartAllowed() const { return mode_->restartAllowed(); }
   const PlayHud& hud() const { return hud_; }
   const std::string& error() const { return error_; }
 
@@ -74,12 +61,17 @@ class PlayScreen final : public Screen {
   void begin();
   void loadGhost();
   void keyAction(KeyAction action, bool repeat);
-  void beginSessionTrial(PlaySessionDef& def);
-  void endSessionTrial(SessionTrialEnd end);
+  // update()'s parts, in their order within a frame.
+  void pollScore(double dt);
+  void followGhost(const haptics::ServoSnapshot& s);
+  void buildScene(const haptics::ServoSnapshot& s);
+  void playSounds(const haptics::ServoSnapshot& s);
+  bool safetyStop();
+  void endTrial();
   void back();
   void pause();
 
-  std::string levelPath_;
+  std::unique_ptr<PlayMode> mode_;
   std::string error_;  // the level failed to load or the loop refused it
   script::LoadedLevel level_;
   std::unique_ptr<PlaySession> session_;
@@ -90,10 +82,6 @@ class PlayScreen final : public Screen {
   haptics::Engagement lastEngagement_ = haptics::Engagement::Disengaged;
   bool started_ = false;
   double scoreClock_ = 0.0;  // [s] since the running score was last asked for
-  ResearchSession* research_ = nullptr;  // set: a research session's trial
-  std::function<void(const SessionTrialEnd&)> sessionDone_;
-  std::unique_ptr<TrialRecording> recording_;
-  bool sessionEnded_ = false;
 };
 
 }  // namespace hemiroll::game

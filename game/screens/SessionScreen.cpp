@@ -9,6 +9,7 @@
 #include "game/app/App.h"
 #include "game/screens/PlayScreen.h"
 #include "game/screens/ScreenLayout.h"
+#include "game/screens/SessionTrialPlay.h"
 
 namespace hemiroll::game {
 
@@ -63,7 +64,9 @@ SessionScreen::Stage SessionScreen::stage() const {
 void SessionScreen::startTrial() {
   if (stage() != Stage::Ready) return;
   app_.screens().push(
-      std::make_unique<PlayScreen>(app_, *session_, [this](const SessionTrialEnd& end) { trialEnded(end); }));
+      std::make_unique<PlayScreen>(app_, std::make_unique<SessionTrialPlay>(app_, *session_, [this](const SessionTrialEnd& end) {
+        trialEnded(end);
+      })));
 }
 
 void SessionScreen::trialEnded(const SessionTrialEnd& end) {

@@ -1,0 +1,33 @@
+#include "game/screens/FreePlay.h"
+
+#include "engine/record/ContentHash.h"
+#include "engine/record/DataDirectory.h"
+#include "game/app/App.h"
+#include "game/screens/ResultsScreen.h"
+
+namespace hemiroll::game {
+
+std::unique_ptr<PlaySession> FreePlay::begin(script::LoadedLevel& level, PlaySessionDef& def) {
+  level = script::LevelLoader().loadFile(levelPath_);
+  def.coupling = coupling(level.def);
+  if (!app_.settings().overrideCoupling) {
+    def.replayFile = record::dataDirectory() / "replays" / "last-trial.hrr";
+    def.levelHash = record::fileContentHash(levelPath_);
+  }
+  return std::make_unique<PlaySession>(level, def);
+}
+
+physics::CouplingDef FreePlay::coupling(const script::LevelDef& level) const {
+  return couplingFor(app_.settings(), level.coupling);
+}
+
+void FreePlay::finished(PlaySession& session, TrialResult result, const script::LevelDef& level) {
+  std::string replayNote = session.replayError();
+  if (app_.settings().overrideCoupling) replayNote = "no replay: the force method was overridden in the settings";
+  app_.screens().replace(
+      std::make_unique<ResultsScreen>(app_, levelPath_, level.name, std::move(result), session.replayFile(), replayNote));
+}
+
+void FreePlay::leftWithoutTrial(const std::string& /*error*/) { app_.screens().pop(); }
+
+}  // namespace hemiroll::game

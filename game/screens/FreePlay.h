@@ -1,0 +1,29 @@
+#pragma once
+// Free play of a level file (PlayMode.h): the player's coupling override
+// from the settings, the last trial logged for a replay (unless the force
+// method is overridden: a replay repeats the level's own loop), the ghost,
+// restart, and the results screen at the end.
+
+#include "game/screens/PlayMode.h"
+
+namespace hemiroll::game {
+
+class FreePlay final : public PlayMode {
+ public:
+  FreePlay(App& app, std::string levelPath) : app_(app), levelPath_(std::move(levelPath)) {}
+
+  const std::string& levelPath() const override { return levelPath_; }
+  std::unique_ptr<PlaySession> begin(script::LoadedLevel& level, PlaySessionDef& def) override;
+  physics::CouplingDef coupling(const script::LevelDef& level) const override;
+  std::string title(const script::LevelDef& level) const override { return level.name; }
+  bool ghostAllowed() const override { return true; }
+  bool restartAllowed() const override { return true; }
+  void finished(PlaySession& session, TrialResult result, const script::LevelDef& level) override;
+  void leftWithoutTrial(const std::string& error) override;
+
+ private:
+  App& app_;
+  std::string levelPath_;
+};
+
+}  // namespace hemiroll::game

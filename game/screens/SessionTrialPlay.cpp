@@ -1,0 +1,70 @@
+#include "game/screens/SessionTrialPlay.h"
+
+#include <stdexcept>
+
+#include "engine/haptics/devices/DeviceFactory.h"
+#include "game/app/App.h"
+#include "game/research/ResearchSession.h"
+#include "game/trial/TrialRecording.h"
+#include "game/trial/TrialSetup.h"
+
+namespace hemiroll::game {
+
+SessionTrialPlay::SessionTrialPlay(App& app, ResearchSession& session, std::function<void(const SessionTrialEnd&)> done)
+    : app_(app), research_(session), levelPath_(session.nextTrial().levelFile), done_(std::move(done)) {}
+
+SessionTrialPlay::~SessionTrialPlay() = default;
+
+std::unique_ptr<PlaySession> SessionTrialPlay::begin(script::LoadedLevel& level, PlaySessionDef& def) {
+  level = research_.loadNextLevel();
+  const ManifestTrial& trial = research_.nextTrial();
+  def.coupling = level.def.coupling;
+  def.replayFile = research_.folder() / (trial.trialId + ".replay");
+  def.levelHash = trial.levelHash;
+  // The player's device: its mapping and spec go into the trial's sidecar.
+  haptics::ServoLoopDef loop = trialLoopDef(level.def, def.device);
+  const std::optional<haptics::DeviceSpec> spec = haptics::DeviceFactory().specOf(def.device, def.deviceOptions);
+  if (!spec) throw std::runtime_error("unknown device '" + def.device + "'");
+  recording_ = research_.recordNext(level.def, loop, def.device, *spec);
+  def.recordRing = &recording_->ring();
+  def.recordEvery = recording_->recordEvery();
+  auto session = std::make_unique<PlaySession>(level, def);
+  recording_->startWriter();
+  return session;
+}
+
+std::string SessionTrialPlay::title(const script::LevelDef& level) const {
+  return "trial " + std::to_string(research_.nextTrial().index) + " of " + std::to_string(research_.trialCount()) +
+         ": " + level.name;
+}
+
+void SessionTrialPlay::finished(PlaySession& session, TrialResult result, const script::LevelDef& /*level*/) {
+  SessionTrialEnd recorded;
+  recorded.recorded = true;
+  recorded.result = std::move(result);
+  end(std::move(recorded), &session);
+}
+
+void SessionTrialPlay::leftWithoutTrial(const std::string& error) {
+  SessionTrialEnd notRecorded;
+  notRecorded.error = error;
+  end(std::move(notRecorded), nullptr);
+}
+
+void SessionTrialPlay::end(SessionTrialEnd end, const PlaySession* session) {
+  if (ended_) return;  // two Escapes in one frame: the stack changes once
+  ended_ = true;
+  if (end.recorded && session != nullptr) {
+    try {
+      research_.finishNext(*recording_, end.result, session->timing());
+    } catch (const std::exception& e) {
+      end.recorded = false;
+      end.error = e.what();
+    }
+  }
+  recording_.reset();
+  app_.screens().pop();  // applied after this frame: the play screen lives until then
+  done_(end);
+}
+
+}  // namespace hemiroll::game
