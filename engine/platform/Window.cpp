@@ -66,16 +66,24 @@ std::unique_ptr<Window> Window::create(const WindowDef& def) {
     SDL_DestroyWindow(window);
     throw PlatformError("the OpenGL context is older than 3.3");
   }
-  // Adaptive vsync (-1) first, then plain vsync; a driver without either
-  // still renders, just unpaced.
-  bool vsync = false;
-  if (def.vsync) vsync = SDL_GL_SetSwapInterval(-1) == 0 || SDL_GL_SetSwapInterval(1) == 0;
-  else SDL_GL_SetSwapInterval(0);
-  return std::unique_ptr<Window>(new Window(window, context, vsync));
+  std::unique_ptr<Window> created(new Window(window, context, false));
+  created->setVsync(def.vsync);
+  return created;
 }
 
 Window::Window(SDL_Window* window, SDL_GLContext context, bool vsync)
     : window_(window), context_(context), vsync_(vsync) {}
+
+// Adaptive vsync (-1) first, then plain vsync; a driver without either
+// still renders, just unpaced.
+void Window::setVsync(bool on) {
+  if (on) {
+    vsync_ = SDL_GL_SetSwapInterval(-1) == 0 || SDL_GL_SetSwapInterval(1) == 0;
+  } else {
+    SDL_GL_SetSwapInterval(0);
+    vsync_ = false;
+  }
+}
 
 Window::~Window() {
   SDL_GL_DeleteContext(context_);

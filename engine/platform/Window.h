@@ -46,7 +46,11 @@ class Window {
 
   PixelSize windowSize() const;    // layout pixels (pointer coordinates)
   PixelSize drawableSize() const;  // GL pixels (the viewport)
+  // Whether the driver paces swaps to the display (it may refuse).
   bool vsync() const { return vsync_; }
+  // Adaptive vsync first, then plain; off when `on` is false. The window's
+  // context must be current on this thread.
+  void setVsync(bool on);
   // The GL renderer's name ("llvmpipe (LLVM 15.0.6, 256 bits)"), for logs.
   std::string glRenderer() const;
 

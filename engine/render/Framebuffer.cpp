@@ -49,20 +49,35 @@ void Framebuffer::bind() const {
 
 void Framebuffer::bindDefault() { glBindFramebuffer(GL_FRAMEBUFFER, 0); }
 
-Image Framebuffer::read() const {
+namespace {
+
+// What the bound read framebuffer holds, as an image.
+Image readBound(int width, int height) {
   Image image;
-  image.width = width_;
-  image.height = height_;
-  image.rgba.resize(std::size_t(width_) * height_ * 4);
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
+  image.width = width;
+  image.height = height;
+  image.rgba.resize(std::size_t(width) * height * 4);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
   // GL's rows start at the bottom; images start at the top.
-  const std::size_t row = std::size_t(width_) * 4;
-  for (int y = 0; y < height_ / 2; ++y)
+  const std::size_t row = std::size_t(width) * 4;
+  for (int y = 0; y < height / 2; ++y)
     std::swap_ranges(image.rgba.begin() + y * row, image.rgba.begin() + (y + 1) * row,
-                     image.rgba.begin() + (height_ - 1 - y) * row);
+                     image.rgba.begin() + (height - 1 - y) * row);
   return image;
+}
+
+}  // namespace
+
+Image Framebuffer::read() const {
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
+  return readBound(width_, height_);
+}
+
+Image Framebuffer::readBackBuffer(int width, int height) {
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  glReadBuffer(GL_BACK);
+  return readBound(width, height);
 }
 
 }  // namespace hemiroll::render

@@ -20,6 +20,8 @@ class Framebuffer {
   void bind() const;           // draw here (and set the viewport)
   static void bindDefault();   // back to the window
   Image read() const;          // waits for the GPU; rows top-down
+  // The window's back buffer (before the swap shows it), rows top-down.
+  static Image readBackBuffer(int width, int height);
   int width() const { return width_; }
   int height() const { return height_; }
 

@@ -1,34 +1,13 @@
 #include "game/app/App.h"
 
-#include <SDL.h>
 #include <epoxy/gl.h>
 
-#include <algorithm>
-
+#include "engine/render/Framebuffer.h"
 #include "game/app/SettingsFile.h"
 #include "game/screens/TitleScreen.h"
 #include "game/view/AssetsDirectory.h"
 
 namespace hemiroll::game {
-
-namespace {
-
-// The back buffer as an image, rows top-down (GL's rows are bottom-up).
-void readBack(int width, int height, render::Image& image) {
-  image.width = width;
-  image.height = height;
-  image.rgba.resize(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
-  std::vector<std::uint8_t> rows(image.rgba.size());
-  glReadBuffer(GL_BACK);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rows.data());
-  const std::size_t stride = static_cast<std::size_t>(width) * 4;
-  for (int y = 0; y < height; ++y)
-    std::copy_n(&rows[static_cast<std::size_t>(height - 1 - y) * stride], stride,
-                &image.rgba[static_cast<std::size_t>(y) * stride]);
-}
-
-}  // namespace
 
 App::App(const AppDef& def) : def_(def) {
   platform::WindowDef w;
@@ -44,7 +23,7 @@ App::App(const AppDef& def) : def_(def) {
   for (const std::string& n : loaded.notes) notes_.push_back(n);
   // --no-vsync (measuring) wins over the saved choice for this run.
   settings_.vsync = settings_.vsync && def.vsync;
-  SDL_GL_SetSwapInterval(settings_.vsync ? 1 : 0);
+  window_->setVsync(settings_.vsync);
   render::RendererDef r;
   r.assetsDir = findAssetsDirectory();
   if (r.assetsDir.empty()) r.assetsDir = "assets";
@@ -75,7 +54,7 @@ void App::saveSettings() {
 
 void App::setVsync(bool on) {
   settings_.vsync = on;
-  SDL_GL_SetSwapInterval(on ? 1 : 0);  // the window's context is current on this thread
+  window_->setVsync(on);
 }
 
 bool App::frame() {
@@ -110,7 +89,7 @@ bool App::frame() {
   imgui_->endFrame();
   if (captureRequested_) {
     captureRequested_ = false;
-    readBack(drawable.width, drawable.height, capture_);
+    capture_ = render::Framebuffer::readBackBuffer(drawable.width, drawable.height);
   }
   window_->swap();
   return !quit_;

@@ -27,6 +27,7 @@ PlaySession::PlaySession(script::LoadedLevel& level, const PlaySessionDef& def)
   loopDef_.recordRing = ring_.get();
   loopDef_.recordEvery = 1;  // the judge sees every tick
   if (def.coupling) loopDef_.coupling = *def.coupling;
+  if (def.safety) loopDef_.safety = *def.safety;
   if (!def.replayFile.empty()) {
     try {
       capture_ = std::make_unique<ReplayCapture>(def.replayFile, def.levelHash, loopDef_.period, def.device);

@@ -45,6 +45,7 @@ struct PlaySessionDef {
   haptics::PointerMappingDef pointer;
   bool requestRealtime = true;         // SCHED_FIFO for the servo thread when permitted
   std::optional<physics::CouplingDef> coupling;  // the player's settings; none = the level's
+  std::optional<haptics::SafetyDef> safety;      // the loop's limits and watchdogs; none = the defaults
   // Log the trial for a replay here ("" = no replay); levelHash goes into
   // its header (record::fileContentHash of the level file).
   std::filesystem::path replayFile;
