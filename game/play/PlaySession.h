@@ -1,5 +1,5 @@
 #pragma once
-// A human playing a level in real time: the shape of RealtimeTrial with a
+// A human playing a level in real time: the shape of runRealtimeTrial with a
 // person's device instead of a bot: the mouse (MouseDevice), a
 // force-feedback joystick (SdlJoystickDevice) or a haptic device behind the
 // UDP bridge (UdpBridgeDevice), made by haptics::DeviceFactory.

@@ -24,7 +24,7 @@ HeadlessTrial::HeadlessTrial(script::LoadedLevel& level, script::BotPolicy& bot,
     : level_(level), bot_(bot), settings_(settings) {}
 
 TrialResult HeadlessTrial::run() {
-  if (settings_.realtime) return RealtimeTrial(level_, bot_, settings_).run();
+  if (settings_.realtime) return runRealtimeTrial(level_, bot_, settings_);
   const auto wallStart = std::chrono::steady_clock::now();
   const script::LevelDef& def = level_.def;
 

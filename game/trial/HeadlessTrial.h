@@ -8,7 +8,7 @@
 //
 // Headless (the default) runs ticks back to back on the calling thread with
 // no clock: as fast as the CPU allows and bit-for-bit deterministic for the
-// same level, bot and seed. `realtime` hands the trial to RealtimeTrial: the
+// same level, bot and seed. `realtime` hands the trial to runRealtimeTrial: the
 // servo loop on its own thread at 1 kHz, the bot on this thread at 500 Hz
 // with a lock-free hand-over (no Lua in the servo thread).
 //
@@ -29,7 +29,7 @@ namespace hemiroll::game {
 
 struct TrialSettings {
   std::uint64_t seed = 0;    // handed to the bot's init (the level was loaded with it)
-  bool realtime = false;     // servo thread at 1 kHz, bot beside it (RealtimeTrial)
+  bool realtime = false;     // servo thread at 1 kHz, bot beside it (runRealtimeTrial)
   // Safety margin on the length of a trial: the judge ends it at the level's
   // time limit; this cap only guards against a level that never ends.
   double maxTimeFactor = 1.01;

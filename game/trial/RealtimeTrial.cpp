@@ -24,9 +24,9 @@ physics::Vec3 vec(const std::array<double, 3>& t) { return {t[0], t[1], t[2]}; }
 
 }  // namespace
 
-TrialResult RealtimeTrial::run() {
+TrialResult runRealtimeTrial(script::LoadedLevel& level, script::BotPolicy& bot, const TrialSettings& settings) {
   const auto wallStart = std::chrono::steady_clock::now();
-  const script::LevelDef& def = level_.def;
+  const script::LevelDef& def = level.def;
 
   auto ring = std::make_unique<haptics::RecordRing>();  // every tick, for the judge
   haptics::ServoLoopDef loopDef = trialLoopDef(def);
@@ -35,7 +35,7 @@ TrialResult RealtimeTrial::run() {
   loopDef.recordEvery = 1;
   HandoffBotDevice device(botDeviceSpec(), loopDef.mapping);
   haptics::ServoLoop loop(loopDef, device);
-  TrialJudge judging(level_, settings_.recordRing, settings_.recordEvery);
+  TrialJudge judging(level, settings.recordRing, settings.recordEvery);
   script::TaskJudge& judge = judging.judge();
   const ObservationBuilder observer(def.params);
   const physics::ForceDrivenState initial = physics::forceStateOf(loopDef.initialState);
@@ -50,8 +50,8 @@ TrialResult RealtimeTrial::run() {
   auto callBot = [&](double time) {
     observer.fill(time, physics::forceStateOf(snapshot.state), snapshot, judge, obs);
     try {
-      const script::BotAction a = bot_.act(obs);
-      if (std::string why = bot_.giveUpReason(); !why.empty()) {
+      const script::BotAction a = bot.act(obs);
+      if (std::string why = bot.giveUpReason(); !why.empty()) {
         judging.fail(why);
         return false;
       }
@@ -72,7 +72,7 @@ TrialResult RealtimeTrial::run() {
   loop.post(engage);
   std::string initError;
   try {
-    bot_.init(botLevelInfo(def, def.source), settings_.seed);
+    bot.init(botLevelInfo(def, def.source), settings.seed);
   } catch (const script::ScriptError& e) {
     initError = std::string("bot error: ") + e.what();
     judge.finish(TrialOutcome::Failure, initError, 0.0);
@@ -83,15 +83,15 @@ TrialResult RealtimeTrial::run() {
   if (!judge.finished()) {
     loop.start();
     haptics::SteadyServoClock clock;
-    const auto botPeriod = static_cast<std::int64_t>(std::llround(1e9 / kBotRate));
+    const auto botPeriod = static_cast<std::int64_t>(std::llround(1e9 / kRealtimeBotRate));
     std::int64_t deadline = clock.now() + botPeriod;
     // A loop that stops ticking (it should not) must not hang the command.
-    const double wallLimit = def.task.timeLimit * settings_.maxTimeFactor + 10.0;
+    const double wallLimit = def.task.timeLimit * settings.maxTimeFactor + 10.0;
     long iterations = 0;
     while (!judge.finished()) {
       judging.drain(*ring);
       // Every second: the recorder's ring (4096 rows) never fills between drains.
-      if (settings_.drainRecording && ++iterations % static_cast<long>(kBotRate) == 0) settings_.drainRecording();
+      if (settings.drainRecording && ++iterations % static_cast<long>(kRealtimeBotRate) == 0) settings.drainRecording();
       if (judge.finished()) break;
       if (loop.recordDropped() > 0) {
         judging.fail("the judge fell behind the servo loop (ticks dropped)");
@@ -107,7 +107,7 @@ TrialResult RealtimeTrial::run() {
     }
     loop.stop();
   }
-  if (settings_.drainRecording) settings_.drainRecording();
+  if (settings.drainRecording) settings.drainRecording();
 
   TrialResult result = judging.result(initial);
   result.wallTime = std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();

@@ -1,7 +1,7 @@
 #pragma once
 // `hemiroll run --realtime`: the trial of HeadlessTrial with the servo loop
 // on its own thread at 1 kHz (ServoLoop::start: SCHED_FIFO when permitted)
-// and the bot on the calling thread at kBotRate, never inside a tick:
+// and the bot on the calling thread at kRealtimeBotRate, never inside a tick:
 //   servo thread:  device (HandoffBotDevice, extrapolating the bot's latest
 //                  pose) -> coupling -> physics -> safety -> snapshot, and a
 //                  RecordRow of every tick into a lock-free ring;
@@ -16,19 +16,9 @@
 
 namespace hemiroll::game {
 
-class RealtimeTrial {
- public:
-  static constexpr double kBotRate = 500.0;  // [Hz] bot calls on the main thread
+inline constexpr double kRealtimeBotRate = 500.0;  // [Hz] bot calls on the calling thread
 
-  RealtimeTrial(script::LoadedLevel& level, script::BotPolicy& bot, const TrialSettings& settings)
-      : level_(level), bot_(bot), settings_(settings) {}
-
-  TrialResult run();
-
- private:
-  script::LoadedLevel& level_;
-  script::BotPolicy& bot_;
-  TrialSettings settings_;
-};
+// `level` and `bot` must outlive the call; settings.realtime is implied.
+TrialResult runRealtimeTrial(script::LoadedLevel& level, script::BotPolicy& bot, const TrialSettings& settings);
 
 }  // namespace hemiroll::game

@@ -1,7 +1,7 @@
 #pragma once
 // The one judge of a trial, whoever plays it and on whichever thread the
 // servo loop runs: headless bots (HeadlessTrial, one tick at a time), `run
-// --realtime` (RealtimeTrial) and a person in the window (PlaySession, both
+// --realtime` (runRealtimeTrial) and a person in the window (PlaySession, both
 // draining the loop's record ring). Every tick, in order, none skipped:
 //   TaskJudge::judge -> TrialSummaryAccumulator::add -> LevelScript::update
 // and a safety fault ends the trial (a bot's), or is left to the caller (a
