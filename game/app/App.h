@@ -20,6 +20,7 @@
 #include "game/audio/Audio.h"
 #include "game/hud/ImGuiLayer.h"
 #include "game/scores/ScoreStore.h"
+#include "game/screens/ScreenHost.h"
 #include "game/screens/ScreenStack.h"
 
 namespace hemiroll::game {
@@ -34,7 +35,7 @@ struct AppDef {
   bool requestRealtime = true;      // SCHED_FIFO for the servo thread when permitted
 };
 
-class App {
+class App final : public ScreenHost {
  public:
   // Opens the window (throws platform::PlatformError, e.g. no display) and
   // shows the title screen.
@@ -46,24 +47,27 @@ class App {
   // One frame; false once the player asked to quit.
   bool frame();
   void inject(const platform::InputEvent& event) { injected_.push_back(event); }
-  void requestQuit() { quit_ = true; }
 
-  ScreenStack& screens() { return screens_; }
+  // ScreenHost: what the screens may use.
+  void requestQuit() override { quit_ = true; }
+  ScreenStack& screens() override { return screens_; }
+  platform::Window& window() override { return *window_; }
+  render::Renderer& renderer() override { return *renderer_; }
+  Audio& audio() override { return *audio_; }
+  ScoreStore& scores() override { return *scores_; }
+  Settings& settings() override { return settings_; }
+  // The settings and research screens save on leaving.
+  void saveSettings() override;
+  void setVsync(bool on) override;
+  const std::string& levelsDir() const override { return def_.levelsDir; }
+  bool requestRealtime() const override { return def_.requestRealtime; }
+  double fps() const override { return clock_.medianFps(); }
+  // Shown on the title.
+  const std::vector<std::string>& notes() const override { return notes_; }
+
   const char* topScreen() const { return screens_.top() ? screens_.top()->name() : ""; }
-  platform::Window& window() { return *window_; }
-  render::Renderer& renderer() { return *renderer_; }
-  Audio& audio() { return *audio_; }
-  ScoreStore& scores() { return *scores_; }
-  Settings& settings() { return settings_; }
-  // Writes the settings to their file now (the settings and research
-  // screens do on leaving); a failure becomes a note.
-  void saveSettings();
   const AppDef& def() const { return def_; }
-  double fps() const { return clock_.medianFps(); }
   std::size_t frames() const { return clock_.frames(); }
-  // Things the player should know (audio off, scores moved aside), shown on the title.
-  const std::vector<std::string>& notes() const { return notes_; }
-  void setVsync(bool on);
   // The next frame is read back before it is shown (screenshots, tests):
   // capture() then holds it, rows top-down, at the drawable size.
   void requestCapture() { captureRequested_ = true; }

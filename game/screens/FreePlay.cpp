@@ -2,15 +2,17 @@
 
 #include "engine/record/ContentHash.h"
 #include "engine/record/DataDirectory.h"
-#include "game/app/App.h"
+#include "game/app/Settings.h"
 #include "game/screens/ResultsScreen.h"
+#include "game/screens/ScreenHost.h"
+#include "game/screens/ScreenStack.h"
 
 namespace hemiroll::game {
 
 std::unique_ptr<PlaySession> FreePlay::begin(script::LoadedLevel& level, PlaySessionDef& def) {
   level = script::LevelLoader().loadFile(levelPath_);
   def.coupling = coupling(level.def);
-  if (!app_.settings().overrideCoupling) {
+  if (!host_.settings().overrideCoupling) {
     def.replayFile = record::dataDirectory() / "replays" / "last-trial.hrr";
     def.levelHash = record::fileContentHash(levelPath_);
   }
@@ -18,16 +20,16 @@ std::unique_ptr<PlaySession> FreePlay::begin(script::LoadedLevel& level, PlaySes
 }
 
 physics::CouplingDef FreePlay::coupling(const script::LevelDef& level) const {
-  return couplingFor(app_.settings(), level.coupling);
+  return couplingFor(host_.settings(), level.coupling);
 }
 
 void FreePlay::finished(PlaySession& session, TrialResult result, const script::LevelDef& level) {
   std::string replayNote = session.replayError();
-  if (app_.settings().overrideCoupling) replayNote = "no replay: the force method was overridden in the settings";
-  app_.screens().replace(
-      std::make_unique<ResultsScreen>(app_, levelPath_, level.name, std::move(result), session.replayFile(), replayNote));
+  if (host_.settings().overrideCoupling) replayNote = "no replay: the force method was overridden in the settings";
+  host_.screens().replace(
+      std::make_unique<ResultsScreen>(host_, levelPath_, level.name, std::move(result), session.replayFile(), replayNote));
 }
 
-void FreePlay::leftWithoutTrial(const std::string& /*error*/) { app_.screens().pop(); }
+void FreePlay::leftWithoutTrial(const std::string& /*error*/) { host_.screens().pop(); }
 
 }  // namespace hemiroll::game

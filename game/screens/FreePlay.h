@@ -10,7 +10,7 @@ namespace hemiroll::game {
 
 class FreePlay final : public PlayMode {
  public:
-  FreePlay(App& app, std::string levelPath) : app_(app), levelPath_(std::move(levelPath)) {}
+  FreePlay(ScreenHost& host, std::string levelPath) : host_(host), levelPath_(std::move(levelPath)) {}
 
   const std::string& levelPath() const override { return levelPath_; }
   std::unique_ptr<PlaySession> begin(script::LoadedLevel& level, PlaySessionDef& def) override;
@@ -22,7 +22,7 @@ class FreePlay final : public PlayMode {
   void leftWithoutTrial(const std::string& error) override;
 
  private:
-  App& app_;
+  ScreenHost& host_;
   std::string levelPath_;
 };
 

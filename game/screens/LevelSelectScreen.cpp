@@ -6,9 +6,11 @@
 #include <filesystem>
 
 #include "engine/script/LevelLoader.h"
-#include "game/app/App.h"
+#include "game/scores/ScoreStore.h"
 #include "game/screens/PlayScreen.h"
+#include "game/screens/ScreenHost.h"
 #include "game/screens/ScreenLayout.h"
+#include "game/screens/ScreenStack.h"
 
 namespace hemiroll::game {
 
@@ -35,16 +37,16 @@ std::vector<LevelEntry> scanLevels(const std::string& dir) {
 }
 
 void LevelSelectScreen::enter() {
-  entries_ = scanLevels(app_.def().levelsDir);
+  entries_ = scanLevels(host_.levelsDir());
   for (LevelEntry& e : entries_)
-    if (e.error.empty()) e.best = app_.scores().best(e.name);
+    if (e.error.empty()) e.best = host_.scores().best(e.name);
   selected_ = std::clamp(selected_, 0, std::max(0, static_cast<int>(entries_.size()) - 1));
 }
 
 void LevelSelectScreen::play() {
   if (selected_ < 0 || selected_ >= static_cast<int>(entries_.size())) return;
   if (!entries_[static_cast<std::size_t>(selected_)].error.empty()) return;  // broken: its error is shown
-  app_.screens().push(std::make_unique<PlayScreen>(app_, entries_[static_cast<std::size_t>(selected_)].path));
+  host_.screens().push(std::make_unique<PlayScreen>(host_, entries_[static_cast<std::size_t>(selected_)].path));
 }
 
 void LevelSelectScreen::input(const platform::InputEvent& e) {
@@ -53,7 +55,7 @@ void LevelSelectScreen::input(const platform::InputEvent& e) {
   if (e.key == platform::Key::Down && n > 0) selected_ = (selected_ + 1) % n;
   else if (e.key == platform::Key::Up && n > 0) selected_ = (selected_ + n - 1) % n;
   else if (e.key == platform::Key::Enter && !e.repeat) play();
-  else if (e.key == platform::Key::Escape && !e.repeat) app_.screens().pop();
+  else if (e.key == platform::Key::Escape && !e.repeat) host_.screens().pop();
 }
 
 void LevelSelectScreen::paint() {
@@ -61,7 +63,7 @@ void LevelSelectScreen::paint() {
   ImGui::SetWindowFontScale(1.6f);
   ImGui::Text("Choose a level");
   ImGui::SetWindowFontScale(1.0f);
-  ImGui::TextDisabled("from %s", app_.def().levelsDir.c_str());
+  ImGui::TextDisabled("from %s", host_.levelsDir().c_str());
   if (entries_.empty()) ImGui::TextColored(ImVec4(1, 0.5f, 0.4f, 1), "no levels (*.lua) found there");
   for (std::size_t i = 0; i < entries_.size(); ++i) {
     const LevelEntry& e = entries_[i];
@@ -91,7 +93,7 @@ void LevelSelectScreen::paint() {
   ImGui::Separator();
   if (ImGui::Button("Play  (Enter)")) play();
   ImGui::SameLine();
-  if (ImGui::Button("Back  (Esc)")) app_.screens().pop();
+  if (ImGui::Button("Back  (Esc)")) host_.screens().pop();
   ImGui::End();
 }
 

@@ -2,25 +2,26 @@
 
 #include <imgui.h>
 
-#include "game/app/App.h"
 #include "game/screens/PlayScreen.h"
+#include "game/screens/ScreenHost.h"
 #include "game/screens/ScreenLayout.h"
+#include "game/screens/ScreenStack.h"
 
 namespace hemiroll::game {
 
 void PauseScreen::resume() {
   play_.resume();
-  app_.screens().pop();
+  host_.screens().pop();
 }
 
 void PauseScreen::restart() {
   play_.restart();
-  app_.screens().pop();
+  host_.screens().pop();
 }
 
 void PauseScreen::quit() {
   play_.quit();  // the play screen sees the finished trial on its next update
-  app_.screens().pop();
+  host_.screens().pop();
 }
 
 void PauseScreen::input(const platform::InputEvent& e) {

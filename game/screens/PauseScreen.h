@@ -16,8 +16,8 @@ class PlayScreen;
 class PauseScreen final : public Screen {
  public:
   // `reason`: why play stopped when it was not the player (a safety fault).
-  PauseScreen(App& app, PlayScreen& play, std::string reason = {})
-      : Screen(app), play_(play), reason_(std::move(reason)) {}
+  PauseScreen(ScreenHost& host, PlayScreen& play, std::string reason = {})
+      : Screen(host), play_(play), reason_(std::move(reason)) {}
   const char* name() const override { return "pause"; }
   bool overlay() const override { return true; }
   void input(const platform::InputEvent& e) override;

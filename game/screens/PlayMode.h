@@ -16,7 +16,7 @@
 
 namespace hemiroll::game {
 
-class App;
+class ScreenHost;
 
 class PlayMode {
  public:

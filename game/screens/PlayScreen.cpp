@@ -6,21 +6,26 @@
 #include <cstdio>
 
 #include "engine/physics/StateLayout.h"
+#include "engine/platform/Window.h"
 #include "engine/record/DataDirectory.h"
 #include "engine/render/Camera.h"
-#include "game/app/App.h"
+#include "engine/render/Renderer.h"
+#include "game/app/Settings.h"
+#include "game/audio/Audio.h"
 #include "game/screens/FreePlay.h"
 #include "game/screens/PauseScreen.h"
+#include "game/screens/ScreenHost.h"
 #include "game/screens/ScreenLayout.h"
+#include "game/screens/ScreenStack.h"
 #include "game/trial/GhostFile.h"
 #include "game/view/RenderSceneBuilder.h"
 
 namespace hemiroll::game {
 
-PlayScreen::PlayScreen(App& app, std::unique_ptr<PlayMode> mode) : Screen(app), mode_(std::move(mode)) {}
+PlayScreen::PlayScreen(ScreenHost& host, std::unique_ptr<PlayMode> mode) : Screen(host), mode_(std::move(mode)) {}
 
-PlayScreen::PlayScreen(App& app, std::string levelPath)
-    : PlayScreen(app, std::make_unique<FreePlay>(app, std::move(levelPath))) {}
+PlayScreen::PlayScreen(ScreenHost& host, std::string levelPath)
+    : PlayScreen(host, std::make_unique<FreePlay>(host, std::move(levelPath))) {}
 
 PlayScreen::~PlayScreen() = default;
 
@@ -29,10 +34,10 @@ void PlayScreen::begin() {
   session_.reset();
   try {
     PlaySessionDef def;
-    def.device = app_.settings().device;
-    def.deviceOptions.joystick.index = app_.settings().joystickIndex;
-    def.deviceOptions.udp.port = static_cast<std::uint16_t>(app_.settings().udpPort);
-    def.requestRealtime = app_.def().requestRealtime;
+    def.device = host_.settings().device;
+    def.deviceOptions.joystick.index = host_.settings().joystickIndex;
+    def.deviceOptions.udp.port = static_cast<std::uint16_t>(host_.settings().udpPort);
+    def.requestRealtime = host_.requestRealtime();
     session_ = mode_->begin(level_, def);
     session_->start();
   } catch (const std::exception& e) {
@@ -40,16 +45,16 @@ void PlayScreen::begin() {
     session_.reset();
     return;
   }
-  const bool mouse = app_.settings().device == "mouse";
+  const bool mouse = host_.settings().device == "mouse";
   hud_.reset();
   const physics::CouplingDef coupling = mode_->coupling(level_.def);
-  hud_.setLabels(mode_->title(level_.def), app_.settings().device,
+  hud_.setLabels(mode_->title(level_.def), host_.settings().device,
                  coupling.visualOnly ? "visual only" : physics::forceMethodName(coupling.method), mouse,
                  level_.def.params.radius);
-  hud_.setTakeHoldKey(app_.settings().keys.keyName(KeyAction::TakeHold));
+  hud_.setTakeHoldKey(host_.settings().keys.keyName(KeyAction::TakeHold));
   trace_.clear();
   lastEngagement_ = haptics::Engagement::Disengaged;
-  for (const std::string& note : app_.renderer().setProps(propsOf(level_.def))) hud_.addMessage("scene: " + note, 10.0);
+  for (const std::string& note : host_.renderer().setProps(propsOf(level_.def))) hud_.addMessage("scene: " + note, 10.0);
   loadGhost();
 }
 
@@ -57,8 +62,8 @@ void PlayScreen::loadGhost() {
   ghost_.reset();
   scene_.ghost.shown = false;
   hud_.setGhost("");
-  if (!app_.settings().ghost || !mode_->ghostAllowed()) return;
-  const std::filesystem::path file = ghostFile(record::dataDirectory(), level_.def.name, app_.settings().participant);
+  if (!host_.settings().ghost || !mode_->ghostAllowed()) return;
+  const std::filesystem::path file = ghostFile(record::dataDirectory(), level_.def.name, host_.settings().participant);
   std::error_code ec;
   if (!std::filesystem::exists(file, ec)) return;
   try {
@@ -74,15 +79,15 @@ void PlayScreen::enter() {
     begin();
   }
   // The menus above this screen (pause, results) need the system cursor back.
-  if (session_ && session_->deviceName() == "mouse") app_.window().capturePointer(true);
+  if (session_ && session_->deviceName() == "mouse") host_.window().capturePointer(true);
 }
 
-void PlayScreen::leave() { app_.window().capturePointer(false); }
+void PlayScreen::leave() { host_.window().capturePointer(false); }
 
 void PlayScreen::pause() {
   if (!session_ || session_->finished()) return;
   session_->pause();
-  app_.screens().push(std::make_unique<PauseScreen>(app_, *this));
+  host_.screens().push(std::make_unique<PauseScreen>(host_, *this));
 }
 
 void PlayScreen::resume() {
@@ -113,7 +118,7 @@ void PlayScreen::input(const platform::InputEvent& e) {
     case InputType::FocusLost: pause(); break;
     case InputType::KeyDown:
       if (e.key == platform::Key::Escape && !e.repeat) pause();
-      if (const std::optional<KeyAction> action = app_.settings().keys.actionOf(e.code)) keyAction(*action, e.repeat);
+      if (const std::optional<KeyAction> action = host_.settings().keys.actionOf(e.code)) keyAction(*action, e.repeat);
       break;
     default: break;
   }
@@ -124,7 +129,7 @@ void PlayScreen::input(const platform::InputEvent& e) {
 // the device. The orbit camera turns with its keys (held keys repeat): the
 // mouse is the proxy's, so it cannot drag the view; strokes turn with it.
 void PlayScreen::keyAction(KeyAction action, bool repeat) {
-  Settings& s = app_.settings();
+  Settings& s = host_.settings();
   constexpr double kYawStep = 0.1, kPitchStep = 0.05;  // [rad] per key press or repeat
   const bool orbit = s.camera == render::CameraMode::Orbit;
   switch (action) {
@@ -139,7 +144,7 @@ void PlayScreen::keyAction(KeyAction action, bool repeat) {
       s.camera = s.camera == render::CameraMode::Follow ? render::CameraMode::Top
                  : s.camera == render::CameraMode::Top  ? render::CameraMode::Orbit
                                                         : render::CameraMode::Follow;
-      app_.saveSettings();
+      host_.saveSettings();
       break;
     case KeyAction::OrbitLeft:
       if (orbit) s.orbitYaw -= kYawStep;
@@ -192,10 +197,10 @@ void PlayScreen::buildScene(const haptics::ServoSnapshot& s) {
     trace_.push(s.state[physics::force_slot::u_a], s.state[physics::force_slot::v_a], s.time);
     scene_.trace = &trace_;
   }
-  scene_.camera.mode = app_.settings().camera;
-  scene_.camera.zoom = app_.settings().zoom;
-  scene_.camera.yaw = app_.settings().orbitYaw;
-  scene_.camera.pitch = app_.settings().orbitPitch;
+  scene_.camera.mode = host_.settings().camera;
+  scene_.camera.zoom = host_.settings().zoom;
+  scene_.camera.yaw = host_.settings().orbitYaw;
+  scene_.camera.pitch = host_.settings().orbitPitch;
   session_->setScreenYaw(render::screenRightHeading(scene_.camera));
 }
 
@@ -214,7 +219,7 @@ void PlayScreen::followGhost(const haptics::ServoSnapshot& s) {
 // Clicks on taking hold and letting go; the tone while held, higher the
 // closer the worst tolerance is to being met.
 void PlayScreen::playSounds(const haptics::ServoSnapshot& s) {
-  Audio& audio = app_.audio();
+  Audio& audio = host_.audio();
   if (s.engagement != lastEngagement_) {
     if (s.engagement == haptics::Engagement::Engaged) audio.play(Cue::Engage);
     if (s.engagement == haptics::Engagement::RampingOut) audio.play(Cue::Disengage);
@@ -228,18 +233,18 @@ void PlayScreen::playSounds(const haptics::ServoSnapshot& s) {
 // A watchdog stopped the loop (force already off): pause and say why.
 bool PlayScreen::safetyStop() {
   if (session_->fault() == haptics::SafetyFault::None || session_->finished()) return false;
-  app_.audio().setProximity(0.0);
+  host_.audio().setProximity(0.0);
   session_->pause();
-  app_.screens().push(std::make_unique<PauseScreen>(
-      app_, *this, std::string("safety stop: ") + haptics::safetyFaultName(session_->fault()) +
+  host_.screens().push(std::make_unique<PauseScreen>(
+      host_, *this, std::string("safety stop: ") + haptics::safetyFaultName(session_->fault()) +
                        ". The force is off; continue to take hold again."));
   return true;
 }
 
 void PlayScreen::endTrial() {
-  app_.audio().setProximity(0.0);
+  host_.audio().setProximity(0.0);
   TrialResult result = session_->finish();
-  app_.audio().play(result.outcome == script::TrialOutcome::Success ? Cue::Success : Cue::Failure);
+  host_.audio().play(result.outcome == script::TrialOutcome::Success ? Cue::Success : Cue::Failure);
   mode_->finished(*session_, std::move(result), level_.def);
 }
 
@@ -255,9 +260,9 @@ void PlayScreen::paint() {
     ImGui::End();
     return;
   }
-  const platform::PixelSize d = app_.window().drawableSize();
-  app_.renderer().render(scene_, d.width, d.height);
-  hud_.draw(app_.fps());
+  const platform::PixelSize d = host_.window().drawableSize();
+  host_.renderer().render(scene_, d.width, d.height);
+  hud_.draw(host_.fps());
   if (!session_->waitingFor().empty()) {
     beginCentredPanel("waiting for the device", 640);
     ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1), "Waiting for the %s", session_->deviceName().c_str());
@@ -265,7 +270,7 @@ void PlayScreen::paint() {
     if (session_->deviceName() == "udp")
       ImGui::TextWrapped("Start the device's bridge program, or the reference client: "
                          "hemiroll-haptic-client --port %d (docs/UDP_BRIDGE.md). The trial starts with its first state.",
-                         app_.settings().udpPort);
+                         host_.settings().udpPort);
     ImGui::TextDisabled("Esc: pause, and quit from there");
     ImGui::End();
   }

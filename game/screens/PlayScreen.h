@@ -32,9 +32,9 @@ namespace hemiroll::game {
 
 class PlayScreen final : public Screen {
  public:
-  PlayScreen(App& app, std::unique_ptr<PlayMode> mode);
+  PlayScreen(ScreenHost& host, std::unique_ptr<PlayMode> mode);
   // Free play of a level file (FreePlay).
-  PlayScreen(App& app, std::string levelPath);
+  PlayScreen(ScreenHost& host, std::string levelPath);
   ~PlayScreen() override;
   const char* name() const override { return "play"; }
   void enter() override;

@@ -3,14 +3,18 @@
 #include <imgui.h>
 
 #include "engine/physics/StateLayout.h"
-#include "game/app/App.h"
+#include "engine/platform/Window.h"
+#include "engine/render/Renderer.h"
+#include "game/app/Settings.h"
+#include "game/screens/ScreenHost.h"
 #include "game/screens/ScreenLayout.h"
+#include "game/screens/ScreenStack.h"
 #include "game/view/RenderSceneBuilder.h"
 
 namespace hemiroll::game {
 
-ReplayScreen::ReplayScreen(App& app, std::string levelPath, std::string replayFile)
-    : Screen(app), levelPath_(std::move(levelPath)), replayFile_(std::move(replayFile)) {}
+ReplayScreen::ReplayScreen(ScreenHost& host, std::string levelPath, std::string replayFile)
+    : Screen(host), levelPath_(std::move(levelPath)), replayFile_(std::move(replayFile)) {}
 
 ReplayScreen::~ReplayScreen() = default;
 
@@ -19,7 +23,7 @@ void ReplayScreen::enter() {
   try {
     level_ = script::LevelLoader().loadFile(levelPath_);
     player_ = std::make_unique<ReplayPlayer>(level_.def, levelPath_, replayFile_);
-    app_.renderer().setProps(propsOf(level_.def));  // a missing mesh was named when the level was played
+    host_.renderer().setProps(propsOf(level_.def));  // a missing mesh was named when the level was played
   } catch (const std::exception& e) {
     error_ = e.what();
     player_.reset();
@@ -29,7 +33,7 @@ void ReplayScreen::enter() {
 void ReplayScreen::input(const platform::InputEvent& e) {
   if (e.type == platform::InputType::KeyDown && !e.repeat &&
       (e.key == platform::Key::Escape || e.key == platform::Key::Enter))
-    app_.screens().pop();
+    host_.screens().pop();
 }
 
 void ReplayScreen::update(double dt) {
@@ -40,8 +44,8 @@ void ReplayScreen::update(double dt) {
   fillFromSnapshot(level_.def, s, 0, scene_);
   trace_.push(s.state[physics::force_slot::u_a], s.state[physics::force_slot::v_a], s.time);
   scene_.trace = &trace_;
-  scene_.camera.mode = app_.settings().camera;
-  scene_.camera.zoom = app_.settings().zoom;
+  scene_.camera.mode = host_.settings().camera;
+  scene_.camera.zoom = host_.settings().zoom;
 }
 
 void ReplayScreen::paint() {
@@ -49,12 +53,12 @@ void ReplayScreen::paint() {
     beginCentredPanel("replay error", 700);
     ImGui::TextColored(ImVec4(1, 0.5f, 0.4f, 1), "This replay cannot be played:");
     ImGui::TextWrapped("%s", error_.c_str());
-    if (ImGui::Button("Back  (Esc)")) app_.screens().pop();
+    if (ImGui::Button("Back  (Esc)")) host_.screens().pop();
     ImGui::End();
     return;
   }
-  const platform::PixelSize d = app_.window().drawableSize();
-  app_.renderer().render(scene_, d.width, d.height);
+  const platform::PixelSize d = host_.window().drawableSize();
+  host_.renderer().render(scene_, d.width, d.height);
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_Always);
   ImGui::SetNextWindowBgAlpha(0.7f);
   ImGui::Begin("replay", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize);

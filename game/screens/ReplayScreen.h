@@ -16,7 +16,7 @@ namespace hemiroll::game {
 
 class ReplayScreen final : public Screen {
  public:
-  ReplayScreen(App& app, std::string levelPath, std::string replayFile);
+  ReplayScreen(ScreenHost& host, std::string levelPath, std::string replayFile);
   ~ReplayScreen() override;
   const char* name() const override { return "replay"; }
   void enter() override;

@@ -7,10 +7,13 @@
 #include <filesystem>
 
 #include "engine/script/ProtocolLoader.h"
-#include "game/app/App.h"
+#include "game/app/Settings.h"
 #include "game/research/ResearchSession.h"
 #include "game/research/SessionFolder.h"
+#include "game/scores/ScoreStore.h"
+#include "game/screens/ScreenHost.h"
 #include "game/screens/ScreenLayout.h"
+#include "game/screens/ScreenStack.h"
 #include "game/screens/SessionScreen.h"
 
 namespace hemiroll::game {
@@ -50,9 +53,9 @@ std::vector<ProtocolEntry> scanProtocols(const std::string& dir) {
 }
 
 void ResearchScreen::enter() {
-  copyInto(participant_, app_.settings().participant);
-  copyInto(session_, app_.settings().sessionId);
-  protocols_ = scanProtocols((std::filesystem::path(app_.def().levelsDir) / "protocols").string());
+  copyInto(participant_, host_.settings().participant);
+  copyInto(session_, host_.settings().sessionId);
+  protocols_ = scanProtocols((std::filesystem::path(host_.levelsDir()) / "protocols").string());
   selected_ = std::clamp(selected_, 0, std::max(0, static_cast<int>(protocols_.size()) - 1));
   refresh();
 }
@@ -61,9 +64,9 @@ void ResearchScreen::enter() {
 SessionRequest ResearchScreen::requestFor(const std::string& protocol) const {
   SessionRequest request;
   request.protocolPath = protocol;
-  request.levelsDir = app_.def().levelsDir;
-  request.participant = app_.settings().participant;
-  request.session = app_.settings().sessionId;
+  request.levelsDir = host_.levelsDir();
+  request.participant = host_.settings().participant;
+  request.session = host_.settings().sessionId;
   return request;
 }
 
@@ -77,7 +80,7 @@ void ResearchScreen::select(int index) {
 void ResearchScreen::refresh() {
   canStart_ = false;
   if (protocols_.empty()) {
-    status_ = "no protocols (*.lua) in " + app_.def().levelsDir + "/protocols";
+    status_ = "no protocols (*.lua) in " + host_.levelsDir() + "/protocols";
     return;
   }
   const ProtocolEntry& p = protocols_[static_cast<std::size_t>(selected_)];
@@ -102,11 +105,11 @@ void ResearchScreen::refresh() {
 
 void ResearchScreen::start() {
   if (!canStart_) return;
-  app_.screens().push(
-      std::make_unique<SessionScreen>(app_, requestFor(protocols_[static_cast<std::size_t>(selected_)].path)));
+  host_.screens().push(
+      std::make_unique<SessionScreen>(host_, requestFor(protocols_[static_cast<std::size_t>(selected_)].path)));
 }
 
-void ResearchScreen::leave() { app_.saveSettings(); }
+void ResearchScreen::leave() { host_.saveSettings(); }
 
 void ResearchScreen::input(const platform::InputEvent& e) {
   if (e.type != platform::InputType::KeyDown || e.repeat) return;
@@ -114,16 +117,16 @@ void ResearchScreen::input(const platform::InputEvent& e) {
   if (e.key == platform::Key::Down && n > 0) select((selected_ + 1) % n);
   else if (e.key == platform::Key::Up && n > 0) select((selected_ + n - 1) % n);
   else if (e.key == platform::Key::Enter) start();
-  else if (e.key == platform::Key::Escape) app_.screens().pop();
+  else if (e.key == platform::Key::Escape) host_.screens().pop();
 }
 
 void ResearchScreen::paint() {
-  Settings& s = app_.settings();
+  Settings& s = host_.settings();
   beginCentredPanel("research", 900);
   ImGui::SetWindowFontScale(1.6f);
   ImGui::Text("Research session");
   ImGui::SetWindowFontScale(1.0f);
-  ImGui::TextDisabled("protocols from %s/protocols (docs/PROTOCOLS.md)", app_.def().levelsDir.c_str());
+  ImGui::TextDisabled("protocols from %s/protocols (docs/PROTOCOLS.md)", host_.levelsDir().c_str());
   for (std::size_t i = 0; i < protocols_.size(); ++i) {
     const ProtocolEntry& p = protocols_[i];
     ImGui::PushID(static_cast<int>(i));
@@ -148,13 +151,13 @@ void ResearchScreen::paint() {
     refresh();
   }
   ImGui::TextDisabled("data root: %s", defaultSessionsRoot().string().c_str());
-  ImGui::TextDisabled("(free play stores its scores under this participant id in %s)", app_.scores().file().c_str());
+  ImGui::TextDisabled("(free play stores its scores under this participant id in %s)", host_.scores().file().c_str());
   ImGui::TextDisabled("(set HEMIROLL_DATA_DIR or XDG_DATA_HOME to change it)");
   ImGui::TextWrapped("%s", status_.c_str());
   ImGui::BeginDisabled(!canStart_);
   if (ImGui::Button("Start  (Enter)", ImVec2(-1, 0))) start();
   ImGui::EndDisabled();
-  if (ImGui::Button("Back  (Esc)", ImVec2(-1, 0))) app_.screens().pop();
+  if (ImGui::Button("Back  (Esc)", ImVec2(-1, 0))) host_.screens().pop();
   ImGui::End();
 }
 

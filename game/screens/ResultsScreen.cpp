@@ -7,7 +7,10 @@
 
 #include "engine/record/DataDirectory.h"
 #include "engine/record/FileNames.h"
-#include "game/app/App.h"
+#include "game/app/Settings.h"
+#include "game/scores/ScoreStore.h"
+#include "game/screens/ScreenHost.h"
+#include "game/screens/ScreenStack.h"
 #include "game/trial/GhostFile.h"
 #include "game/screens/PlayScreen.h"
 #include "game/screens/ReplayScreen.h"
@@ -15,16 +18,16 @@
 
 namespace hemiroll::game {
 
-ResultsScreen::ResultsScreen(App& app, std::string levelPath, std::string levelName, TrialResult result,
+ResultsScreen::ResultsScreen(ScreenHost& host, std::string levelPath, std::string levelName, TrialResult result,
                              std::filesystem::path replay, std::string replayNote)
-    : Screen(app),
+    : Screen(host),
       levelPath_(std::move(levelPath)),
       levelName_(std::move(levelName)),
       result_(std::move(result)),
       replay_(std::move(replay)),
       replayNote_(std::move(replayNote)) {
-  const std::string& player = app_.settings().participant;
-  before_ = app_.scores().personalBest(levelName_, player);
+  const std::string& player = host_.settings().participant;
+  before_ = host_.scores().personalBest(levelName_, player);
   const bool success = result_.outcome == script::TrialOutcome::Success;
   newBest_ = success && (!before_.bestTime || result_.time < *before_.bestTime);
   ScoreEntry entry;
@@ -34,7 +37,7 @@ ResultsScreen::ResultsScreen(App& app, std::string levelPath, std::string levelN
   entry.time = result_.time;
   entry.score = result_.score;
   entry.medal = script::medalName(result_.medal);
-  stored_ = app_.scores().add(entry);
+  stored_ = host_.scores().add(entry);
   if (newBest_ && !replay_.empty()) {
     const std::string error = keepAsGhost(replay_, ghostFile(record::dataDirectory(), levelName_, player));
     replayNote_ = error.empty() ? "kept as your ghost: race it next time" : error;
@@ -65,17 +68,17 @@ void ResultsScreen::saveReplay() {
 }
 
 void ResultsScreen::watchReplay() {
-  if (!replay_.empty()) app_.screens().push(std::make_unique<ReplayScreen>(app_, levelPath_, replay_));
+  if (!replay_.empty()) host_.screens().push(std::make_unique<ReplayScreen>(host_, levelPath_, replay_));
 }
 
-void ResultsScreen::again() { app_.screens().replace(std::make_unique<PlayScreen>(app_, levelPath_)); }
+void ResultsScreen::again() { host_.screens().replace(std::make_unique<PlayScreen>(host_, levelPath_)); }
 
 void ResultsScreen::input(const platform::InputEvent& e) {
   if (e.type != platform::InputType::KeyDown || e.repeat) return;
   if (e.key == platform::Key::Enter) again();
   else if (e.code == 's') saveReplay();
   else if (e.code == 'w') watchReplay();
-  else if (e.key == platform::Key::Escape) app_.screens().pop();
+  else if (e.key == platform::Key::Escape) host_.screens().pop();
 }
 
 void ResultsScreen::paint() {
@@ -93,7 +96,7 @@ void ResultsScreen::paint() {
     ImGui::TextColored(ImVec4(1, 0.5f, 0.4f, 1), "no score: %s", result_.scoreError.c_str());
   if (newBest_) ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1), "new personal best");
   if (before_.bestTime) ImGui::Text("personal best before: %.2f s", *before_.bestTime);
-  if (!stored_) ImGui::TextDisabled("(this trial could not be stored in %s)", app_.scores().file().c_str());
+  if (!stored_) ImGui::TextDisabled("(this trial could not be stored in %s)", host_.scores().file().c_str());
   const ImVec2 button(-1, 0);
   if (!replay_.empty()) {
     if (!replaySaved_ && ImGui::Button("Save replay  (S)", button)) saveReplay();
@@ -101,7 +104,7 @@ void ResultsScreen::paint() {
   }
   if (!replayNote_.empty()) ImGui::TextDisabled("%s", replayNote_.c_str());
   if (ImGui::Button("Play again  (Enter)", button)) again();
-  if (ImGui::Button("Levels  (Esc)", button)) app_.screens().pop();
+  if (ImGui::Button("Levels  (Esc)", button)) host_.screens().pop();
   ImGui::End();
 }
 

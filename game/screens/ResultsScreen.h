@@ -17,7 +17,7 @@ namespace hemiroll::game {
 
 class ResultsScreen final : public Screen {
  public:
-  ResultsScreen(App& app, std::string levelPath, std::string levelName, TrialResult result,
+  ResultsScreen(ScreenHost& host, std::string levelPath, std::string levelName, TrialResult result,
                 std::filesystem::path replay = {}, std::string replayNote = {});
   ~ResultsScreen() override;
   const char* name() const override { return "results"; }

@@ -1,7 +1,7 @@
 #pragma once
 // game/screens: the game's screens as state objects (Neverball's "state"
 // idea): each has enter/leave/input/update/paint hooks and lives on a
-// ScreenStack. A screen knows the App (its services: window, renderer,
+// ScreenStack. A screen knows its ScreenHost (the services: window, renderer,
 // audio, scores, settings) and may ask the stack to change; it must not
 // touch SDL directly (input arrives as platform::InputEvent, so tests drive
 // screens with the same events a player makes).
@@ -13,11 +13,11 @@
 
 namespace hemiroll::game {
 
-class App;
+class ScreenHost;
 
 class Screen {
  public:
-  explicit Screen(App& app) : app_(app) {}
+  explicit Screen(ScreenHost& host) : host_(host) {}
   virtual ~Screen() = default;
   Screen(const Screen&) = delete;
   Screen& operator=(const Screen&) = delete;
@@ -33,7 +33,7 @@ class Screen {
   virtual bool overlay() const { return false; }
 
  protected:
-  App& app_;
+  ScreenHost& host_;
 };
 
 }  // namespace hemiroll::game

@@ -6,9 +6,10 @@
 #include <cstdio>
 
 #include "engine/haptics/MouseDevice.h"
-#include "game/app/App.h"
 #include "game/screens/PlayScreen.h"
+#include "game/screens/ScreenHost.h"
 #include "game/screens/ScreenLayout.h"
+#include "game/screens/ScreenStack.h"
 #include "game/screens/SessionTrialPlay.h"
 
 namespace hemiroll::game {
@@ -20,7 +21,7 @@ const ImVec4 kRed(1, 0.5f, 0.4f, 1);
 
 }  // namespace
 
-SessionScreen::SessionScreen(App& app, SessionRequest request) : Screen(app), request_(std::move(request)) {}
+SessionScreen::SessionScreen(ScreenHost& host, SessionRequest request) : Screen(host), request_(std::move(request)) {}
 
 SessionScreen::~SessionScreen() = default;
 
@@ -63,8 +64,8 @@ SessionScreen::Stage SessionScreen::stage() const {
 
 void SessionScreen::startTrial() {
   if (stage() != Stage::Ready) return;
-  app_.screens().push(
-      std::make_unique<PlayScreen>(app_, std::make_unique<SessionTrialPlay>(app_, *session_, [this](const SessionTrialEnd& end) {
+  host_.screens().push(
+      std::make_unique<PlayScreen>(host_, std::make_unique<SessionTrialPlay>(host_, *session_, [this](const SessionTrialEnd& end) {
         trialEnded(end);
       })));
 }
@@ -85,7 +86,7 @@ void SessionScreen::trialEnded(const SessionTrialEnd& end) {
 void SessionScreen::input(const platform::InputEvent& e) {
   if (e.type != platform::InputType::KeyDown || e.repeat) return;
   if (e.key == platform::Key::Enter) startTrial();
-  else if (e.key == platform::Key::Escape) app_.screens().pop();
+  else if (e.key == platform::Key::Escape) host_.screens().pop();
 }
 
 void SessionScreen::update(double dt) { breakLeft_ = std::max(0.0, breakLeft_ - dt); }
@@ -146,7 +147,7 @@ void SessionScreen::paint() {
   } else {
     paintNext(now);
   }
-  if (ImGui::Button("Back  (Esc)", ImVec2(-1, 0))) app_.screens().pop();
+  if (ImGui::Button("Back  (Esc)", ImVec2(-1, 0))) host_.screens().pop();
   ImGui::End();
 }
 

@@ -24,7 +24,7 @@ class SessionScreen final : public Screen {
  public:
   enum class Stage { Error, Break, Ready, Stopped, Complete };
 
-  SessionScreen(App& app, SessionRequest request);
+  SessionScreen(ScreenHost& host, SessionRequest request);
   ~SessionScreen() override;
   const char* name() const override { return "session"; }
   void enter() override;

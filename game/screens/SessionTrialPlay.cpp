@@ -3,15 +3,16 @@
 #include <stdexcept>
 
 #include "engine/haptics/devices/DeviceFactory.h"
-#include "game/app/App.h"
 #include "game/research/ResearchSession.h"
+#include "game/screens/ScreenHost.h"
+#include "game/screens/ScreenStack.h"
 #include "game/trial/TrialRecording.h"
 #include "game/trial/TrialSetup.h"
 
 namespace hemiroll::game {
 
-SessionTrialPlay::SessionTrialPlay(App& app, ResearchSession& session, std::function<void(const SessionTrialEnd&)> done)
-    : app_(app), research_(session), levelPath_(session.nextTrial().levelFile), done_(std::move(done)) {}
+SessionTrialPlay::SessionTrialPlay(ScreenHost& host, ResearchSession& session, std::function<void(const SessionTrialEnd&)> done)
+    : host_(host), research_(session), levelPath_(session.nextTrial().levelFile), done_(std::move(done)) {}
 
 SessionTrialPlay::~SessionTrialPlay() = default;
 
@@ -63,7 +64,7 @@ void SessionTrialPlay::end(SessionTrialEnd end, const PlaySession* session) {
     }
   }
   recording_.reset();
-  app_.screens().pop();  // applied after this frame: the play screen lives until then
+  host_.screens().pop();  // applied after this frame: the play screen lives until then
   done_(end);
 }
 

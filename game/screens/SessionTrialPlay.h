@@ -25,7 +25,7 @@ struct SessionTrialEnd {
 
 class SessionTrialPlay final : public PlayMode {
  public:
-  SessionTrialPlay(App& app, ResearchSession& session, std::function<void(const SessionTrialEnd&)> done);
+  SessionTrialPlay(ScreenHost& host, ResearchSession& session, std::function<void(const SessionTrialEnd&)> done);
   ~SessionTrialPlay() override;
 
   const std::string& levelPath() const override { return levelPath_; }
@@ -41,7 +41,7 @@ class SessionTrialPlay final : public PlayMode {
  private:
   void end(SessionTrialEnd end, const PlaySession* session);
 
-  App& app_;
+  ScreenHost& host_;
   ResearchSession& research_;
   std::string levelPath_;
   std::function<void(const SessionTrialEnd&)> done_;

@@ -5,22 +5,25 @@
 #include <algorithm>
 
 #include "engine/physics/ForceCoupling.h"
-#include "game/app/App.h"
+#include "game/app/Settings.h"
+#include "game/audio/Audio.h"
+#include "game/screens/ScreenHost.h"
 #include "game/screens/ScreenLayout.h"
+#include "game/screens/ScreenStack.h"
 
 namespace hemiroll::game {
 
-void SettingsScreen::leave() { app_.saveSettings(); }
+void SettingsScreen::leave() { host_.saveSettings(); }
 
 void SettingsScreen::input(const platform::InputEvent& e) {
   if (e.type != platform::InputType::KeyDown || e.repeat) return;
   if (!listening_) {
-    if (e.key == platform::Key::Escape) app_.screens().pop();
+    if (e.key == platform::Key::Escape) host_.screens().pop();
     return;
   }
   const KeyAction action = *listening_;
   listening_.reset();
-  KeyBindings& keys = app_.settings().keys;
+  KeyBindings& keys = host_.settings().keys;
   if (e.key == platform::Key::Escape) {
     keyNote_ = "unchanged: Escape always pauses and goes back";
     return;
@@ -41,7 +44,7 @@ void SettingsScreen::listenFor(KeyAction action) {
 }
 
 void SettingsScreen::paintKeys() {
-  KeyBindings& keys = app_.settings().keys;
+  KeyBindings& keys = host_.settings().keys;
   ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
   ImGui::TextWrapped("mouse: left click takes hold, right click lets go, the wheel sets the proxy's height; "
                      "Esc pauses (and cannot be changed)");
@@ -74,7 +77,7 @@ void SettingsScreen::paintKeys() {
 }
 
 void SettingsScreen::paint() {
-  Settings& s = app_.settings();
+  Settings& s = host_.settings();
   beginCentredPanel("settings", 620);
   ImGui::SetWindowFontScale(1.6f);
   ImGui::Text("Settings");
@@ -126,14 +129,14 @@ void SettingsScreen::paint() {
   float volume = static_cast<float>(s.volume);
   if (ImGui::SliderFloat("volume", &volume, 0.0f, 1.0f, "%.2f")) {
     s.volume = volume;
-    app_.audio().setVolume(volume);
+    host_.audio().setVolume(volume);
   }
-  if (!app_.audio().available()) ImGui::TextDisabled("%s", app_.audio().note().c_str());
+  if (!host_.audio().available()) ImGui::TextDisabled("%s", host_.audio().note().c_str());
 
   ImGui::Separator();
   ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1), "Graphics");
   bool vsync = s.vsync;
-  if (ImGui::Checkbox("vsync", &vsync)) app_.setVsync(vsync);
+  if (ImGui::Checkbox("vsync", &vsync)) host_.setVsync(vsync);
   int camera = static_cast<int>(s.camera);
   static constexpr const char* kCameras[] = {"follow", "orbit", "top"};
   if (ImGui::Combo("camera", &camera, kCameras, IM_ARRAYSIZE(kCameras))) s.camera = static_cast<render::CameraMode>(camera);
@@ -142,7 +145,7 @@ void SettingsScreen::paint() {
   ImGui::Checkbox("race against your best run (a translucent ghost)", &s.ghost);
 
   ImGui::Spacing();
-  if (ImGui::Button("Back  (Esc)", ImVec2(-1, 0))) app_.screens().pop();
+  if (ImGui::Button("Back  (Esc)", ImVec2(-1, 0))) host_.screens().pop();
   ImGui::End();
 }
 

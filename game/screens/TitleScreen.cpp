@@ -2,22 +2,23 @@
 
 #include <imgui.h>
 
-#include "game/app/App.h"
 #include "game/screens/LevelSelectScreen.h"
 #include "game/screens/ResearchScreen.h"
+#include "game/screens/ScreenHost.h"
 #include "game/screens/ScreenLayout.h"
+#include "game/screens/ScreenStack.h"
 #include "game/screens/SettingsScreen.h"
 
 namespace hemiroll::game {
 
-void TitleScreen::play() { app_.screens().push(std::make_unique<LevelSelectScreen>(app_)); }
-void TitleScreen::settings() { app_.screens().push(std::make_unique<SettingsScreen>(app_)); }
-void TitleScreen::research() { app_.screens().push(std::make_unique<ResearchScreen>(app_)); }
+void TitleScreen::play() { host_.screens().push(std::make_unique<LevelSelectScreen>(host_)); }
+void TitleScreen::settings() { host_.screens().push(std::make_unique<SettingsScreen>(host_)); }
+void TitleScreen::research() { host_.screens().push(std::make_unique<ResearchScreen>(host_)); }
 
 void TitleScreen::input(const platform::InputEvent& e) {
   if (e.type != platform::InputType::KeyDown || e.repeat) return;
   if (e.key == platform::Key::Enter || e.key == platform::Key::Space) play();
-  else if (e.key == platform::Key::Escape || e.code == 'q') app_.requestQuit();
+  else if (e.key == platform::Key::Escape || e.code == 'q') host_.requestQuit();
   else if (e.code == 's') settings();
   else if (e.code == 'r') research();
 }
@@ -33,8 +34,8 @@ void TitleScreen::paint() {
   if (ImGui::Button("Play  (Enter)", button)) play();
   if (ImGui::Button("Settings  (S)", button)) settings();
   if (ImGui::Button("Research session  (R)", button)) research();
-  if (ImGui::Button("Quit  (Esc)", button)) app_.requestQuit();
-  for (const std::string& note : app_.notes()) ImGui::TextDisabled("%s", note.c_str());
+  if (ImGui::Button("Quit  (Esc)", button)) host_.requestQuit();
+  for (const std::string& note : host_.notes()) ImGui::TextDisabled("%s", note.c_str());
   ImGui::End();
 }
 
