@@ -1,7 +1,7 @@
 // engine/script/DataFileLoader: the one path from a Lua data file to a
 // definition. Its own rules (the field's line, Lua's line kept, the size
 // limit, a chunk that returns no table) with a reader of its own, then the
-// same through each of the loaders that stand on it.
+// same through each of the four loaders that stand on it.
 
 #include "engine/script/DataFileLoader.h"
 
@@ -12,6 +12,7 @@
 
 #include "engine/script/LevelLoader.h"
 #include "engine/script/ProtocolLoader.h"
+#include "engine/script/ScenarioLoader.h"
 #include "engine/script/ScriptError.h"
 #include "engine/script/SweepLoader.h"
 #include "tests/support/ErrorMessage.h"
@@ -98,7 +99,7 @@ TEST(DataFileLoader, ReadsFilesAsTheInterpreterDoes) {
             (dir.path() / "none.lua").string() + ":1: no such file");
 }
 
-// ---- The kinds, each through its own loader.
+// ---- The four kinds, each through its own loader.
 
 struct Kind {
   const char* name;
@@ -141,6 +142,11 @@ const Kind kKinds[] = {
      [](const std::string& p, const SandboxLimits& l) { SweepLoader(l).loadFile(p); },
      "return {\n  axes = {\n    { param = 'k',\n      values = { 1, 2, 2 } },\n  },\n}",
      "k.lua:4: axes[1].values[3]: repeats an earlier value; each value once"},
+    {"scenario",
+     [](const std::string& s, const SandboxLimits& l) { ScenarioLoader(l).loadSource(s, "k.lua"); },
+     [](const std::string& p, const SandboxLimits& l) { ScenarioLoader(l).loadFile(p); },
+     "return {\n  drive = {\n    kind = 'rose',\n    r2 = -0.001,\n  },\n}",
+     "k.lua:4: drive.r2: must be a non-negative length in metres"},
 };
 
 class DataFileKindTest : public ::testing::TestWithParam<Kind> {
