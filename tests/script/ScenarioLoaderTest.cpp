@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 
 #include "engine/physics/StateLayout.h"
 #include "engine/script/ScriptError.h"
@@ -17,6 +18,7 @@ namespace hemiroll::script {
 namespace {
 
 using ::testing::HasSubstr;
+using ::testing::StartsWith;
 
 ScenarioDef load(const std::string& source) { return ScenarioLoader().loadSource(source, "s.lua"); }
 
@@ -110,43 +112,46 @@ TEST(ScenarioLoader, BadProxyReturnsFailAtLoad) {
 }
 
 // One-line sources: every mistake is on line 1 (MistakesNameTheLineOfTheField
-// has them on lines of their own).
+// has them on lines of their own). Each message starts as given; three are
+// compared in full.
 TEST(ScenarioLoader, MistakesNameTheFieldPath) {
+  const std::pair<const char*, const char*> cases[] = {
+      {"return {}", "s.lua:1: drive: missing"},
+      {"return {drive = {}}", "s.lua:1: drive.kind: missing"},
+      {"return {drive = {kind = 'wobble'}}", "s.lua:1: drive.kind: unknown drive kind 'wobble'"},
+      {"return {drive = {kind = 'proxy', method = 'M4', proxy = {0, 0, 0}}}",
+       "s.lua:1: drive.method: unknown method 'M4'"},
+      {"return {drive = {kind = 'proxy', kr = -1, proxy = {0, 0, 0}}}",
+       "s.lua:1: drive.kr: (stiffness) must be a finite, non-negative N/m"},
+      {"return {drive = {kind = 'proxy'}}", "s.lua:1: drive.proxy: missing"},
+      {"return {drive = {kind = 'proxy', proxy = {0, 0}}}", "s.lua:1: drive.proxy: expected"},
+      {"return {drive = {kind = 'proxy', proxy = 5}}", "s.lua:1: drive.proxy: expected a function"},
+      {"return {drive = {kind = 'free', r1 = 1}}", "s.lua:1: drive: unknown field 'r1'"},
+      {"return {drive = {kind = 'free'}, params = {m_s = -0.1}}",
+       "s.lua:1: params.m_s: (hemisphere mass) must be a positive finite number"},
+      {"return {drive = {kind = 'free'}, params = {R = 0}}",
+       "s.lua:1: params.R: (radius) must be a positive finite number"},
+      {"return {drive = {kind = 'free'}, params = {mass = 1}}", "s.lua:1: params: unknown field 'mass'"},
+      {"return {drive = {kind = 'free'}, initial = {theta = 1}}", "s.lua:1: initial: unknown field 'theta'"},
+      {"return {drive = {kind = 'free'}, initial = {0, 0}}", "s.lua:1: initial: unknown fields [1], [2]"},
+      {"return {drive = {kind = 'rose'}, initial = {x_p = 0.02}}", "s.lua:1: initial.x_p: the rose drive"},
+      {"return {drive = {kind = 'rose', r2 = -0.001}}", "s.lua:1: drive.r2: must be a non-negative length"},
+      {"return {drive = {kind = 'free'}, dt = 0}", "s.lua:1: dt: must be a positive"},
+      {"return {drive = {kind = 'free'}, duration = -2}", "s.lua:1: duration: must be a positive"},
+      {"return {drive = {kind = 'free'}, integrator = 'euler'}",
+       "s.lua:1: integrator: unknown integrator 'euler' (available: rk4"},
+      {"return {drive = {kind = 'free'}, durration = 1}", "s.lua:1: unknown field 'durration'"},
+      {"return {drive = {kind = 'free'}, tol = 0}", "s.lua:1: tol: must be a positive number"},
+      {"return {drive = {kind = 'free'}, tol = 'tight'}", "s.lua:1: tol: expected a number"},
+      {"return {drive = {kind = 'free'}, orientation = 'euler'}",
+       "s.lua:1: orientation: must be 'angles' or 'quaternion', got 'euler'"},
+      {"return {drive = {kind = 'rose'}, orientation = 'quaternion'}", "s.lua:1: orientation: the rose drive"},
+  };
+  for (const auto& [source, expected] : cases) EXPECT_THAT(errorOf(source), StartsWith(expected)) << source;
+  // These in full.
   EXPECT_EQ(errorOf("return {drive = {kind = 'rose', r1 = 'a'}}"), "s.lua:1: drive.r1: expected a number, got string");
   EXPECT_EQ(errorOf("return 3"), "s.lua:1: the scenario must return a table, got number");
-  EXPECT_THAT(errorOf("return {}"), HasSubstr("s.lua:1: drive: missing"));
-  EXPECT_THAT(errorOf("return {drive = {}}"), HasSubstr("s.lua:1: drive.kind: missing"));
-  EXPECT_THAT(errorOf("return {drive = {kind = 'wobble'}}"), HasSubstr("s.lua:1: drive.kind: unknown drive kind 'wobble'"));
-  EXPECT_THAT(errorOf("return {drive = {kind = 'proxy', method = 'M4', proxy = {0, 0, 0}}}"),
-              HasSubstr("s.lua:1: drive.method: unknown method 'M4'"));
-  EXPECT_THAT(errorOf("return {drive = {kind = 'proxy', kr = -1, proxy = {0, 0, 0}}}"),
-              HasSubstr("s.lua:1: drive.kr: (stiffness) must be a finite, non-negative N/m"));
-  EXPECT_THAT(errorOf("return {drive = {kind = 'proxy'}}"), HasSubstr("s.lua:1: drive.proxy: missing"));
-  EXPECT_THAT(errorOf("return {drive = {kind = 'proxy', proxy = {0, 0}}}"), HasSubstr("s.lua:1: drive.proxy: expected"));
-  EXPECT_THAT(errorOf("return {drive = {kind = 'proxy', proxy = 5}}"), HasSubstr("s.lua:1: drive.proxy: expected a function"));
-  EXPECT_THAT(errorOf("return {drive = {kind = 'free', r1 = 1}}"), HasSubstr("s.lua:1: drive: unknown field 'r1'"));
-  EXPECT_THAT(errorOf("return {drive = {kind = 'free'}, params = {m_s = -0.1}}"),
-              HasSubstr("s.lua:1: params.m_s: (hemisphere mass) must be a positive finite number"));
-  EXPECT_THAT(errorOf("return {drive = {kind = 'free'}, params = {R = 0}}"),
-              HasSubstr("s.lua:1: params.R: (radius) must be a positive finite number"));
-  EXPECT_THAT(errorOf("return {drive = {kind = 'free'}, params = {mass = 1}}"), HasSubstr("s.lua:1: params: unknown field 'mass'"));
   EXPECT_EQ(errorOf("return {drive = {kind = 'free'}, params = {g = 0/0}}"), "s.lua:1: params.g: expected a finite number, got nan");
-  EXPECT_THAT(errorOf("return {drive = {kind = 'free'}, initial = {theta = 1}}"),
-              HasSubstr("s.lua:1: initial: unknown field 'theta'"));
-  EXPECT_THAT(errorOf("return {drive = {kind = 'free'}, initial = {0, 0}}"), HasSubstr("s.lua:1: initial: unknown fields [1], [2]"));
-  EXPECT_THAT(errorOf("return {drive = {kind = 'rose'}, initial = {x_p = 0.02}}"), HasSubstr("s.lua:1: initial.x_p: the rose drive"));
-  EXPECT_THAT(errorOf("return {drive = {kind = 'rose', r2 = -0.001}}"), HasSubstr("s.lua:1: drive.r2: must be a non-negative length"));
-  EXPECT_THAT(errorOf("return {drive = {kind = 'free'}, dt = 0}"), HasSubstr("s.lua:1: dt: must be a positive"));
-  EXPECT_THAT(errorOf("return {drive = {kind = 'free'}, duration = -2}"), HasSubstr("s.lua:1: duration: must be a positive"));
-  EXPECT_THAT(errorOf("return {drive = {kind = 'free'}, integrator = 'euler'}"),
-              HasSubstr("s.lua:1: integrator: unknown integrator 'euler' (available: rk4"));
-  EXPECT_THAT(errorOf("return {drive = {kind = 'free'}, durration = 1}"), HasSubstr("s.lua:1: unknown field 'durration'"));
-  EXPECT_THAT(errorOf("return {drive = {kind = 'free'}, tol = 0}"), HasSubstr("s.lua:1: tol: must be a positive number"));
-  EXPECT_THAT(errorOf("return {drive = {kind = 'free'}, tol = 'tight'}"), HasSubstr("s.lua:1: tol: expected a number"));
-  EXPECT_THAT(errorOf("return {drive = {kind = 'free'}, orientation = 'euler'}"),
-              HasSubstr("s.lua:1: orientation: must be 'angles' or 'quaternion', got 'euler'"));
-  EXPECT_THAT(errorOf("return {drive = {kind = 'rose'}, orientation = 'quaternion'}"),
-              HasSubstr("s.lua:1: orientation: the rose drive"));
 }
 
 TEST(ScenarioLoader, MistakesNameTheLineOfTheField) {
