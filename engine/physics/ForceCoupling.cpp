@@ -4,11 +4,19 @@
 
 namespace hemiroll::physics {
 
+std::optional<FieldError> couplingError(const CouplingDef& def) {
+  if (!std::isfinite(def.stiffness) || def.stiffness < 0.0)
+    return FieldError{"kr", "(stiffness) must be a finite, non-negative N/m"};
+  if (!std::isfinite(def.damping) || def.damping < 0.0)
+    return FieldError{"kv", "(damping) must be a finite, non-negative N s/m"};
+  if (!std::isfinite(def.alpha) || def.alpha <= 0.0)
+    return FieldError{"alpha", "(normal/in-face gain ratio) must be positive"};
+  return std::nullopt;
+}
+
 std::string validateCoupling(const CouplingDef& def) {
-  if (!std::isfinite(def.stiffness) || def.stiffness < 0.0) return "kr (stiffness) must be a finite, non-negative N/m";
-  if (!std::isfinite(def.damping) || def.damping < 0.0) return "kv (damping) must be a finite, non-negative N s/m";
-  if (!std::isfinite(def.alpha) || def.alpha <= 0.0) return "alpha (normal/in-face gain ratio) must be positive";
-  return {};
+  const auto error = couplingError(def);
+  return error ? error->sentence() : std::string();
 }
 
 PointKinematics pointKinematics(const RollingGeometry& g, double radius, double u_a, double v_a,

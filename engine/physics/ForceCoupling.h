@@ -14,6 +14,7 @@
 #include <string>
 #include <string_view>
 
+#include "engine/physics/FieldError.h"
 #include "engine/physics/RollingDynamics.h"
 
 namespace hemiroll::physics {
@@ -28,7 +29,10 @@ struct CouplingDef {
   bool visualOnly = false;   // drive the model, render no force
 };
 
-// Empty when valid, else a sentence naming the field.
+// Nothing when valid, else the first offending gain ("kr", as a level's
+// force table or a scenario's drive writes it) and what is wrong with it.
+std::optional<FieldError> couplingError(const CouplingDef& def);
+// The same as one sentence naming the field; empty when valid.
 std::string validateCoupling(const CouplingDef& def);
 
 // Position and velocity of the haptic proxy in the base frame [m], [m/s].

@@ -2,7 +2,10 @@
 // Physical parameters of the rolling system, with the paper's values
 // (Sec. 4) as defaults. All SI.
 
+#include <optional>
 #include <string>
+
+#include "engine/physics/FieldError.h"
 
 namespace hemiroll::physics {
 
@@ -13,10 +16,12 @@ struct HemisphereParams {
   double gravity = 9.81;    // g [m/s^2], acting along -z of the base frame
 };
 
-// Empty when the parameters describe a physical system; otherwise a sentence
-// naming the offending field. The prescribed drive accepts m_p = 0 (a bare
-// hemisphere); the force-driven model needs m_p > 0 because the force
-// accelerates the mass point.
+// Nothing when the parameters describe a physical system; otherwise the
+// first offending field ("params.m_p") and what is wrong with it. The
+// prescribed drive accepts m_p = 0 (a bare hemisphere); the force-driven
+// model needs m_p > 0 because the force accelerates the mass point.
+std::optional<FieldError> paramsError(const HemisphereParams& params, bool allowZeroPointMass);
+// The same as one sentence naming the field; empty when valid.
 std::string validateParams(const HemisphereParams& params, bool allowZeroPointMass);
 
 // Quantities derived once from the parameters, used on every evaluation.

@@ -1,12 +1,11 @@
 #include "engine/script/BotScript.h"
 
-#include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <lua.hpp>
 
 #include "engine/physics/StateLayout.h"
 #include "engine/script/LuaTableReader.h"
+#include "engine/script/PoseReturn.h"
 #include "engine/script/ScriptModules.h"
 #include "engine/script/ScriptError.h"
 
@@ -21,7 +20,6 @@ struct ObservationViews {
 
 namespace {
 
-constexpr const char* kReturnNames[6] = {"x", "y", "z", "vx", "vy", "vz"};
 constexpr const char* kVectorNames[9] = {"mass",   "mass_velocity", "centre", "face_x", "face_y",
                                          "normal", "contact",       "proxy",  "force"};
 
@@ -118,12 +116,6 @@ std::string botScriptsDir(const std::string& path) {
   const std::filesystem::path directory = std::filesystem::path(path).parent_path();
   if (directory.filename() == "bots") return (directory / "..").string();
   return defaultScriptsDir(path);
-}
-
-std::string formatTime(double t) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.9g", t);
-  return text;
 }
 
 std::string definitionOf(lua_State* L, int index) {
@@ -251,31 +243,19 @@ BotAction BotScript::act(const BotObservation& obs) {
     count = sandbox_->call(2, LUA_MULTRET, actAt_);
   } catch (const ScriptError& e) {
     views_->current = nullptr;
-    throw ScriptError(std::string(e.what()) + " (in act, t = " + formatTime(obs.time) + ")");
+    throw ScriptError(std::string(e.what()) + " (in act, t = " + formatCallTime(obs.time) + ")");
   }
   views_->current = nullptr;
 
-  BotAction action;
-  double values[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-  std::string problem;
-  if (count != 3 && count != 6) {
-    problem = "returned " + std::to_string(count) + " value" + (count == 1 ? "" : "s") +
-              "; expected x, y, z or x, y, z, vx, vy, vz (m, m/s, scene frame)";
-  } else {
-    for (int i = 0; i < count && problem.empty(); ++i) {
-      const int slot = base + 1 + i;
-      if (lua_type(L, slot) == LUA_TNUMBER && std::isfinite(lua_tonumber(L, slot)))
-        values[i] = lua_tonumber(L, slot);
-      else
-        problem = "returned " + describeLuaValue(L, slot) + " as value " + std::to_string(i + 1) + " (" +
-                  kReturnNames[i] + "); expected a finite number";
-    }
-  }
+  PoseReturn values;
+  const std::string problem = readPoseReturn(L, base, count, "scene frame", values);
   lua_settop(L, base);
-  if (!problem.empty()) throw ScriptError(actAt_ + ": act(t = " + formatTime(obs.time) + ") " + problem);
-  action.position = {values[0], values[1], values[2]};
-  action.velocity = {values[3], values[4], values[5]};
-  action.hasVelocity = count == 6;
+  if (!problem.empty()) throw ScriptError(actAt_ + ": act(t = " + formatCallTime(obs.time) + ") " + problem);
+  BotAction action;
+  const auto& v = values.values;
+  action.position = {v[0], v[1], v[2]};
+  action.velocity = {v[3], v[4], v[5]};
+  action.hasVelocity = values.count == 6;
   return action;
 }
 

@@ -5,7 +5,7 @@
 // suggests the nearest allowed name ("did you mean 'tol'?").
 //
 // Every failure throws through LuaTableReader::fail: "source: path: message";
-// LevelLoader adds the line.
+// DataFileLoader adds the line.
 
 #include <array>
 #include <initializer_list>

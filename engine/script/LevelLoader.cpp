@@ -4,30 +4,18 @@
 
 #include <cmath>
 
+#include "engine/script/DataFileLoader.h"
 #include "engine/script/LevelFieldChecks.h"
 #include "engine/script/LevelTaskReader.h"
-#include "engine/script/LuaSandbox.h"
 #include "engine/script/LuaTableReader.h"
-#include "engine/script/ScriptError.h"
 #include "engine/script/ScriptModules.h"
-#include "engine/script/ScriptSourceFile.h"
 
 namespace hemiroll::script {
 
 namespace {
 
-class StackTop {
- public:
-  explicit StackTop(lua_State* L) : L_(L), top_(lua_gettop(L)) {}
-  ~StackTop() { lua_settop(L_, top_); }
-  StackTop(const StackTop&) = delete;
-  StackTop& operator=(const StackTop&) = delete;
-  int top() const { return top_; }
-
- private:
-  lua_State* L_;
-  int top_;
-};
+// What messages call a level file and what its chunk returns.
+constexpr DataFileKind kLevelFile{"level file", "level"};
 
 constexpr std::initializer_list<const char*> kPlotChannels = {
     "x_p", "y_p", "xd_p", "yd_p", "w_x", "w_y", "w_z", "u_a", "v_a", "u_o", "v_o", "psi",
@@ -51,10 +39,8 @@ void readParams(const LuaTableReader& top, physics::HemisphereParams& params) {
   params.shellMass = table->number("m_s", params.shellMass);
   params.pointMass = table->number("m_p", params.pointMass);
   params.gravity = table->number("g", params.gravity);
-  // The message starts with the field ("params.R (radius) must be ..."):
-  // point at that field.
-  if (const std::string problem = physics::validateParams(params, false); !problem.empty())
-    top.fail(problem.substr(0, problem.find(' ')), problem.substr(problem.find(' ') + 1));
+  // The field is the level's ("params.R"): point at it from the top.
+  if (const auto error = physics::paramsError(params, false)) top.fail(error->field, error->message);
 }
 
 void readInitial(const LuaTableReader& top, double radius, physics::ForceDrivenState& initial) {
@@ -82,9 +68,8 @@ void readForce(const LuaTableReader& top, physics::CouplingDef& coupling) {
   coupling.stiffness = force->number("kr", coupling.stiffness);
   coupling.damping = force->number("kv", coupling.damping);
   coupling.alpha = force->number("alpha", coupling.alpha);
-  // The message starts with the key ("kr (stiffness) must be ...").
-  if (const std::string problem = physics::validateCoupling(coupling); !problem.empty())
-    force->fail(problem.substr(0, problem.find(' ')), problem.substr(problem.find(' ') + 1));
+  // The field is the force table's ("kr").
+  if (const auto error = physics::couplingError(coupling)) force->fail(error->field, error->message);
 }
 
 void readMapping(const LuaTableReader& table, DeviceMappingDef& mapping) {
@@ -220,14 +205,11 @@ void readScoring(const LuaTableReader& top, ScoringDef& scoring) {
   scoring.hasMedals = true;
 }
 
-LevelDef readLevel(lua_State* L, const std::string& name) {
-  if (lua_type(L, -1) != LUA_TTABLE)
-    throw ScriptError(name + ": the level must return a table, got " + describeLuaValue(L, -1));
-  const LuaTableReader top(L, -1, name, "");
+LevelDef readLevel(const LuaTableReader& top) {
   rejectUnknownLevelKeys(top, {"name", "description", "author", "difficulty", "version", "params", "initial",
                                "force", "device", "task", "score", "medals", "scene", "callbacks", "demo_bot"});
   LevelDef def;
-  def.source = name;
+  def.source = top.source();
   readMeta(top, def);
   readParams(top, def.params);
   readInitial(top, def.params.radius, def.initial);
@@ -245,37 +227,38 @@ LevelDef readLevel(lua_State* L, const std::string& name) {
   return def;
 }
 
-LoadedLevel load(const LevelLoadOptions& options, std::string_view source, const std::string& name,
-                 const std::string& scriptsDir) {
-  auto sandbox = std::make_shared<LuaSandbox>(options.limits);
-  installRequire(*sandbox, scriptsDir);
-  installRandom(*sandbox, options.seed);
-  LevelScript::installApi(*sandbox);
-  lua_State* L = sandbox->state();
-  const StackTop restore(L);
-  try {
-    sandbox->runChunk(source, name, 1);
-    LoadedLevel out;
-    out.def = readLevel(L, name);
-    if (options.adjust) options.adjust(out.def);
-    lua_settop(L, restore.top() + 1);  // just the level table, for the script
-    out.script = std::make_shared<LevelScript>(sandbox, out.def);
-    return out;
-  } catch (const ScriptError& e) {
-    throw ScriptError(withSourceLine(e.what(), name, source));
-  }
+// The sandbox a level runs in has require (modules under scriptsDir), the
+// seeded hemiroll.random and the level API.
+DataFileLoader levelFileLoader(const LevelLoadOptions& options, const std::string& scriptsDir) {
+  return DataFileLoader(kLevelFile, options.limits, [&options, scriptsDir](LuaSandbox& sandbox) {
+    installRequire(sandbox, scriptsDir);
+    installRandom(sandbox, options.seed);
+    LevelScript::installApi(sandbox);
+  });
+}
+
+LoadedLevel readLoadedLevel(const DataTable& data, const LevelLoadOptions& options) {
+  LoadedLevel out;
+  out.def = readLevel(data.top);
+  if (options.adjust) options.adjust(out.def);
+  lua_settop(data.top.state(), data.top.index());  // just the level table, for the script
+  out.script = std::make_shared<LevelScript>(data.sandbox, out.def);
+  return out;
 }
 
 }  // namespace
 
 LoadedLevel LevelLoader::loadFile(const std::string& path) const {
-  const std::string text = readScriptText(path, "level file");
-  if (text.size() > options_.limits.memoryLimitBytes) throw ScriptError(path + ":1: file is larger than the memory limit");
-  return load(options_, text, path, options_.scriptsDir.empty() ? defaultScriptsDir(path) : options_.scriptsDir);
+  const std::string scriptsDir = options_.scriptsDir.empty() ? defaultScriptsDir(path) : options_.scriptsDir;
+  return levelFileLoader(options_, scriptsDir).loadFile(path, [this](const DataTable& data) {
+    return readLoadedLevel(data, options_);
+  });
 }
 
 LoadedLevel LevelLoader::loadSource(std::string_view source, const std::string& name) const {
-  return load(options_, source, name, options_.scriptsDir);
+  return levelFileLoader(options_, options_.scriptsDir).loadSource(source, name, [this](const DataTable& data) {
+    return readLoadedLevel(data, options_);
+  });
 }
 
 }  // namespace hemiroll::script

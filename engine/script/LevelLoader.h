@@ -1,7 +1,8 @@
 #pragma once
-// Reads a level file (docs/LEVELS.md) into a LevelDef and a LevelScript. The
-// file is Lua run in a fresh LuaSandbox (with `require` for scripts/ modules
-// and the seeded hemiroll.random); it must return a plain table. Anything
+// Reads a level file (docs/LEVELS.md) into a LevelDef and a LevelScript: the
+// level's reader on top of DataFileLoader. The file is Lua run in a fresh
+// LuaSandbox (with `require` for scripts/ modules, the seeded
+// hemiroll.random and the level API); it must return a plain table. Anything
 // wrong with it — syntax, run-time error, quota, memory, a missing or
 // mistyped field, an unknown key, a value out of range — throws ONE
 // ScriptError whose message starts with "file:line:" (the line of the

@@ -1,7 +1,16 @@
 #pragma once
 // Finds the line where a field of a returned data table is written, from the
 // Lua source text alone, so that data errors can say "file:line:" although
-// Lua tables keep no line numbers.
+// Lua tables keep no line numbers. It is the one source map: DataFileLoader
+// asks it for every kind of data file (levels, protocols, sweep specs,
+// scenarios); the name is from when levels were the only kind.
+//
+// Why not the compiled chunk's debug information: Lua keeps a line per VM
+// instruction, not per table key, and the C API shows only a function's
+// lines (linedefined, currentline, activelines). Mapping keys to lines from
+// it would mean decoding lua_dump's version-specific bytecode, and list
+// entries are stored in batches (one SETLIST for up to 50 of them), so their
+// lines are not there at all.
 //
 // How: a small Lua tokenizer (comments, short and long strings, numbers,
 // names, operators; block keywords counted so that statements inside

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "engine/script/ScriptError.h"
+#include "engine/script/ScriptSourceFile.h"
 
 namespace hemiroll::script {
 
@@ -328,10 +329,7 @@ void LuaSandbox::runFile(const std::string& path, int nresults) {
   std::string source = content.str();
   if (source.size() > limits_.memoryLimitBytes)
     throw ScriptError(path + ": file is larger than the memory limit of " + describeBytes(limits_.memoryLimitBytes));
-  // Like the stand-alone interpreter: skip a UTF-8 byte-order mark and blank
-  // out a first line starting with '#' (a shebang), keeping line numbers.
-  if (source.rfind("\xEF\xBB\xBF", 0) == 0) source.erase(0, 3);
-  if (!source.empty() && source.front() == '#') source.erase(0, source.find('\n') == std::string::npos ? source.size() : source.find('\n'));
+  skipInterpreterPrefix(source);
   runChunk(source, path, nresults);
 }
 

@@ -33,7 +33,8 @@ class LuaSandbox {
   // the stack. Throws ScriptError ("name:line: message") on any failure.
   void runChunk(std::string_view source, const std::string& chunkName, int nresults);
 
-  // Reads a file and runs it as runChunk does, named by `path` as given.
+  // Reads a file and runs it as runChunk does, named by `path` as given (a
+  // byte-order mark and a '#' first line skipped: skipInterpreterPrefix).
   void runFile(const std::string& path, int nresults);
 
   // Calls the function lying below `nargs` arguments on top of the stack,

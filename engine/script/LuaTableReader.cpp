@@ -42,8 +42,7 @@ std::string LuaTableReader::fieldPath(std::string_view key) const {
 }
 
 void LuaTableReader::fail(std::string_view key, const std::string& message) const {
-  const std::string where = fieldPath(key);
-  throw ScriptError(source_ + ": " + (where.empty() ? "" : where + ": ") + message);
+  throw FieldFailure(source_, {fieldPath(key), message});
 }
 
 void LuaTableReader::pushField(const char* key) const {
@@ -77,8 +76,8 @@ std::optional<double> LuaTableReader::numberOnTop(const std::string& path) const
   const std::string got = describeLuaValue(L_, -1);
   const double value = type == LUA_TNUMBER ? lua_tonumber(L_, -1) : 0.0;
   lua_pop(L_, 1);
-  if (type != LUA_TNUMBER) throw ScriptError(source_ + ": " + path + ": expected a number, got " + got);
-  if (!std::isfinite(value)) throw ScriptError(source_ + ": " + path + ": expected a finite number, got " + got);
+  if (type != LUA_TNUMBER) throw FieldFailure(source_, {path, "expected a number, got " + got});
+  if (!std::isfinite(value)) throw FieldFailure(source_, {path, "expected a finite number, got " + got});
   return value;
 }
 

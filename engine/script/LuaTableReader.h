@@ -1,8 +1,9 @@
 #pragma once
 // Typed, path-aware reads of a plain Lua table that a script returned, for
 // turning script data into C++ definition structs. Every failure throws a
-// ScriptError that names the file and the field path:
-//   "rose.lua: drive.r1: expected a number, got string".
+// FieldFailure (a ScriptError) that names the file and the field path:
+//   "rose.lua: drive.r1: expected a number, got string",
+// and carries the field and the message apart for DataFileLoader.
 //
 // Reads are raw (no metamethods run), so reading data never executes script
 // code: data tables are plain tables. Call only outside protected calls, on
@@ -32,7 +33,8 @@ class LuaTableReader {
 
   // "drive.r1" for key "r1" of table "drive"; "r1" at the top.
   std::string fieldPath(std::string_view key) const;
-  // Throws "source: path.key: message" ("source: path: message" for an empty key).
+  // Throws FieldFailure {path.key, message}: "source: path.key: message"
+  // ("source: path: message" for an empty key).
   [[noreturn]] void fail(std::string_view key, const std::string& message) const;
 
   // Lua type of the field (LUA_TNIL when absent).

@@ -9,17 +9,18 @@
 #include <optional>
 #include <vector>
 
+#include "engine/script/DataFileLoader.h"
 #include "engine/script/LevelFieldChecks.h"
-#include "engine/script/LuaSandbox.h"
 #include "engine/script/LuaTableReader.h"
-#include "engine/script/ScriptError.h"
-#include "engine/script/ScriptSourceFile.h"
 
 namespace hemiroll::script {
 
 namespace fs = std::filesystem;
 
 namespace {
+
+// What messages call a protocol file and what its chunk returns.
+constexpr DataFileKind kProtocolFile{"protocol file", "protocol"};
 
 constexpr std::initializer_list<const char*> kMethods = {"M1", "M2", "M3", "visual"};
 constexpr int kMaxRepetitions = 10000;
@@ -207,13 +208,10 @@ std::uint64_t readSeed(const LuaTableReader& top) {
   return static_cast<std::uint64_t>(*value);
 }
 
-ProtocolDef readProtocol(lua_State* L, const std::string& name, const LevelFolders& folders) {
-  if (lua_type(L, -1) != LUA_TTABLE)
-    throw ScriptError(name + ": the protocol must return a table, got " + describeLuaValue(L, -1));
-  const LuaTableReader top(L, -1, name, "");
+ProtocolDef readProtocol(const LuaTableReader& top, const LevelFolders& folders) {
   rejectUnknownLevelKeys(top, {"experiment", "description", "version", "seed", "blocks"});
   ProtocolDef def;
-  def.source = name;
+  def.source = top.source();
   const auto experiment = top.string("experiment");
   if (!experiment) top.fail("experiment", "missing; every protocol needs an experiment id (a string)");
   if (!isFolderName(*experiment))
@@ -239,16 +237,9 @@ ProtocolDef readProtocol(lua_State* L, const std::string& name, const LevelFolde
   return def;
 }
 
-ProtocolDef load(const ProtocolLoadOptions& options, std::string_view source, const std::string& name,
-                 const LevelFolders& folders) {
-  LuaSandbox sandbox(options.limits);  // data only: no require, no random
-  try {
-    sandbox.runChunk(source, name, 1);
-    return readProtocol(sandbox.state(), name, folders);
-  } catch (const ScriptError& e) {
-    throw ScriptError(withSourceLine(e.what(), name, source));
-  }
-}
+// A protocol is data: its sandbox has no require and no random (the engine
+// shuffles, ProtocolPlan).
+DataFileLoader protocolFileLoader(const SandboxLimits& limits) { return DataFileLoader(kProtocolFile, limits); }
 
 }  // namespace
 
@@ -261,15 +252,16 @@ std::string ProtocolLoader::levelsDirFor(const std::string& path) const {
 }
 
 ProtocolDef ProtocolLoader::loadFile(const std::string& path) const {
-  const std::string text = readScriptText(path, "protocol file");
-  if (text.size() > options_.limits.memoryLimitBytes)
-    throw ScriptError(path + ":1: file is larger than the memory limit");
-  return load(options_, text, path, {fs::path(path).parent_path().string(), levelsDirFor(path)});
+  return protocolFileLoader(options_.limits).loadFile(path, [&](const DataTable& data) {
+    return readProtocol(data.top, {fs::path(path).parent_path().string(), levelsDirFor(path)});
+  });
 }
 
 ProtocolDef ProtocolLoader::loadSource(std::string_view source, const std::string& name,
                                        const std::string& baseDir) const {
-  return load(options_, source, name, {baseDir, options_.levelsDir});
+  return protocolFileLoader(options_.limits).loadSource(source, name, [&](const DataTable& data) {
+    return readProtocol(data.top, {baseDir, options_.levelsDir});
+  });
 }
 
 }  // namespace hemiroll::script

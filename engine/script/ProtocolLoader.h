@@ -1,11 +1,12 @@
 #pragma once
-// Reads a research protocol file (docs/PROTOCOLS.md) into a ProtocolDef. The
-// file is Lua run in a fresh LuaSandbox (no require, no hemiroll.random: a
-// protocol is data; the engine shuffles, ProtocolPlan) and must return a
-// plain table. Anything wrong with it - syntax, run-time error, quota, an
-// unknown key (with the nearest allowed name), a wrong type, a value out of
-// range, a level file that does not exist - throws ONE ScriptError
-// "file:line: path: what", as LevelLoader does.
+// Reads a research protocol file (docs/PROTOCOLS.md) into a ProtocolDef: the
+// protocol's reader on top of DataFileLoader. The file is Lua run in a fresh
+// LuaSandbox (no require, no hemiroll.random: a protocol is data; the engine
+// shuffles, ProtocolPlan) and must return a plain table. Anything wrong with
+// it - syntax, run-time error, quota, an unknown key (with the nearest
+// allowed name), a wrong type, a value out of range, a level file that does
+// not exist - throws ONE ScriptError "file:line: path: what", as LevelLoader
+// does.
 //
 // Level files are looked for relative to the protocol file's folder first,
 // then in the levels folder (ProtocolLoadOptions::levelsDir). The loader

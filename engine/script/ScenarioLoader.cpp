@@ -6,27 +6,16 @@
 #include "engine/physics/IntegratorRegistry.h"
 #include "engine/physics/RotationDrivenSystem.h"
 #include "engine/script/ConstantProxyTrajectory.h"
+#include "engine/script/DataFileLoader.h"
 #include "engine/script/LuaProxyTrajectory.h"
-#include "engine/script/LuaSandbox.h"
 #include "engine/script/LuaTableReader.h"
-#include "engine/script/ScriptError.h"
 
 namespace hemiroll::script {
 
 namespace {
 
-// Restores the Lua stack on every exit, exceptions included.
-class StackTop {
- public:
-  explicit StackTop(lua_State* L) : L_(L), top_(lua_gettop(L)) {}
-  ~StackTop() { lua_settop(L_, top_); }
-  StackTop(const StackTop&) = delete;
-  StackTop& operator=(const StackTop&) = delete;
-
- private:
-  lua_State* L_;
-  int top_;
-};
+// What messages call a scenario file and what its chunk returns.
+constexpr DataFileKind kScenarioFile{"scenario file", "scenario"};
 
 std::string joinNames(const std::vector<physics::IntegratorInfo>& infos) {
   std::string out;
@@ -114,9 +103,8 @@ void readProxyDrive(const LuaTableReader& drive, const std::shared_ptr<LuaSandbo
   def.coupling.stiffness = drive.number("kr", def.coupling.stiffness);
   def.coupling.damping = drive.number("kv", def.coupling.damping);
   def.coupling.alpha = drive.number("alpha", def.coupling.alpha);
-  // validateCoupling names the field relative to the drive ("kr (stiffness) ...").
-  if (const std::string problem = physics::validateCoupling(def.coupling); !problem.empty())
-    throw ScriptError(drive.source() + ": " + drive.fieldPath(problem));
+  // The field is the drive table's ("kr").
+  if (const auto error = physics::couplingError(def.coupling)) drive.fail(error->field, error->message);
   def.proxy = readProxy(drive, sandbox);
 }
 
@@ -167,26 +155,22 @@ std::optional<double> readPositiveSeconds(const LuaTableReader& top, const char*
   return value;
 }
 
-// Reads the table the chunk left on top of the stack.
-ScenarioDef readScenario(const std::shared_ptr<LuaSandbox>& sandbox, const std::string& name) {
-  lua_State* L = sandbox->state();
-  // Everything here reads raw data from the returned table; the only script
-  // code that runs is a proxy function, through protected calls.
-  if (lua_type(L, -1) != LUA_TTABLE)
-    throw ScriptError(name + ": the scenario must return a table, got " + describeLuaValue(L, -1));
-  const LuaTableReader top(L, -1, name, "");
+// Everything here reads raw data from the returned table; the only script
+// code that runs is a proxy function, through protected calls.
+ScenarioDef readScenario(const DataTable& data) {
+  const LuaTableReader& top = data.top;
+  const std::shared_ptr<LuaSandbox>& sandbox = data.sandbox;
   top.rejectUnknownKeys(
       {"description", "params", "initial", "drive", "duration", "dt", "integrator", "tol", "orientation"});
   ScenarioDef out;
-  out.source = name;
+  out.source = top.source();
   (void)top.string("description");
   readParams(top, out.params);
   out.drive = readDrive(top, sandbox);
   // The prescribed drive accepts m_p = 0 (a bare hemisphere); the force
   // drives need a mass for the force to accelerate.
   const bool allowZeroPointMass = out.drive.kind == DriveKind::Rose;
-  if (const std::string problem = physics::validateParams(out.params, allowZeroPointMass); !problem.empty())
-    throw ScriptError(name + ": " + problem);
+  if (const auto error = physics::paramsError(out.params, allowZeroPointMass)) top.fail(error->field, error->message);
   readInitial(top, out.drive.kind, out.initial);
   out.duration = readPositiveSeconds(top, "duration");
   out.timeStep = readPositiveSeconds(top, "dt");
@@ -209,17 +193,11 @@ ScenarioDef readScenario(const std::shared_ptr<LuaSandbox>& sandbox, const std::
 }  // namespace
 
 ScenarioDef ScenarioLoader::loadFile(const std::string& path) const {
-  auto sandbox = std::make_shared<LuaSandbox>(limits_);
-  const StackTop restore(sandbox->state());
-  sandbox->runFile(path, 1);
-  return readScenario(sandbox, path);
+  return DataFileLoader(kScenarioFile, limits_).loadFile(path, readScenario);
 }
 
 ScenarioDef ScenarioLoader::loadSource(std::string_view source, const std::string& name) const {
-  auto sandbox = std::make_shared<LuaSandbox>(limits_);
-  const StackTop restore(sandbox->state());
-  sandbox->runChunk(source, name, 1);
-  return readScenario(sandbox, name);
+  return DataFileLoader(kScenarioFile, limits_).loadSource(source, name, readScenario);
 }
 
 }  // namespace hemiroll::script

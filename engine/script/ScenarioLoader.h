@@ -1,10 +1,13 @@
 #pragma once
-// Reads a scenario file (docs/SCENARIOS.md) into a ScenarioDef. The file is
-// Lua run in a fresh LuaSandbox; it must return a plain table
+// Reads a scenario file (docs/SCENARIOS.md) into a ScenarioDef: the
+// scenario's reader on top of DataFileLoader. The file is Lua run in a fresh
+// LuaSandbox; it must return a plain table
 //   { params = {...}, initial = {...}, drive = {...}, duration, dt, integrator }.
 // Anything wrong with it — syntax, run-time error, quota, a missing or
 // mistyped field, an unknown name, a value out of range — throws ONE
-// ScriptError naming the file and the line or the field path.
+// ScriptError "file:line: path: what", as LevelLoader does. A proxy
+// function is called once at t = 0 while loading, so that one that returns
+// the wrong things fails here.
 
 #include <string>
 #include <string_view>

@@ -5,10 +5,14 @@
 // chunks, an instruction quota through a count hook, a memory cap through the
 // allocator), the conversion of every Lua error into a ScriptError that names
 // "file:line" or "file: field.path", typed reads of script data
-// (LuaTableReader), and loading scenario files into plain C++ definitions
-// (ScenarioLoader -> ScenarioDef), including proxy trajectories written in
-// Lua (LuaProxyTrajectory). Levels (docs/LEVELS.md): loading level files
-// (LevelLoader -> LevelDef + LevelScript, every error "file:line:"), judging
+// (LuaTableReader), the one loader of Lua data files (DataFileLoader: read,
+// sandbox, run, hand the returned table to the kind's reader, every error
+// "file:line:" with the line of the field from LevelSourceMap) under levels,
+// protocols, sweep specs and scenarios, and loading scenario files into
+// plain C++ definitions (ScenarioLoader -> ScenarioDef), including proxy
+// trajectories written in Lua (LuaProxyTrajectory). Levels
+// (docs/LEVELS.md): loading level files (LevelLoader -> LevelDef +
+// LevelScript, every error "file:line:"), judging
 // a declared task natively every tick (TaskJudge, Lua-free, allocation-free),
 // trial summaries (TrialSummaryAccumulator), level callbacks and scoring
 // (LevelScript), and the engine services `require` (scripts/ modules only)
@@ -45,6 +49,7 @@
 #include "engine/script/BotObservation.h"
 #include "engine/script/BotScript.h"
 #include "engine/script/ConstantProxyTrajectory.h"
+#include "engine/script/DataFileLoader.h"
 #include "engine/script/DriveDef.h"
 #include "engine/script/EngineRandom.h"
 #include "engine/script/LevelDef.h"

@@ -7,15 +7,16 @@
 #include <optional>
 
 #include "engine/physics/IntegratorRegistry.h"
+#include "engine/script/DataFileLoader.h"
 #include "engine/script/LevelFieldChecks.h"
-#include "engine/script/LuaSandbox.h"
 #include "engine/script/LuaTableReader.h"
-#include "engine/script/ScriptError.h"
-#include "engine/script/ScriptSourceFile.h"
 
 namespace hemiroll::script {
 
 namespace {
+
+// What messages call a sweep spec and what its chunk returns.
+constexpr DataFileKind kSweepFile{"sweep spec", "sweep spec"};
 
 constexpr std::initializer_list<const char*> kParamNames = {"R", "m_s", "m_p", "g", "r1", "r2", "k", "Omega"};
 constexpr std::initializer_list<const char*> kStarts = {"rest", "equilibrium"};
@@ -213,14 +214,11 @@ void readAxes(const LuaTableReader& top, SweepDef& def) {
   }
 }
 
-SweepDef readSweep(lua_State* L, const std::string& name) {
-  if (lua_type(L, -1) != LUA_TTABLE)
-    throw ScriptError(name + ": the sweep spec must return a table, got " + describeLuaValue(L, -1));
-  const LuaTableReader top(L, -1, name, "");
+SweepDef readSweep(const LuaTableReader& top) {
   rejectUnknownLevelKeys(top, {"description", "params", "drive", "start", "duration", "dt", "integrator", "tol",
                                "analysis", "axes"});
   SweepDef def;
-  def.source = name;
+  def.source = top.source();
   def.description = top.string("description").value_or("");
   readParams(top, def);
   readDrive(top, def);
@@ -231,26 +229,19 @@ SweepDef readSweep(lua_State* L, const std::string& name) {
   return def;
 }
 
-SweepDef load(const SandboxLimits& limits, std::string_view source, const std::string& name) {
-  LuaSandbox sandbox(limits);  // data only: no require, no random
-  try {
-    sandbox.runChunk(source, name, 1);
-    return readSweep(sandbox.state(), name);
-  } catch (const ScriptError& e) {
-    throw ScriptError(withSourceLine(e.what(), name, source));
-  }
-}
+// A sweep spec is data: its sandbox has no require and no random.
+DataFileLoader sweepFileLoader(const SandboxLimits& limits) { return DataFileLoader(kSweepFile, limits); }
+
+SweepDef readSweepTable(const DataTable& data) { return readSweep(data.top); }
 
 }  // namespace
 
 SweepDef SweepLoader::loadFile(const std::string& path) const {
-  const std::string text = readScriptText(path, "sweep spec");
-  if (text.size() > limits_.memoryLimitBytes) throw ScriptError(path + ":1: file is larger than the memory limit");
-  return load(limits_, text, path);
+  return sweepFileLoader(limits_).loadFile(path, readSweepTable);
 }
 
 SweepDef SweepLoader::loadSource(std::string_view source, const std::string& name) const {
-  return load(limits_, source, name);
+  return sweepFileLoader(limits_).loadSource(source, name, readSweepTable);
 }
 
 }  // namespace hemiroll::script

@@ -1,7 +1,7 @@
 #pragma once
-// Reads a sweep spec (docs/SWEEP.md) into a SweepDef. The file is Lua run in
-// a fresh LuaSandbox (no require, no random: a spec is data) and must return
-// a plain table
+// Reads a sweep spec (docs/SWEEP.md) into a SweepDef: the spec's reader on
+// top of DataFileLoader. The file is Lua run in a fresh LuaSandbox (no
+// require, no random: a spec is data) and must return a plain table
 //   { params = {...}, drive = {...}, start = "equilibrium", duration, dt,
 //     integrator, tol, axes = { {param = "k", values = {...}},
 //                               {param = "Omega", range = {from, to, count, log}} } }.

@@ -82,42 +82,47 @@ const BadScenario kBadScenarios[] = {
     {"runtime.lua", "local t = nil\nreturn t.params", "runtime.lua:2: attempt to index a nil value"},
     {"raised.lua", "\nerror('scenario says no')", "raised.lua:2: scenario says no"},
     {"endless.lua", "local i = 0\nwhile true do i = i + 1 end", "endless.lua:2: instruction quota"},
-    {"hungry.lua", "local s = string.rep('x', 1 << 30)\nreturn {}", "hungry.lua: memory limit"},
+    {"hungry.lua", "local s = string.rep('x', 1 << 30)\nreturn {}", "hungry.lua:2: memory limit"},
     {"escape_io.lua", "return io.open('/etc/passwd')", "escape_io.lua:1:"},
     {"escape_os.lua", "os.execute('true')", "escape_os.lua:1:"},
-    {"not_table.lua", "return 42", "not_table.lua: the scenario must return a table, got number"},
-    {"no_drive.lua", "return {}", "no_drive.lua: drive: missing"},
-    {"no_kind.lua", "return {drive = {r1 = 0.01}}", "no_kind.lua: drive.kind: missing"},
+    {"not_table.lua", "return 42", "not_table.lua:1: the scenario must return a table, got number"},
+    {"no_drive.lua", "return {}", "no_drive.lua:1: drive: missing"},
+    {"no_kind.lua", "return {drive = {r1 = 0.01}}", "no_kind.lua:1: drive.kind: missing"},
     {"wrong_type.lua", "return {drive = {kind = 'rose', r1 = '0.015'}}",
-     "wrong_type.lua: drive.r1: expected a number, got string"},
-    {"params_type.lua", "return {params = 5, drive = {kind = 'free'}}", "params_type.lua: params: expected a table, got number"},
-    {"drive_kind.lua", "return {drive = {kind = 'wobble'}}", "drive_kind.lua: drive.kind: unknown drive kind 'wobble'"},
-    {"kind_type.lua", "return {drive = {kind = 1}}", "kind_type.lua: drive.kind: expected a string, got number"},
+     "wrong_type.lua:1: drive.r1: expected a number, got string"},
+    {"params_type.lua", "return {params = 5, drive = {kind = 'free'}}",
+     "params_type.lua:1: params: expected a table, got number"},
+    {"drive_kind.lua", "return {drive = {kind = 'wobble'}}", "drive_kind.lua:1: drive.kind: unknown drive kind 'wobble'"},
+    {"kind_type.lua", "return {drive = {kind = 1}}", "kind_type.lua:1: drive.kind: expected a string, got number"},
     {"method.lua", "return {drive = {kind = 'proxy', method = 'M4', proxy = {0, 0, 0.04}}}",
-     "method.lua: drive.method: unknown method 'M4'"},
-    {"negative_mass.lua", "return {params = {m_s = -0.1}, drive = {kind = 'free'}}", "negative_mass.lua: params.m_s"},
-    {"zero_mass.lua", "return {params = {m_p = 0}, drive = {kind = 'free'}}", "zero_mass.lua: params.m_p"},
-    {"zero_radius.lua", "return {params = {R = 0}, drive = {kind = 'rose'}}", "zero_radius.lua: params.R"},
+     "method.lua:1: drive.method: unknown method 'M4'"},
+    {"negative_mass.lua", "return {params = {m_s = -0.1}, drive = {kind = 'free'}}",
+     "negative_mass.lua:1: params.m_s: (hemisphere mass) must be"},
+    {"zero_mass.lua", "return {params = {m_p = 0}, drive = {kind = 'free'}}",
+     "zero_mass.lua:1: params.m_p: (mass point) must be positive"},
+    {"zero_radius.lua", "return {params = {R = 0}, drive = {kind = 'rose'}}", "zero_radius.lua:1: params.R: (radius) must be"},
     {"infinite.lua", "return {params = {R = 1/0}, drive = {kind = 'free'}}",
-     "infinite.lua: params.R: expected a finite number, got inf"},
-    {"nan.lua", "return {drive = {kind = 'rose', Omega = 0/0}}", "nan.lua: drive.Omega: expected a finite number, got nan"},
+     "infinite.lua:1: params.R: expected a finite number, got inf"},
+    {"nan.lua", "return {drive = {kind = 'rose', Omega = 0/0}}", "nan.lua:1: drive.Omega: expected a finite number, got nan"},
     {"state_name.lua", "return {initial = {theta = 0.1}, drive = {kind = 'free'}}",
-     "state_name.lua: initial: unknown field 'theta'"},
+     "state_name.lua:1: initial: unknown field 'theta'"},
     {"state_type.lua", "return {initial = {w_z = 'fast'}, drive = {kind = 'free'}}",
-     "state_type.lua: initial.w_z: expected a number, got string"},
-    {"rose_point.lua", "return {initial = {x_p = 0.02}, drive = {kind = 'rose'}}", "rose_point.lua: initial.x_p"},
-    {"unknown_top.lua", "return {drive = {kind = 'free'}, durration = 3}", "unknown_top.lua: unknown field 'durration'"},
+     "state_type.lua:1: initial.w_z: expected a number, got string"},
+    {"rose_point.lua", "return {initial = {x_p = 0.02}, drive = {kind = 'rose'}}", "rose_point.lua:1: initial.x_p"},
+    {"unknown_top.lua", "return {drive = {kind = 'free'}, durration = 3}", "unknown_top.lua:1: unknown field 'durration'"},
     {"unknown_drive_field.lua", "return {drive = {kind = 'rose', omega = 1}}",
-     "unknown_drive_field.lua: drive: unknown field 'omega'"},
-    {"bad_duration.lua", "return {drive = {kind = 'free'}, duration = -1}", "bad_duration.lua: duration: must be a positive"},
-    {"bad_dt.lua", "return {drive = {kind = 'free'}, dt = 0}", "bad_dt.lua: dt: must be a positive"},
+     "unknown_drive_field.lua:1: drive: unknown field 'omega'"},
+    {"bad_duration.lua", "return {drive = {kind = 'free'}, duration = -1}", "bad_duration.lua:1: duration: must be a positive"},
+    {"bad_dt.lua", "return {drive = {kind = 'free'}, dt = 0}", "bad_dt.lua:1: dt: must be a positive"},
     {"bad_integrator.lua", "return {drive = {kind = 'free'}, integrator = 'euler'}",
-     "bad_integrator.lua: integrator: unknown integrator 'euler'"},
-    {"bad_gain.lua", "return {drive = {kind = 'proxy', kr = -5, proxy = {0, 0, 0.04}}}", "bad_gain.lua: drive.kr"},
-    {"proxy_missing.lua", "return {drive = {kind = 'proxy'}}", "proxy_missing.lua: drive.proxy: missing"},
+     "bad_integrator.lua:1: integrator: unknown integrator 'euler'"},
+    {"bad_gain.lua", "return {drive = {kind = 'proxy', kr = -5, proxy = {0, 0, 0.04}}}",
+     "bad_gain.lua:1: drive.kr: (stiffness) must be"},
+    {"proxy_missing.lua", "return {drive = {kind = 'proxy'}}", "proxy_missing.lua:1: drive.proxy: missing"},
     {"proxy_type.lua", "return {drive = {kind = 'proxy', proxy = 'hand'}}",
-     "proxy_type.lua: drive.proxy: expected a function"},
-    {"proxy_table.lua", "return {drive = {kind = 'proxy', proxy = {0, 0}}}", "proxy_table.lua: drive.proxy: expected exactly three"},
+     "proxy_type.lua:1: drive.proxy: expected a function"},
+    {"proxy_table.lua", "return {drive = {kind = 'proxy', proxy = {0, 0}}}",
+     "proxy_table.lua:1: drive.proxy: expected exactly three"},
     {"proxy_returns.lua", "return {drive = {kind = 'proxy',\n  proxy = function(t)\n    return 0, 'y', 0.04\n  end}}",
      "proxy_returns.lua:2: drive.proxy(t = 0) returned string as value 2 (y)"},
     {"proxy_count.lua", "return {drive = {kind = 'proxy', proxy = function(t) return 0, 0 end}}",
@@ -157,13 +162,14 @@ TEST(SimCommand, BytecodeScenarioIsRefused) {
   const TempDirectory dir;
   const ProcessResult r = hemiroll({"sim", dir.write("compiled.lua", bytes)});
   EXPECT_EQ(r.exitCode, 2);
-  EXPECT_THAT(r.err, HasSubstr("compiled.lua: precompiled (binary) Lua chunks are refused"));
+  // The line is the map's guess in binary text; what matters is that there is one.
+  EXPECT_THAT(r.err, ::testing::ContainsRegex("compiled\\.lua:[0-9]+: precompiled \\(binary\\) Lua chunks are refused"));
 }
 
 TEST(SimCommand, MissingFileExitsTwo) {
   const ProcessResult r = hemiroll({"sim", "/nonexistent/nowhere.lua"});
   EXPECT_EQ(r.exitCode, 2);
-  EXPECT_THAT(r.err, HasSubstr("nowhere.lua: cannot open file"));
+  EXPECT_THAT(r.err, HasSubstr("/nonexistent/nowhere.lua:1: no such file"));
 }
 
 TEST(SimCommand, ProxyFailureMidRunKeepsTheRowsBeforeIt) {

@@ -216,5 +216,20 @@ TEST(ForceMethodName, ReadsBackEveryNameAndNothingElse) {
   EXPECT_FALSE(forceMethodFromName("").has_value());
 }
 
+// The field and the rest of the sentence come apart as values (a loader
+// points at the field's line); the one-line form joins them with a space.
+TEST(CouplingError, NamesTheFirstBadGainApartFromItsMessage) {
+  EXPECT_FALSE(couplingError(CouplingDef{}).has_value());
+  EXPECT_EQ(validateCoupling(CouplingDef{}), "");
+  CouplingDef c;
+  c.damping = -1.0;
+  c.alpha = 0.0;
+  const auto error = couplingError(c);
+  ASSERT_TRUE(error.has_value());
+  EXPECT_EQ(error->field, "kv");
+  EXPECT_EQ(error->message, "(damping) must be a finite, non-negative N s/m");
+  EXPECT_EQ(validateCoupling(c), "kv (damping) must be a finite, non-negative N s/m");
+}
+
 }  // namespace
 }  // namespace hemiroll::physics

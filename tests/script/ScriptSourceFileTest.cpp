@@ -1,5 +1,5 @@
 // engine/script/ScriptSourceFile: reading a Lua data file as the stand-alone
-// interpreter does, and giving a field's error the line it is written on.
+// interpreter does.
 
 #include "engine/script/ScriptSourceFile.h"
 
@@ -34,14 +34,6 @@ TEST(ScriptSourceFile, MissingOrNotAFileIsLineOne) {
   } catch (const ScriptError& e) {
     EXPECT_THAT(e.what(), ::testing::EndsWith(":1: not a regular file"));
   }
-}
-
-TEST(ScriptSourceFile, AFieldsErrorGetsTheLineOfTheField) {
-  const std::string source = "return {\n  a = 1,\n  b = {\n    c = 2,\n  },\n}\n";
-  EXPECT_EQ(withSourceLine("f.lua: b.c: too big", "f.lua", source), "f.lua:4: b.c: too big");
-  EXPECT_EQ(withSourceLine("f.lua: b.x: missing", "f.lua", source), "f.lua:3: b.x: missing");  // absent: its parent
-  EXPECT_EQ(withSourceLine("f.lua:9: syntax", "f.lua", source), "f.lua:9: syntax");         // has its line already
-  EXPECT_EQ(withSourceLine("out of memory", "f.lua", source), "f.lua:1: out of memory");
 }
 
 }  // namespace
