@@ -137,7 +137,10 @@ ProxyCommand Autopilot::act(const AutopilotInput& input) {
   }
   if (def_.plannerThread) {
     Decision ready;
-    if (!pending_ && worker_->take(ready) && ready.generation == generation_) pending_ = ready;
+    if (!pending_ && worker_->take(ready) && ready.generation == generation_) {
+      pending_ = ready;
+      refineNext_ = refineNext_ || ready.wantsRefinement;
+    }
     if (pending_ && input.time >= pending_->applyAt - 0.5 * def_.dt) {
       // Applied at the moment it was planned for; one that came too late
       // (the plan took longer than its lead) is dropped.
@@ -146,8 +149,12 @@ ProxyCommand Autopilot::act(const AutopilotInput& input) {
     }
     if (!pending_ && input.time >= nextDecision_ - 1e-9) {
       PlanJob next = job(input);
-      next.lead = def_.planLead;
-      if (worker_->post(next)) nextDecision_ = input.time + def_.decisionPeriod;
+      next.lead = refineNext_ ? def_.refineLead : def_.planLead;
+      next.mayRefine = refineNext_;
+      if (worker_->post(next)) {
+        nextDecision_ = input.time + def_.decisionPeriod;
+        refineNext_ = false;
+      }
     }
   } else if (input.time >= nextDecision_ - 1e-9) {
     apply(plan(job(input)));
@@ -200,7 +207,14 @@ Autopilot::Decision Autopilot::plan(const PlanJob& job) {
   planGoal_ = job.goal;
   planTurning_ = job.turning;
   planLastProxy_ = job.lastProxy;
-  if (job.lead > 0.0) predict(input, job.lead);
+  planMayRefine_ = job.mayRefine;
+  planDeadline_.reset();
+  if (job.lead > 0.0) {
+    // Ready before its moment, with a margin for the hand-over.
+    planDeadline_ = start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                std::chrono::duration<double>(0.8 * job.lead));
+    predict(input, job.lead);
+  }
   decision_ = Decision{};
   decision_.generation = job.generation;
   decision_.applyAt = input.time;
@@ -364,6 +378,7 @@ bool Autopilot::tryLanding(const AutopilotInput& input) {
   if (!atRest || uprightError(upright) > def_.refineConsider || input.time < nextRefinement_ || psiNearest > 3.0 ||
       tilt > def_.refineTilt)
     return false;
+  if (!mayRefine()) return false;
   nextRefinement_ = input.time + def_.refineRetryPeriod;
   return refineLanding(input, horizon, false);
 }
@@ -382,6 +397,8 @@ bool Autopilot::refineLanding(const AutopilotInput& input, double horizon, bool 
   search.rounds = std::max(2, static_cast<int>(std::lround(8 * def_.budget * escalation)));
   search.spread = def_.refineSpread * kSpreadScale[(attempt / 3) % 3];
   search.seed = def_.seed ^ (0x5bd1e995ULL * attempt);
+  if (planDeadline_)
+    search.outOfTime = [deadline = *planDeadline_] { return std::chrono::steady_clock::now() > deadline; };
   const double landRate = def_.refineLandRate * kRateScale[attempt % 3];
   const std::optional<LandingShape> shape = searchLandingShape(search, [&](const LandingShape& candidateShape) {
     HelixPolicy candidate = work_;
@@ -408,6 +425,12 @@ bool Autopilot::refineLanding(const AutopilotInput& input, double horizon, bool 
   return true;
 }
 
+bool Autopilot::mayRefine() {
+  if (planMayRefine_) return true;
+  decision_.wantsRefinement = true;
+  return false;
+}
+
 void Autopilot::verifyLanding(const AutopilotInput& input) {
   // Every few decisions is enough: the landing takes seconds.
   if (stats_.decisions % 3 != 0) return;
@@ -423,7 +446,7 @@ void Autopilot::verifyLanding(const AutopilotInput& input) {
   // Still near: the landing drifted from its plan (a small shove, or real
   // time's hand-over). Search a new shape for the rest of it, from here.
   const bool atRest = planGoal_.set[4] || planGoal_.set[5] || planGoal_.set[6] || planGoal_.omegaNormSet;
-  if (atRest && input.time >= nextRefinement_) {
+  if (atRest && input.time >= nextRefinement_ && mayRefine()) {
     nextRefinement_ = input.time + def_.refineRetryPeriod;
     refineLanding(input, def_.landHorizon, true);
   }

@@ -31,6 +31,7 @@
 // Headless plans run inside act(): same inputs, same outputs, bit for bit.
 
 #include <cstdint>
+#include <chrono>
 #include <memory>
 #include <optional>
 #include <string>
@@ -74,6 +75,10 @@ struct AutopilotDef {
   // run is deterministic.
   bool plannerThread = false;
   double planLead = 0.3;  // [s] how far ahead a real-time plan is made (PlanJob::lead)
+  // A landing-shape search costs tenths of a second to seconds, more than
+  // planLead: in real time a plan that wants one asks for it, and the next
+  // plan is made this far ahead and given 80 % of it to search.
+  double refineLead = 1.5;  // [s]
 };
 
 struct AutopilotInput {
@@ -124,6 +129,9 @@ class Autopilot {
     LandingShape shape;
     std::uint64_t generation = 0;  // the goal it was made for
     double applyAt = 0.0;          // the time of the state it was made for [s]
+    // Real time: a landing-shape search is due but this plan had no time
+    // for it; the next plan gets refineLead.
+    bool wantsRefinement = false;
   };
   // Everything a plan reads, copied when it is posted.
   struct PlanJob {
@@ -139,6 +147,9 @@ class Autopilot {
     // policy through the model, so that the decision can be applied at that
     // very moment (real time: a plan takes time; 0 headless).
     double lead = 0.0;
+    // Whether a landing-shape search may run in this plan (headless
+    // always; real time only in a plan made refineLead ahead).
+    bool mayRefine = true;
   };
 
  private:
@@ -162,6 +173,8 @@ class Autopilot {
   // settling already) instead of starting a landing.
   bool refineLanding(const AutopilotInput& input, double horizon, bool reshape);
   void verifyLanding(const AutopilotInput& input);
+  // False (and the decision asks for time) when this plan may not search.
+  bool mayRefine();
   Outcome rollout(HelixPolicy policy, const AutopilotInput& input, double horizon, bool judge);
   double uprightError(const physics::Vec2& upright) const;
   physics::Vec3 insideWorkspace(const physics::Vec3& p) const;
@@ -180,6 +193,9 @@ class Autopilot {
   bool planTurning_ = false;
   physics::Vec3 planLastProxy_ = physics::Vec3::Zero();
   Decision decision_;
+  bool planMayRefine_ = true;
+  // Real time: when the plan must be ready; none headless.
+  std::optional<std::chrono::steady_clock::time_point> planDeadline_;
   PlantModel model_;
   Goal given_;  // the stage's goal as given
   Goal goal_;   // the one pursued now (given_ without psi until the rest holds)
@@ -197,6 +213,7 @@ class Autopilot {
   PlannerStats stats_;
   std::uint64_t generation_ = 0;
   bool resetPlanner_ = false, holdSteer_ = false;
+  bool refineNext_ = false;  // act's side: the next real-time plan gets refineLead
   std::unique_ptr<PlannerWorker> worker_;
   std::optional<Decision> pending_;  // a real-time decision waiting for its moment
 };

@@ -38,6 +38,7 @@ std::optional<LandingShape> searchLandingShape(const LandingSearchDef& def, cons
     for (std::size_t k = 0; k < samples.size(); ++k) {
       Vector& theta = samples[k].second;
       for (std::size_t i = 0; i < n; ++i) theta[i] = mean[i] + (k == 0 ? 0.0 : spread[i] * normal());
+      if (def.outOfTime && def.outOfTime()) return std::nullopt;
       const LandingShape shape = shapeOf(theta);
       const ShapeScore s = score(shape);
       if (s.success) return shape;

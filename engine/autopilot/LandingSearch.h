@@ -21,6 +21,9 @@ struct LandingSearchDef {
   int rounds = 8;
   double spread = 0.002; // first spread of every knot coordinate [m]
   std::uint64_t seed = 0;
+  // Asked before each shape is scored; true ends the search with nothing
+  // (real time: a plan must be ready when its moment comes). Empty: never.
+  std::function<bool()> outOfTime;
 };
 
 struct ShapeScore {
@@ -30,7 +33,8 @@ struct ShapeScore {
 
 using ScoreShape = std::function<ShapeScore(const LandingShape&)>;
 
-// The first shape that succeeds, or nothing after `rounds` rounds.
+// The first shape that succeeds, or nothing after `rounds` rounds (or when
+// out of time).
 std::optional<LandingShape> searchLandingShape(const LandingSearchDef& def, const ScoreShape& score);
 
 // Standard normal draws from splitmix64 and Box-Muller.

@@ -273,6 +273,24 @@ TEST(LandingSearch, FindsAShapeNearAnOptimumAndRepeatsItsDrawsPerSeed) {
   EXPECT_FALSE(searchLandingShape(def, score).has_value());  // one round from zero cannot get there
 }
 
+TEST(LandingSearch, OutOfTimeEndsTheSearchBeforeTheNextShape) {
+  // The same bowl, solvable in 40 rounds; the clock runs out after five
+  // shapes: a sixth is never scored, and nothing is returned.
+  int scored = 0, asked = 0;
+  const auto score = [&](const LandingShape& s) {
+    ++scored;
+    double cost = 0.0;
+    for (const physics::Vec2& k : s.knots) cost += (k - physics::Vec2(0.001, 0.001)).squaredNorm();
+    return ShapeScore{cost < 1e-12, cost};
+  };
+  LandingSearchDef def;
+  def.rounds = 40;
+  def.outOfTime = [&] { return ++asked > 5; };
+  EXPECT_FALSE(searchLandingShape(def, score).has_value());
+  EXPECT_EQ(scored, 5);
+  EXPECT_EQ(asked, 6);
+}
+
 TEST(LandingShape, ADefaultShapeIsNoOffsetAtAll) {
   // Eigen vectors are not zeroed by value-initialisation; a plain landing
   // (no shape) must add nothing. Built in memory filled with garbage first,
