@@ -1,7 +1,9 @@
 // hemiroll: the command-line entry point. Each subcommand lives in
 // game/commands/<Name>Command.{h,cpp}; this file only dispatches.
 
+#include <exception>
 #include <iostream>
+#include <new>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -57,8 +59,20 @@ int main(int argc, char** argv) {
     return hemiroll::game::kExitOk;
   }
   if (command == "--version") return hemiroll::game::runVersionCommand({});
-  for (const CommandEntry& c : kCommands)
-    if (c.name == command) return c.run(std::vector<std::string>(args.begin() + 1, args.end()));
+  for (const CommandEntry& c : kCommands) {
+    if (c.name != command) continue;
+    // Each command reports what it expects to go wrong itself; anything that
+    // still escapes (memory exhausted by an input, a library's exception)
+    // becomes one line and exit 1, never an abort.
+    try {
+      return c.run(std::vector<std::string>(args.begin() + 1, args.end()));
+    } catch (const std::bad_alloc&) {
+      std::cerr << "hemiroll " << command << ": out of memory (an input asked for more than this machine has)\n";
+    } catch (const std::exception& e) {
+      std::cerr << "hemiroll " << command << ": " << e.what() << "\n";
+    }
+    return hemiroll::game::kExitFailure;
+  }
   std::cerr << "hemiroll: unknown command '" << command << "'\n\n";
   printUsage(std::cerr);
   return hemiroll::game::kExitUsage;

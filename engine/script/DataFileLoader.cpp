@@ -58,10 +58,8 @@ std::string placed(const FieldError& error, const std::string& name, std::string
 }  // namespace
 
 std::string DataFileLoader::readFile(const std::string& path) const {
-  std::string text = readScriptText(path, kind_.file);
   // The text must fit the Lua state's memory to be compiled at all.
-  if (text.size() > limits_.memoryLimitBytes) throw ScriptError(path + ":1: file is larger than the memory limit");
-  return text;
+  return readScriptText(path, kind_.file, limits_.memoryLimitBytes, "memory limit");
 }
 
 void DataFileLoader::run(std::string_view source, const std::string& name,

@@ -9,6 +9,7 @@
 #include <lua.hpp>
 #include <sstream>
 
+#include "engine/script/LuaPatternBound.h"
 #include "engine/script/ScriptError.h"
 #include "engine/script/ScriptSourceFile.h"
 
@@ -53,6 +54,72 @@ int sandboxSetmetatable(lua_State* L) {
   lua_settop(L, 2);
   lua_setmetatable(L, 1);
   return 1;
+}
+
+// xpcall(f, handler, ...) with the handler run after the error has unwound,
+// not at the point of the error. Lua runs a message handler where the error
+// was raised, and an instruction-quota error is raised inside the count
+// hook, where hooks are off: a handler that loops would run forever. Here
+// the handler runs with hooks on (the inner protected call restored them),
+// so the quota stops it too. The handler sees the error value, not the stack
+// where it was raised (debug.traceback is not in the sandbox anyway).
+int sandboxXpcall(lua_State* L) {
+  const int n = lua_gettop(L);
+  luaL_checktype(L, 2, LUA_TFUNCTION);
+  lua_pushvalue(L, 1);
+  for (int i = 3; i <= n; ++i) lua_pushvalue(L, i);
+  if (lua_pcall(L, n - 2, LUA_MULTRET, 0) == LUA_OK) {
+    lua_pushboolean(L, 1);
+    lua_insert(L, n + 1);
+    return lua_gettop(L) - n;
+  }
+  lua_pushvalue(L, 2);
+  lua_insert(L, -2);
+  lua_call(L, 1, 1);
+  lua_pushboolean(L, 0);
+  lua_insert(L, -2);
+  return 2;
+}
+
+// string.find, match, gmatch and gsub, refused before they run when the
+// pattern's worst case on the subject is beyond the sandbox's bound
+// (LuaPatternBound.h). Upvalue 1: the library's own function; upvalue 2:
+// the name, for the message.
+int boundedPatternFunction(lua_State* L) {
+  std::size_t subjectLength = 0, patternLength = 0;
+  luaL_checklstring(L, 1, &subjectLength);
+  const char* pattern = luaL_checklstring(L, 2, &patternLength);
+  const char* name = lua_tostring(L, lua_upvalueindex(2));
+  const bool find = std::strcmp(name, "find") == 0;
+  const bool plain = find && lua_toboolean(L, 4);
+  const bool anchoredSearch = std::strcmp(name, "gmatch") != 0;
+  if (!plain) {
+    const double bound = patternStepBound({pattern, patternLength}, subjectLength, anchoredSearch);
+    if (bound > LuaSandbox::of(L).limits().patternStepBound) {
+      char message[256];  // lua_pushfstring knows no %e
+      std::snprintf(message, sizeof message,
+                    "string.%s: the pattern has %d repeated items and the subject %zu characters: it may take %.1e "
+                    "matcher steps, more than the sandbox allows (anchor it with '^', use fewer repeats or a "
+                    "shorter subject)",
+                    name, repeatedItems({pattern, patternLength}), subjectLength, bound);
+      return luaL_error(L, "%s", message);
+    }
+  }
+  lua_pushvalue(L, lua_upvalueindex(1));
+  lua_insert(L, 1);
+  lua_call(L, lua_gettop(L) - 1, LUA_MULTRET);
+  return lua_gettop(L);
+}
+
+// Replaces the pattern functions of the string library at `lib` with
+// bounded ones, in place.
+void boundPatternFunctions(lua_State* L, int lib) {
+  for (const char* name : {"find", "match", "gmatch", "gsub"}) {
+    lua_getfield(L, lib, name);
+    lua_pushstring(L, name);
+    lua_pushcclosure(L, boundedPatternFunction, 2);
+    lua_setfield(L, lib, name);
+  }
 }
 
 // Makes every error a one-line string that starts with "file:line:". Errors
@@ -135,7 +202,12 @@ int openSandbox(lua_State* L) {
   lua_setfield(L, env, "print");
   lua_pushcfunction(L, sandboxSetmetatable);
   lua_setfield(L, env, "setmetatable");
+  lua_pushcfunction(L, sandboxXpcall);
+  lua_setfield(L, env, "xpcall");
 
+  // Before the copy: scripts' string table and strings' methods (the
+  // original library, through the string metatable) are both bounded.
+  boundPatternFunctions(L, stringLib);
   static const char* const kNothing[] = {nullptr};
   static const char* const kStringExcluded[] = {"dump", nullptr};  // bytecode out
   static const char* const kMathExcluded[] = {"random", "randomseed", nullptr};  // runs must be reproducible
@@ -236,6 +308,13 @@ void* LuaSandbox::allocate(void* ud, void* block, std::size_t oldSize, std::size
 void LuaSandbox::countHook(lua_State* L, lua_Debug* ar) {
   LuaSandbox& self = of(L);
   self.instructionsUsed_ += kHookInterval;
+  if (std::chrono::steady_clock::now() > self.deadline_) {
+    lua_sethook(L, &LuaSandbox::countHook, LUA_MASKCOUNT, 1);
+    lua_getinfo(L, "Sl", ar);
+    lua_pushfstring(L, "%s:%d: wall-clock limit of %f s exceeded", ar->short_src, ar->currentline,
+                    static_cast<lua_Number>(self.wallSeconds_));
+    lua_error(L);
+  }
   if (self.instructionsUsed_ <= self.instructionBudget_) return;
   // From now on fire on every instruction: a script that catches the error
   // with its own pcall fails again at its very next instruction, so it
@@ -247,9 +326,12 @@ void LuaSandbox::countHook(lua_State* L, lua_Debug* ar) {
   lua_error(L);
 }
 
-void LuaSandbox::arm(std::uint64_t quota) {
+void LuaSandbox::arm(std::uint64_t quota, double wallSeconds) {
   instructionBudget_ = quota;
   instructionsUsed_ = 0;
+  wallSeconds_ = wallSeconds;
+  deadline_ = std::chrono::steady_clock::now() +
+              std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(wallSeconds));
   lua_sethook(L_, &LuaSandbox::countHook, LUA_MASKCOUNT, kHookInterval);
   armed_ = true;
 }
@@ -259,8 +341,8 @@ void LuaSandbox::disarm() {
   lua_sethook(L_, nullptr, 0, 0);
 }
 
-int LuaSandbox::protectedCall(int nargs, int nresults, std::uint64_t quota, std::string_view where,
-                              std::string& error) {
+int LuaSandbox::protectedCall(int nargs, int nresults, std::uint64_t quota, double wallSeconds,
+                              std::string_view where, std::string& error) {
   lua_State* L = L_;
   const int function = lua_gettop(L) - nargs;
   if (!lua_checkstack(L, 2)) {
@@ -270,7 +352,7 @@ int LuaSandbox::protectedCall(int nargs, int nresults, std::uint64_t quota, std:
   }
   lua_pushcfunction(L, messageHandler);
   lua_insert(L, function);
-  arm(quota);
+  arm(quota, wallSeconds);
   const int status = lua_pcall(L, nargs, nresults, function);
   disarm();
   if (status == LUA_OK) {
@@ -298,7 +380,7 @@ void LuaSandbox::runChunk(std::string_view source, const std::string& chunkName,
   if (!lua_checkstack(L, nresults + 4)) throw ScriptError(chunkName + ": Lua stack overflow");
 
   const std::string name = "@" + chunkName;
-  arm(limits_.chunkInstructionQuota);  // the memory cap also bounds what the parser may build
+  arm(limits_.chunkInstructionQuota, limits_.chunkWallSeconds);  // the memory cap also bounds what the parser may build
   const int loaded = luaL_loadbufferx(L, source.data(), source.size(), name.c_str(), "t");
   disarm();
   if (loaded != LUA_OK) {
@@ -317,26 +399,19 @@ void LuaSandbox::runChunk(std::string_view source, const std::string& chunkName,
   if (lua_setupvalue(L, -2, 1) == nullptr) lua_pop(L, 1);
 
   std::string error;
-  if (protectedCall(0, nresults, limits_.chunkInstructionQuota, chunkName, error) != LUA_OK) throw ScriptError(error);
+  if (protectedCall(0, nresults, limits_.chunkInstructionQuota, limits_.chunkWallSeconds, chunkName, error) != LUA_OK)
+    throw ScriptError(error);
 }
 
 void LuaSandbox::runFile(const std::string& path, int nresults) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ScriptError(path + ": cannot open file (" + std::strerror(errno) + ")");
-  std::ostringstream content;
-  content << in.rdbuf();
-  if (in.bad()) throw ScriptError(path + ": cannot read file");
-  std::string source = content.str();
-  if (source.size() > limits_.memoryLimitBytes)
-    throw ScriptError(path + ": file is larger than the memory limit of " + describeBytes(limits_.memoryLimitBytes));
-  skipInterpreterPrefix(source);
-  runChunk(source, path, nresults);
+  runChunk(readScriptText(path, "file", limits_.memoryLimitBytes, "memory limit"), path, nresults);
 }
 
 int LuaSandbox::call(int nargs, int nresults, std::string_view where) {
   const int base = lua_gettop(L_) - nargs - 1;
   std::string error;
-  if (protectedCall(nargs, nresults, limits_.callInstructionQuota, where, error) != LUA_OK) throw ScriptError(error);
+  if (protectedCall(nargs, nresults, limits_.callInstructionQuota, limits_.callWallSeconds, where, error) != LUA_OK)
+    throw ScriptError(error);
   return lua_gettop(L_) - base;
 }
 

@@ -8,6 +8,7 @@
 // functions this class installs (hook, print, setmetatable, message handler)
 // hold no C++ objects while they may raise.
 
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -48,6 +49,8 @@ class LuaSandbox {
   // services that add globals or load further chunks into the same sandbox.
   void pushEnvironment() const;
   const SandboxLimits& limits() const { return limits_; }
+  // The sandbox that owns `L` (C functions installed in it find it so).
+  static LuaSandbox& of(lua_State* L);
   std::size_t memoryInUse() const { return bytesInUse_; }
   // Instructions counted during the last protected call (in units of the
   // hook interval, so a multiple of it).
@@ -56,13 +59,13 @@ class LuaSandbox {
  private:
   static void* allocate(void* self, void* block, std::size_t oldSize, std::size_t newSize);
   static void countHook(lua_State* L, lua_Debug* ar);
-  static LuaSandbox& of(lua_State* L);
 
   void buildEnvironment();
   // Runs the function below nargs arguments with the limits armed; on failure
   // returns the complete message (status != LUA_OK) and clears the stack back.
-  int protectedCall(int nargs, int nresults, std::uint64_t quota, std::string_view where, std::string& error);
-  void arm(std::uint64_t quota);
+  int protectedCall(int nargs, int nresults, std::uint64_t quota, double wallSeconds, std::string_view where,
+                    std::string& error);
+  void arm(std::uint64_t quota, double wallSeconds);
   void disarm();
 
   SandboxLimits limits_;
@@ -77,6 +80,8 @@ class LuaSandbox {
 
   std::uint64_t instructionBudget_ = 0;
   std::uint64_t instructionsUsed_ = 0;
+  std::chrono::steady_clock::time_point deadline_;
+  double wallSeconds_ = 0.0;
 };
 
 }  // namespace hemiroll::script

@@ -17,6 +17,15 @@ struct SandboxLimits {
   std::uint64_t callInstructionQuota = 1'000'000;
   // All memory the Lua state may hold while a script runs [bytes].
   std::size_t memoryLimitBytes = std::size_t{64} << 20;
+  // Wall-clock time for a chunk and for one call [s]: a second guard behind
+  // the instruction quotas (50x what the quotas take on a desktop core).
+  double chunkWallSeconds = 10.0;
+  double callWallSeconds = 2.0;
+  // The string library's pattern functions (find, match, gmatch, gsub) may
+  // backtrack for as long as they like inside C, where no hook runs: a
+  // pattern whose worst case on its subject exceeds this many matcher steps
+  // is refused before it runs (LuaPatternBound.h).
+  double patternStepBound = 2e8;
 };
 
 }  // namespace hemiroll::script

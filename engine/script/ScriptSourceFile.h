@@ -5,14 +5,23 @@
 // protocols, sweep specs, scenarios) through readScriptText; LuaSandbox's
 // runFile (bots) through skipInterpreterPrefix.
 
+#include <cstdint>
 #include <string>
 
 namespace hemiroll::script {
 
+// The most any Lua file hemiroll reads may hold (levels, bots, protocols,
+// sweep specs, scenarios are kilobytes): checked before a byte is read, so
+// that a huge or endless file (/dev/zero, a 3 GB sparse file) costs nothing.
+inline constexpr std::uintmax_t kMaxScriptFileBytes = std::uintmax_t{4} << 20;
+
 // The file's text as above. Throws ScriptError "path:1: ..." when it is
-// missing, not a regular file or unreadable; `what` names the kind of file
-// in those messages ("level file").
-std::string readScriptText(const std::string& path, const char* what);
+// missing, not a regular file (a FIFO would block the open), larger than
+// min(maxBytes, kMaxScriptFileBytes) or unreadable; `what` names the kind of
+// file in those messages ("level file"), `limitName` the limit maxBytes is
+// ("the memory limit").
+std::string readScriptText(const std::string& path, const char* what, std::uintmax_t maxBytes = kMaxScriptFileBytes,
+                           const char* limitName = "4 MiB limit of a Lua file");
 
 // Skips the byte-order mark and blanks the '#' line of `text`, in place.
 void skipInterpreterPrefix(std::string& text);

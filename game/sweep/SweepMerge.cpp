@@ -7,6 +7,7 @@
 #include "engine/record/CsvRowFormat.h"
 #include "engine/record/DurableFile.h"
 #include "engine/record/RecordError.h"
+#include "engine/script/SweepDef.h"
 #include "game/sweep/SweepError.h"
 #include "game/sweep/SweepTable.h"
 
@@ -95,6 +96,15 @@ MergedSweep mergeSweepParts(const std::vector<fs::path>& dirs) {
                parts.front().manifestPath.string() + " by " + first.program + "; merge parts of one build only");
   }
 
+  // points_total is not covered by the spec hash: a forged or damaged one
+  // must be refused before it sizes anything, and every part must agree.
+  if (first.pointsTotal < 1 || first.pointsTotal > script::kMaxSweepPoints)
+    badInput(parts.front().manifestPath.string() + " says points_total = " + std::to_string(first.pointsTotal) +
+             "; a sweep has 1 to " + std::to_string(script::kMaxSweepPoints) + " points");
+  for (const Part& p : parts)
+    if (p.manifest.pointsTotal != first.pointsTotal)
+      badInput(p.manifestPath.string() + " says points_total = " + std::to_string(p.manifest.pointsTotal) + ", " +
+               parts.front().manifestPath.string() + " " + std::to_string(first.pointsTotal));
   std::vector<int> owner(static_cast<std::size_t>(first.pointsTotal), -1);
   std::vector<const std::vector<std::string>*> rows(owner.size(), nullptr);
   const std::size_t point = sweepColumn("point");

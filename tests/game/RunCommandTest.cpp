@@ -206,7 +206,7 @@ TEST(RunCommand, MissingFilesExitTwo) {
   EXPECT_THAT(r.err, HasSubstr("/nonexistent/level.lua"));  // the wording is the level loader's
   r = hemiroll({"run", dir.write("quick.lua", kQuickLevel), "--bot", "/nonexistent/bot.lua"});
   EXPECT_EQ(r.exitCode, 2);
-  EXPECT_THAT(r.err, HasSubstr("bot.lua: cannot open file"));
+  EXPECT_THAT(r.err, HasSubstr("bot.lua:1: no such file"));
 }
 
 TEST(RunCommand, WrongFlagsExitTwoWithUsage) {

@@ -100,5 +100,32 @@ TEST_F(SweepMergeTest, RefusesAPartWhoseRowsDisagreeWithItsManifest) {
   EXPECT_THAT(refusal({at("parts")}), HasSubstr("part-1-of-3.csv holds 2 rows; its manifest says 3"));
 }
 
+// points_total is not covered by the spec hash. A part forged to be
+// consistent with itself (shard 0 of 1e14, its 9 rows renumbered to match)
+// once made the merge allocate 8e14 entries and abort (issue 19); it is
+// refused before anything is sized.
+TEST_F(SweepMergeTest, RefusesAPointsTotalNoSweepCanHave) {
+  const long long step = 100'000'000'000'000;
+  std::string manifest = TempDirectory::read(at("whole") / "sweep.json");
+  const auto replaceValue = [&](const std::string& key, const std::string& value) {
+    const std::size_t at = manifest.find(key);
+    ASSERT_NE(at, std::string::npos) << key;
+    const std::size_t start = manifest.find(':', at) + 2, end = manifest.find_first_of(",\n}", start);
+    manifest.replace(start, end - start, value);
+  };
+  replaceValue("\"points_total\"", std::to_string(8 * step + 1));
+  replaceValue("\"count\": 1", std::to_string(step));  // the shard's count
+  replaceValue("\"step\"", std::to_string(step));
+  dir_.write("whole/sweep.json", manifest);
+  // The rows' point numbers as that shard would have them: 0, step, 2 step, ...
+  std::string csv = TempDirectory::read(at("whole") / "sweep.csv");
+  std::string forged = csv.substr(0, csv.find('\n') + 1);
+  long long j = 0;
+  for (std::size_t line = forged.size(); line < csv.size(); line = csv.find('\n', line) + 1, ++j)
+    forged += std::to_string(j * step) + csv.substr(csv.find(',', line), csv.find('\n', line) - csv.find(',', line) + 1);
+  dir_.write("whole/sweep.csv", forged);
+  EXPECT_THAT(refusal({at("whole")}), HasSubstr("says points_total = 800000000000001; a sweep has 1 to 1000000 points"));
+}
+
 }  // namespace
 }  // namespace hemiroll::game

@@ -160,6 +160,44 @@ TEST(LuaSandbox, QuotaCannotBeSwallowedByPcall) {
   EXPECT_THAT(message, HasSubstr("instruction quota"));
 }
 
+TEST(LuaSandbox, QuotaCannotBeEscapedThroughXpcallsHandler) {
+  // Lua runs a message handler where the error is raised; a quota error is
+  // raised in the count hook, with hooks off, so a looping handler used to
+  // spin for ever (issue 19). The sandbox's xpcall runs it after unwinding.
+  SandboxLimits limits;
+  limits.chunkInstructionQuota = 100'000;
+  EXPECT_THAT(runFresh("xpcall(function() while true do end end, function() while true do end end) return 'escaped'",
+                       limits),
+              HasSubstr("ERROR: t.lua:1: instruction quota of 100000 instructions exceeded"));
+  EXPECT_THAT(runFresh("while true do xpcall(function() while true do end end, function(e) return e end) end", limits),
+              HasSubstr("instruction quota"));
+}
+
+TEST(LuaSandbox, XpcallStillHandsTheErrorToItsHandlerAndPassesArguments) {
+  EXPECT_EQ(runFresh("local ok, v = xpcall(function() error('boom', 0) end, function(e) return 'handled ' .. e end)\n"
+                     "return tostring(ok) .. ' ' .. v"),
+            "false handled boom");
+  EXPECT_EQ(runFresh("local ok, a, b = xpcall(function(x, y) return x + y, 'two' end, error, 1, 2)\n"
+                     "return tostring(ok) .. ' ' .. a .. ' ' .. b"),
+            "true 3 two");
+  EXPECT_THAT(runFresh("xpcall(function() end)"), HasSubstr("bad argument #2 to 'xpcall'"));
+}
+
+TEST(LuaSandbox, PathologicalPatternsAreRefusedBeforeTheyRun) {
+  // .-.-.-.-.-b on 100k characters backtracks for minutes inside C, where
+  // no hook runs; the bound refuses it at once, on every way in.
+  const std::string subject = "local s = string.rep('a', 100000)\n";
+  for (const char* call : {"s:find('.-.-.-.-.-b')", "string.find(s, '.-.-.-.-.-b')", "s:match('.-.-.-.-.-b')",
+                           "s:gsub('.-.-.-.-.-b', '')", "for w in s:gmatch('.-.-.-.-.-b') do end"})
+    EXPECT_THAT(runFresh(subject + call), HasSubstr("t.lua:2: string.")) << call;
+  EXPECT_THAT(runFresh(subject + "s:find('.-.-.-.-.-b')"),
+              HasSubstr("the pattern has 5 repeated items and the subject 100000 characters"));
+  // Plain finds, anchored and everyday patterns run as before.
+  EXPECT_EQ(runFresh(subject + "return tostring(s:find('b', 1, true))"), "nil");
+  EXPECT_EQ(runFresh("return (('key = value'):match('^(%w+)%s*=%s*(.-)$'))"), "key");
+  EXPECT_EQ(runFresh("return (string.gsub('a,b,,c', ',+', ';'))"), "a;b;c");
+}
+
 TEST(LuaSandbox, QuotaAllowsWorkWithinIt) {
   SandboxLimits limits;
   limits.chunkInstructionQuota = 1'000'000;

@@ -3,8 +3,12 @@
 
 #include "engine/script/ScriptSourceFile.h"
 
+#include <sys/stat.h>
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+
+#include <filesystem>
 
 #include "engine/script/ScriptError.h"
 #include "tests/support/TempDirectory.h"
@@ -33,6 +37,38 @@ TEST(ScriptSourceFile, MissingOrNotAFileIsLineOne) {
     FAIL();
   } catch (const ScriptError& e) {
     EXPECT_THAT(e.what(), ::testing::EndsWith(":1: not a regular file"));
+  }
+}
+
+// Refused before a byte is read: a FIFO would block the open for ever, and
+// /dev/zero or a 3 GB sparse file would be read whole (issue 19).
+TEST(ScriptSourceFile, FifosDevicesAndHugeFilesAreRefusedUnread) {
+  test::TempDirectory dir;
+  const std::string fifo = (dir.path() / "fifo.lua").string();
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  for (const std::string& path : {fifo, std::string("/dev/zero")}) {
+    try {
+      readScriptText(path, "bot file");
+      FAIL() << path;
+    } catch (const ScriptError& e) {
+      EXPECT_THAT(e.what(), ::testing::EndsWith(":1: not a regular file")) << path;
+    }
+  }
+  const std::string huge = (dir.path() / "huge.lua").string();
+  std::filesystem::resize_file(dir.write("huge.lua", ""), std::uintmax_t{3} << 30);  // sparse: no disk used
+  try {
+    readScriptText(huge, "level file");
+    FAIL();
+  } catch (const ScriptError& e) {
+    EXPECT_THAT(e.what(), ::testing::EndsWith("huge.lua:1: file is larger than the 4 MiB limit of a Lua file"));
+  }
+  // Under a smaller limit of the caller's, that limit is named.
+  const std::string five = dir.write("five.lua", "return {}   ");
+  try {
+    readScriptText(five, "level file", 5, "memory limit");
+    FAIL();
+  } catch (const ScriptError& e) {
+    EXPECT_THAT(e.what(), ::testing::EndsWith("five.lua:1: file is larger than the memory limit"));
   }
 }
 
