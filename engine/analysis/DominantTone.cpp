@@ -24,11 +24,40 @@ double power(std::span<const std::complex<double>> tapered, double f, double dt)
   return std::norm(sum);
 }
 
+// Averages of consecutive blocks of k samples (the last, shorter block
+// dropped): a boxcar low-pass and resampling in one.
+std::vector<std::complex<double>> blockAverages(std::span<const std::complex<double>> signal, std::size_t k) {
+  std::vector<std::complex<double>> out(signal.size() / k);
+  for (std::size_t b = 0; b < out.size(); ++b) {
+    std::complex<double> sum(0.0, 0.0);
+    for (std::size_t i = 0; i < k; ++i) sum += signal[b * k + i];
+    out[b] = sum / static_cast<double>(k);
+  }
+  return out;
+}
+
+// The block length for kMaxToneWork (1: none needed).
+std::size_t blockLength(std::size_t n, double dt, const ToneSearch& search) {
+  const double duration = dt * static_cast<double>(n);
+  const double band = std::min(search.maxFrequency, 0.5 / dt) - std::max(search.minFrequency, 0.0);
+  const double frequencies = band * duration * std::max(search.oversampling, 1) * (search.bothSigns ? 2.0 : 1.0);
+  if (!(frequencies * static_cast<double>(n) > kMaxToneWork)) return 1;
+  const auto byWork = static_cast<std::size_t>(std::ceil(frequencies * static_cast<double>(n) / kMaxToneWork));
+  // The band's top stays below a quarter of the averaged sampling rate.
+  const auto byBand = static_cast<std::size_t>(std::floor(1.0 / (4.0 * search.maxFrequency * dt)));
+  return std::max<std::size_t>(1, std::min(byWork, byBand));
+}
+
 }  // namespace
 
 Tone dominantTone(std::span<const std::complex<double>> signal, double dt, const ToneSearch& search) {
+  if (const std::size_t k = blockLength(signal.size(), dt, search); k > 1) {
+    const std::vector<std::complex<double>> averaged = blockAverages(signal, k);
+    return dominantTone(averaged, dt * static_cast<double>(k), search);
+  }
   Tone tone;
   const std::size_t n = signal.size();
+  tone.samplesUsed = n;
   if (n < 8 || !(dt > 0.0)) return tone;
   const double duration = dt * static_cast<double>(n);
   const double fMax = std::min(search.maxFrequency, 0.5 / dt);

@@ -38,7 +38,15 @@ struct Tone {
   double frequency = 0.0;      // [Hz], signed
   double amplitude = 0.0;      // of the complex exponential (bothSigns), or of the cosine (real signals) [signal units]
   double share = 0.0;          // [0, 1] the tone's power over the signal's mean power about its mean
+  std::size_t samplesUsed = 0; // the signal's length after block averaging (kMaxToneWork)
 };
+
+// The periodogram costs (grid frequencies) x (samples), and both grow with
+// the recording's length: a long, finely sampled signal (100k rows) is first
+// averaged over blocks of k samples, the smallest k that brings the cost
+// under this many phasor steps and keeps the band below a quarter of the new
+// sampling rate. Shorter signals are used as they are.
+inline constexpr double kMaxToneWork = 5e7;
 
 Tone dominantTone(std::span<const std::complex<double>> signal, double dt, const ToneSearch& search);
 

@@ -2,6 +2,7 @@
 
 #include <lua.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -13,6 +14,7 @@ namespace hemiroll::script {
 namespace {
 
 constexpr std::size_t kMaxPendingMessages = 256;  // a runaway on_update cannot fill memory
+constexpr std::size_t kMaxMessageBytes = 512;     // a HUD line, not a file: longer ones are cut
 
 // Reads argument `arg` as one number or a list of `size` numbers into out.
 // Plain C: may raise.
@@ -51,7 +53,7 @@ struct LevelScriptFunctions {
 
   static bool addMessage(LevelScript& self, const char* text, std::size_t length, double seconds) noexcept try {
     if (self.messages_.size() < kMaxPendingMessages)
-      self.messages_.push_back({self.activeTime_, std::string(text, length), seconds});
+      self.messages_.push_back({self.activeTime_, std::string(text, std::min(length, kMaxMessageBytes)), seconds});
     return true;
   } catch (...) {
     return false;

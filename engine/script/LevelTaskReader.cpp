@@ -117,6 +117,9 @@ void readForbidden(const LuaTableReader& task, std::vector<ZoneDef>& zones) {
   const auto list = task.table("forbidden");
   if (!list) return;
   const int count = list->entryCount();
+  // Every zone is tested every tick: a cap keeps a trial's cost bounded.
+  if (count > kMaxForbiddenZones)
+    list->fail("", std::to_string(count) + " zones; a level may have at most " + std::to_string(kMaxForbiddenZones));
   for (int i = 1; i <= count; ++i)
     if (list->typeAt(i) != LUA_TTABLE) list->fail(positionKey(i), "expected a zone table {shape = ...}");
   if (static_cast<int>(lua_rawlen(list->state(), list->index())) != count)
@@ -131,6 +134,8 @@ void readStages(const LuaTableReader& task, double defaultHold, std::vector<Stag
   const auto list = task.table("stages");
   const int count = list->entryCount();
   if (count == 0) list->fail("", "empty; give at least one stage {targets = {...}}");
+  if (count > kMaxStages)
+    list->fail("", std::to_string(count) + " stages; a level may have at most " + std::to_string(kMaxStages));
   if (static_cast<int>(lua_rawlen(list->state(), list->index())) != count)
     list->fail("", "expected a list of stages {targets = ...}, {targets = ...}");
   for (int i = 1; i <= count; ++i) {
@@ -167,6 +172,10 @@ void readLevelTask(const LuaTableReader& top, TaskDef& task) {
     readStages(*table, hold, task.stages);
   }
   task.timeLimit = readPositive(*table, "time_limit", "s").value_or(task.timeLimit);
+  // Longer would be no trial anyone sits through, and its tick count must
+  // stay far inside 64 bits.
+  if (task.timeLimit > kMaxTimeLimit)
+    table->fail("time_limit", "must be at most " + std::to_string(static_cast<int>(kMaxTimeLimit)) + " s (a day)");
   readFailure(*table, task.failure);
   readForbidden(*table, task.forbidden);
 }

@@ -27,12 +27,16 @@ constexpr int kHookInterval = 1000;
 // print() writes to stderr: stdout may carry the CSV of a run.
 int sandboxPrint(lua_State* L) {
   const int n = lua_gettop(L);
-  for (int i = 1; i <= n; ++i) {
+  luaL_checkstack(L, n, "too many arguments to print");
+  for (int i = 1; i <= n; ++i) luaL_tolstring(L, i, nullptr);  // may run __tostring: before anything is written
+  std::size_t total = 1;
+  for (int i = n + 1; i <= 2 * n; ++i) total += lua_rawlen(L, i) + (i > n + 1 ? 1 : 0);
+  if (!LuaSandbox::of(L).spendPrintBudget(total)) return 0;
+  for (int i = n + 1; i <= 2 * n; ++i) {
     std::size_t length = 0;
-    const char* text = luaL_tolstring(L, i, &length);
-    if (i > 1) std::fputc('\t', stderr);
+    const char* text = lua_tolstring(L, i, &length);
+    if (i > n + 1) std::fputc('\t', stderr);
     std::fwrite(text, 1, length, stderr);
-    lua_pop(L, 1);
   }
   std::fputc('\n', stderr);
   return 0;
@@ -324,6 +328,18 @@ void LuaSandbox::countHook(lua_State* L, lua_Debug* ar) {
   lua_pushfstring(L, "%s:%d: instruction quota of %I instructions exceeded (endless loop?)", ar->short_src,
                   ar->currentline, static_cast<lua_Integer>(self.instructionBudget_));
   lua_error(L);
+}
+
+bool LuaSandbox::spendPrintBudget(std::size_t bytes) {
+  if (!printCut_ && bytesPrinted_ + bytes <= limits_.printBudgetBytes) {
+    bytesPrinted_ += bytes;
+    return true;
+  }
+  if (!printCut_)
+    std::fprintf(stderr, "(print: the script's output budget of %zu bytes is spent; further prints are dropped)\n",
+                 limits_.printBudgetBytes);
+  printCut_ = true;
+  return false;
 }
 
 void LuaSandbox::arm(std::uint64_t quota, double wallSeconds) {

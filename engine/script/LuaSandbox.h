@@ -49,6 +49,9 @@ class LuaSandbox {
   // services that add globals or load further chunks into the same sandbox.
   void pushEnvironment() const;
   const SandboxLimits& limits() const { return limits_; }
+  // print()'s output budget: true while `bytes` more may be written (and
+  // counts them); the first refusal is told once on stderr.
+  bool spendPrintBudget(std::size_t bytes);
   // The sandbox that owns `L` (C functions installed in it find it so).
   static LuaSandbox& of(lua_State* L);
   std::size_t memoryInUse() const { return bytesInUse_; }
@@ -81,6 +84,8 @@ class LuaSandbox {
   std::uint64_t instructionBudget_ = 0;
   std::uint64_t instructionsUsed_ = 0;
   std::chrono::steady_clock::time_point deadline_;
+  std::size_t bytesPrinted_ = 0;
+  bool printCut_ = false;
   double wallSeconds_ = 0.0;
 };
 

@@ -26,6 +26,10 @@ struct SandboxLimits {
   // pattern whose worst case on its subject exceeds this many matcher steps
   // is refused before it runs (LuaPatternBound.h).
   double patternStepBound = 2e8;
+  // What print() may write to stderr over the sandbox's life [bytes]; then
+  // one line says so and the rest is dropped (a bot printing every tick
+  // wrote 19.8 GB in a minute).
+  std::size_t printBudgetBytes = std::size_t{1} << 20;
 };
 
 }  // namespace hemiroll::script

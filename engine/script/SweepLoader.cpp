@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <set>
 
 #include "engine/physics/IntegratorRegistry.h"
 #include "engine/script/DataFileLoader.h"
@@ -132,12 +133,15 @@ int listLength(const LuaTableReader& list, const std::string& what) {
 
 void readValues(const LuaTableReader& values, SweepAxis& axis) {
   const int count = listLength(values, "value");
+  // An axis longer than a range may be is refused before it is read.
+  if (count > kMaxRangeCount)
+    values.fail("", std::to_string(count) + " values; an axis may have at most " + std::to_string(kMaxRangeCount));
+  std::set<double> seen;  // the repeat check in n log n
   for (int i = 1; i <= count; ++i) {
     const auto v = values.numberAt(i);
     if (!v) values.fail(positionKey(i), "expected a number");
     checkValue(values, positionKey(i), axis.param, *v);
-    if (std::find(axis.values.begin(), axis.values.end(), *v) != axis.values.end())
-      values.fail(positionKey(i), "repeats an earlier value; each value once");
+    if (!seen.insert(*v).second) values.fail(positionKey(i), "repeats an earlier value; each value once");
     axis.values.push_back(*v);
   }
 }

@@ -76,6 +76,13 @@ struct FailureDef {
   // A non-finite state always fails ("state not finite"): nothing can follow it.
 };
 
+// What a level may ask for at most (the loader refuses more): every stage
+// and zone is looked at every tick, and the tick count of the time limit
+// must fit 64 bits with room to spare.
+inline constexpr int kMaxStages = 100;
+inline constexpr int kMaxForbiddenZones = 100;
+inline constexpr double kMaxTimeLimit = 86400.0;  // [s]
+
 struct TaskDef {
   std::vector<StageDef> stages;        // empty = a watch-only level (below)
   double timeLimit = 240.0;            // [s], > 0; the paper's 4 min by default

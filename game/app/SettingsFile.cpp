@@ -138,13 +138,20 @@ std::filesystem::path configDirectory() {
   return std::filesystem::path(".hemiroll");
 }
 
+// Far more than any settings file holds (a few hundred bytes).
+constexpr std::uintmax_t kMaxSettingsFileBytes = std::uintmax_t{1} << 20;
+
 LoadedSettings loadSettings(const std::filesystem::path& file) {
   LoadedSettings out;
   std::error_code ec;
   if (!std::filesystem::exists(file, ec)) return out;
   Json json;
+  // Settings are a few hundred bytes; a file far larger (or not a file) is
+  // not read at all, so that it cannot cost gigabytes of parsing.
+  const std::uintmax_t size = std::filesystem::file_size(file, ec);
+  const bool readable = !ec && std::filesystem::is_regular_file(file, ec) && size <= kMaxSettingsFileBytes;
   try {
-    json = Json::parse(record::readWholeFile(file));
+    if (readable) json = Json::parse(record::readWholeFile(file));
   } catch (const std::exception& e) {
     json = nullptr;
   }
@@ -152,7 +159,8 @@ LoadedSettings loadSettings(const std::filesystem::path& file) {
     // Keep it for the player to look at; start from the defaults.
     const std::filesystem::path aside = file.string() + ".unreadable-" + std::to_string(std::time(nullptr));
     std::filesystem::rename(file, aside, ec);
-    out.notes.push_back("the settings file " + file.string() + " is not a JSON object; " +
+    out.notes.push_back("the settings file " + file.string() +
+                        (readable ? " is not a JSON object; " : " is not a file of at most 1 MiB; ") +
                         (ec ? std::string("it was left in place") : "moved aside to " + aside.string()) +
                         " and the defaults are used");
     return out;

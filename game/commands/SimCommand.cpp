@@ -89,6 +89,15 @@ int runSimCommand(const std::vector<std::string>& args) {
     std::cerr << "hemiroll sim: duration / dt asks for more than 1e10 steps; check --dt\n";
     return kExitUsage;
   }
+  // Rows the run would write (a grid point every `every` steps, the first
+  // and the last): told before a byte is written, not found on a full disk.
+  const double rows = std::floor(settings.duration / settings.timeStep / static_cast<double>(settings.every)) + 2.0;
+  if (rows > static_cast<double>(options.maxRows)) {
+    std::cerr << "hemiroll sim: the run would write about " << static_cast<long long>(rows) << " rows (about "
+              << std::lround(rows * 200.0 / 1e9) << " GB of CSV), more than --max-rows " << options.maxRows
+              << "; thin it with --every or raise --max-rows\n";
+    return kExitUsage;
+  }
   if (settings.orientation == physics::OrientationForm::Quaternion && scenario.drive.kind == script::DriveKind::Rose) {
     std::cerr << "hemiroll sim: --orientation quaternion applies to free and proxy drives; " << options.scenarioPath
               << " uses the rose drive (the 8-state prescribed model)\n";

@@ -20,7 +20,7 @@ std::string integratorNames() {
 
 const char* simUsage() {
   return "usage: hemiroll sim SCENARIO.lua [--duration S] [--dt S] [--integrator NAME] [--tol TOL] [--every N]\n"
-         "                    [--orientation angles|quaternion] [--out FILE.csv]\n"
+         "                    [--orientation angles|quaternion] [--out FILE.csv] [--max-rows N]\n"
          "       hemiroll sim --integrator list\n"
          "\n"
          "Runs the physics of a scenario file (docs/SCENARIOS.md) headless and writes the\n"
@@ -42,6 +42,8 @@ const char* simUsage() {
          "  --every N          write a row every N steps (default 1); the first and last\n"
          "                     states are always written\n"
          "  --out FILE.csv     write the CSV to FILE instead of stdout\n"
+         "  --max-rows N       refuse, before writing, a run that would write more rows\n"
+         "                     (default 10000000, about 2 GB)\n"
          "  --help             print this help\n"
          "\n"
          "Exit codes: 0 done (also when a domain event stops the run early),\n"
@@ -59,6 +61,7 @@ SimOptionsResult parseSimOptions(const std::vector<std::string>& args) {
       .option("--dt", cli::positiveNumber(o.timeStep, "a positive number of seconds"))
       .option("--tol", cli::positiveNumber(o.tolerance, "a positive number"))
       .option("--every", cli::integerIn(o.every, 1, std::numeric_limits<long long>::max(), "a whole number >= 1"))
+      .option("--max-rows", cli::integerIn(o.maxRows, 2, std::numeric_limits<long long>::max(), "a whole number >= 2"))
       .option("--out", cli::text(o.outPath, "a file name"))
       .option("--orientation",
               [&](const std::string& flag, const std::string& value) {

@@ -15,6 +15,7 @@ struct SimOptions {
   std::optional<double> tolerance;         // --tol: adaptive integrators only; else the scenario's, else kDefaultTolerance
   std::optional<std::string> orientation;  // --orientation angles|quaternion; else the scenario's, else angles
   long long every = 1;                     // --every: a row every N steps
+  long long maxRows = kDefaultMaxRows;     // --max-rows: refuse a run that would write more
   std::optional<std::string> outPath;      // --out; stdout when absent
   bool help = false;                       // --help
   bool listIntegrators = false;            // --integrator list
@@ -23,6 +24,8 @@ struct SimOptions {
   static constexpr double kDefaultTimeStep = 1e-3;  // [s], the paper's RK4 step
   static constexpr const char* kDefaultIntegrator = "rk4";
   static constexpr double kDefaultTolerance = 1e-8;  // [-], AdaptiveIntegrator<N>::kDefaultTolerance
+  // About 2 GB of CSV: a run asking for more is told before it writes a row.
+  static constexpr long long kDefaultMaxRows = 10'000'000;
 };
 
 struct SimOptionsResult {

@@ -166,6 +166,25 @@ TEST(SimCommand, BytecodeScenarioIsRefused) {
   EXPECT_THAT(r.err, ::testing::ContainsRegex("compiled\\.lua:[0-9]+: precompiled \\(binary\\) Lua chunks are refused"));
 }
 
+// `--duration 3600 --dt 1e-6` once wrote gigabytes without a word (issue
+// 19): the row count is told, and refused, before anything is written.
+TEST(SimCommand, ARunWithMoreRowsThanAllowedIsRefusedBeforeWriting) {
+  const TempDirectory dir;
+  const std::string out = (dir.path() / "big.csv").string();
+  ProcessResult r = hemiroll({"sim", HEMIROLL_SOURCE_DIR "/levels/scenarios/free_spin.lua", "--duration", "3600", "--dt",
+                              "1e-6", "--out", out});
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_THAT(r.err, HasSubstr("would write about 3600000002 rows"));
+  EXPECT_FALSE(std::filesystem::exists(out));
+  // Thinned below the cap, or with the cap raised, it is allowed (checked on a short run).
+  r = hemiroll({"sim", HEMIROLL_SOURCE_DIR "/levels/scenarios/free_spin.lua", "--duration", "0.1", "--max-rows", "50"});
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_THAT(r.err, HasSubstr("would write about 102 rows"));
+  r = hemiroll({"sim", HEMIROLL_SOURCE_DIR "/levels/scenarios/free_spin.lua", "--duration", "0.1", "--max-rows", "50",
+                "--every", "10"});
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+}
+
 TEST(SimCommand, MissingFileExitsTwo) {
   const ProcessResult r = hemiroll({"sim", "/nonexistent/nowhere.lua"});
   EXPECT_EQ(r.exitCode, 2);

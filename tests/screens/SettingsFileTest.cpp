@@ -126,6 +126,19 @@ TEST(SettingsFileTest, AFileThatIsNotJsonIsMovedAsideNotDeleted) {
   EXPECT_EQ(settingsJson(loaded.settings), settingsJson(Settings{}));
 }
 
+TEST(SettingsFileTest, AHugeFileIsMovedAsideUnread) {
+  // A 300 MB settings.json once took 1.25 GB to parse (issue 19). A sparse
+  // 300 MB file here: were it read, the test would read 300 MB of zeros.
+  test::TempDirectory dir;
+  const std::string file = dir.write("settings.json", "{}");
+  std::filesystem::resize_file(file, std::uintmax_t{300} << 20);
+  const LoadedSettings loaded = loadSettings(file);
+  ASSERT_EQ(loaded.notes.size(), 1u);
+  EXPECT_THAT(loaded.notes[0], HasSubstr("is not a file of at most 1 MiB; moved aside"));
+  EXPECT_FALSE(std::filesystem::exists(file));
+  EXPECT_EQ(settingsJson(loaded.settings), settingsJson(Settings{}));
+}
+
 TEST(SettingsFileTest, AnUnwritableDirectoryIsASentenceNotACrash) {
   test::TempDirectory dir;
   const std::string blocker = dir.write("file", "x");  // a file where a directory would go

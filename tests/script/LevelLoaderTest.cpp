@@ -22,6 +22,21 @@ std::string errorOf(const std::string& source) { return test::messageOf<ScriptEr
 
 const char* kMinimal = "return { name = 'x' }";
 
+// Caps before work (issue 19): a time limit whose tick count overflows,
+// and stage or zone lists that make every tick slow, are refused by name.
+TEST(LevelLoader, TimeLimitStagesAndZonesHaveCaps) {
+  EXPECT_THAT(errorOf("return { name = 'x', task = { targets = { x_p = { value = 0, tol = 1 } }, time_limit = 2e16 } }"),
+              HasSubstr("task.time_limit: must be at most 86400 s (a day)"));
+  EXPECT_THAT(errorOf("local z = {} for i = 1, 101 do z[i] = { shape = 'circle', centre = {1, 1}, radius = 0.01 } end\n"
+                      "return { name = 'x', task = { targets = { x_p = { value = 0, tol = 1 } }, forbidden = z } }"),
+              HasSubstr("task.forbidden: 101 zones; a level may have at most 100"));
+  EXPECT_THAT(errorOf("local st = {} for i = 1, 101 do st[i] = { targets = { x_p = { value = 0, tol = 1 } } } end\n"
+                      "return { name = 'x', task = { stages = st } }"),
+              HasSubstr("task.stages: 101 stages; a level may have at most 100"));
+  // At the caps, they load.
+  EXPECT_NO_THROW(load("return { name = 'x', task = { targets = { x_p = { value = 0, tol = 1 } }, time_limit = 86400 } }"));
+}
+
 TEST(LevelLoader, MinimalLevelHasThePapersDefaults) {
   const LevelDef def = load(kMinimal).def;
   const physics::HemisphereParams paper;

@@ -70,6 +70,19 @@ TEST(LevelScript, StartSuccessAndFailEachRunOnce) {
   EXPECT_TRUE(level.script->takeMessages().empty());
 }
 
+TEST(LevelScript, AMessageIsAHudLineNotAFile) {
+  // 256 pending messages of any length once held gigabytes (issue 19): each
+  // is cut to 512 bytes.
+  LoadedLevel level = load(R"(
+    return { name = 'm', task = { targets = { x_p = { value = 0, tol = 0.001 } }, hold = 0.5 },
+      callbacks = { on_start = function(s) hemiroll.message(string.rep('x', 100000)) end } })");
+  TaskJudge judge(level.def.task);
+  run(level, judge, 0.1);
+  const auto messages = level.script->takeMessages();
+  ASSERT_EQ(messages.size(), 1u);
+  EXPECT_EQ(messages[0].text, std::string(512, 'x'));
+}
+
 TEST(LevelScript, OnFailGetsTheReason) {
   LoadedLevel level = load(std::string("return { name = 'f', ") +
                            "task = { targets = { x_p = { value = 1, tol = 0.001 } }, time_limit = 0.2 }," +

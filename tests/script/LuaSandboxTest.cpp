@@ -198,6 +198,18 @@ TEST(LuaSandbox, PathologicalPatternsAreRefusedBeforeTheyRun) {
   EXPECT_EQ(runFresh("return (string.gsub('a,b,,c', ',+', ';'))"), "a;b;c");
 }
 
+TEST(LuaSandbox, PrintHasAnOutputBudgetToldOnce) {
+  // A bot printing every tick once wrote 19.8 GB in a minute (issue 19).
+  SandboxLimits limits;
+  limits.printBudgetBytes = 100;
+  ::testing::internal::CaptureStderr();
+  EXPECT_EQ(runFresh("for i = 1, 1000 do print(string.rep('p', 39)) end return 'done'", limits), "done");
+  const std::string err = ::testing::internal::GetCapturedStderr();
+  // Two lines of 40 bytes fit in 100; the third does not, and is told once.
+  EXPECT_EQ(err, std::string(39, 'p') + "\n" + std::string(39, 'p') + "\n" +
+                     "(print: the script's output budget of 100 bytes is spent; further prints are dropped)\n");
+}
+
 TEST(LuaSandbox, QuotaAllowsWorkWithinIt) {
   SandboxLimits limits;
   limits.chunkInstructionQuota = 1'000'000;

@@ -98,6 +98,14 @@ TEST(SweepLoader, ListedValuesMayBeShownOnALogScale) {
               HasSubstr("s.lua:2: axes[1].log: a range says log inside"));
 }
 
+TEST(SweepLoader, AListedAxisHasTheCapOfARange) {
+  // 1,000,001 values once hung in a quadratic repeat check (issue 19).
+  EXPECT_THAT(errorOf("local v = {} for i = 1, 1000001 do v[i] = i end\nreturn { axes = { { param = 'k', values = v } } }"),
+              HasSubstr("axes[1].values: 1000001 values; an axis may have at most 100000"));
+  EXPECT_THAT(errorOf("return { axes = {\n { param = 'k', values = { 1, 2, 1 } } } }"),
+              HasSubstr("axes[1].values[3]: repeats an earlier value; each value once"));
+}
+
 TEST(SweepLoader, ANegativeLogRangeIsGeometricInItsMagnitude) {
   const SweepDef d = load("return { axes = { { param = 'Omega', range = { from = -1, to = -0.01, count = 3, log = true } } } }");
   EXPECT_EQ(d.axes[0].values[0], -1.0);
