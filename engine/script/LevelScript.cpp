@@ -134,6 +134,7 @@ bool LevelScript::call(int functionRef, const std::string& where, const TrialObs
   } catch (const ScriptError& e) {
     activeJudge_ = nullptr;
     scriptError_ = std::string("script error: ") + e.what();
+    if (judge.finished()) endCallbackError_ = scriptError_;  // too late to change the outcome; not to be lost
     judge.finish(TrialOutcome::Failure, scriptError_, obs.time);
     return false;
   }

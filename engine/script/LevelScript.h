@@ -91,6 +91,9 @@ class LevelScript {
   // The last callback error ("script error: file:line: message"), also when
   // it came after the trial had ended (on_success / on_fail); "" = none.
   const std::string& scriptError() const { return scriptError_; }
+  // on_success or on_fail failed after the judge had ended the trial: the
+  // outcome stands, and this says what went wrong ("" when nothing did).
+  const std::string& endCallbackError() const { return endCallbackError_; }
   LuaSandbox& sandbox() { return *sandbox_; }
 
  private:
@@ -113,6 +116,7 @@ class LevelScript {
   bool started_ = false;
   bool endReported_ = false;
   std::string scriptError_;
+  std::string endCallbackError_;
   std::string apiError_;  // a message an API function raises (outlives the C frame)
   long long callbackCalls_ = 0;
   // Valid only while a callback runs (the API functions reach them).

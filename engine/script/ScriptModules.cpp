@@ -2,7 +2,10 @@
 
 #include <sys/stat.h>
 
+#include <climits>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <lua.hpp>
 #include <new>
@@ -67,6 +70,15 @@ int sandboxRequire(lua_State* L) {
   struct stat info;
   if (stat(path, &info) != 0 || !S_ISREG(info.st_mode))
     return luaL_error(L, "require('%s'): no module file %s", name, path);
+  // The file must be inside the scripts folder once links are followed: a
+  // link out of it (to /etc/shadow, say) would be read and its text shown in
+  // the syntax error.
+  char realFile[PATH_MAX], realDirectory[PATH_MAX];
+  if (realpath(path, realFile) == nullptr || realpath(directory, realDirectory) == nullptr)
+    return luaL_error(L, "require('%s'): cannot resolve %s", name, path);
+  const std::size_t directoryLength = std::strlen(realDirectory);
+  if (std::strncmp(realFile, realDirectory, directoryLength) != 0 || realFile[directoryLength] != '/')
+    return luaL_error(L, "require('%s'): %s leads outside the scripts folder (a link?)", name, path);
   const std::size_t size = static_cast<std::size_t>(info.st_size);
   if (size > (std::size_t{16} << 20)) return luaL_error(L, "require('%s'): %s is larger than 16 MiB", name, path);
   char* buffer = static_cast<char*>(lua_newuserdatauv(L, size + 1, 0));  // 4 (may raise: nothing open yet)

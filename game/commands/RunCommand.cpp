@@ -118,6 +118,7 @@ int runRunCommand(const std::vector<std::string>& args) {
     return kExitFailure;
   }
   if (!result.scoreError.empty()) std::cerr << "hemiroll run: " << result.scoreError << "\n";
+  if (!result.endCallbackError.empty()) std::cerr << "hemiroll run: " << result.endCallbackError << "\n";
   if (recording) {
     try {
       recording->finish(result, resultColumns(options, result));

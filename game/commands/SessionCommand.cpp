@@ -85,6 +85,8 @@ TrialResult playNext(ResearchSession& session, const std::string& botPath) {
     throw SessionError(SessionError::Kind::BadInput, trial.levelFile + " (" + trial.trialId + "): " + e.what());
   }
   if (!result.scoreError.empty()) std::cerr << "hemiroll session: " << trial.trialId << ": " << result.scoreError << "\n";
+  if (!result.endCallbackError.empty())
+    std::cerr << "hemiroll session: " << trial.trialId << ": " << result.endCallbackError << "\n";
   session.finishNext(*recording, result);
   return result;
 }

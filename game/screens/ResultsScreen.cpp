@@ -94,6 +94,8 @@ void ResultsScreen::paint() {
     ImGui::Text("score %.1f   medal %s", *result_.score, script::medalName(result_.medal));
   else if (!result_.scoreError.empty())
     ImGui::TextColored(ImVec4(1, 0.5f, 0.4f, 1), "no score: %s", result_.scoreError.c_str());
+  if (!result_.endCallbackError.empty())
+    ImGui::TextColored(ImVec4(1, 0.5f, 0.4f, 1), "the level's end callback failed: %s", result_.endCallbackError.c_str());
   if (newBest_) ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1), "new personal best");
   if (before_.bestTime) ImGui::Text("personal best before: %.2f s", *before_.bestTime);
   if (!stored_) ImGui::TextDisabled("(this trial could not be stored in %s)", host_.scores().file().c_str());

@@ -83,6 +83,7 @@ TrialResult TrialJudge::result(const physics::ForceDrivenState& initial) {
   result.score = score.score;
   result.medal = score.medal;
   result.scoreError = score.error;
+  result.endCallbackError = level_.script->endCallbackError();
   result.finalState = judgedTicks_ == 0 ? initial : view_.state;
   result.maxRenderedForce = maxRenderedForce_;
   result.maxProxyDistance = maxProxyDistance_;

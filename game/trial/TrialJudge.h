@@ -30,6 +30,7 @@ struct TrialResult {
   std::optional<double> score;       // nullopt: no score function, or it failed
   script::Medal medal = script::Medal::None;
   std::string scoreError;            // the score function's failure, if any
+  std::string endCallbackError;      // on_success / on_fail failed after the end, if so
   script::TrialSummary summary;
   physics::ForceDrivenState finalState = physics::ForceDrivenState::Zero();
   double maxRenderedForce = 0.0;     // largest |force| sent to the device [N]

@@ -83,6 +83,18 @@ TEST(LevelScript, AMessageIsAHudLineNotAFile) {
   EXPECT_EQ(messages[0].text, std::string(512, 'x'));
 }
 
+TEST(LevelScript, AnErrorInOnFailIsKeptNotDropped) {
+  // The trial has ended (time limit): the outcome stands, and the error is
+  // there for the caller to report (it was dropped; issue 19).
+  LoadedLevel level = load(std::string("return { name = 'f', ") +
+                           "task = { targets = { x_p = { value = 1, tol = 0.001 } }, time_limit = 0.2 }," +
+                           "callbacks = { on_fail = function(s, reason) error('on_fail broke') end } }");
+  TaskJudge judge(level.def.task);
+  run(level, judge, 1.0);
+  EXPECT_EQ(judge.reason(), trial_reason::kTimeLimit);
+  EXPECT_THAT(level.script->endCallbackError(), ::testing::HasSubstr("on_fail broke"));
+}
+
 TEST(LevelScript, OnFailGetsTheReason) {
   LoadedLevel level = load(std::string("return { name = 'f', ") +
                            "task = { targets = { x_p = { value = 1, tol = 0.001 } }, time_limit = 0.2 }," +

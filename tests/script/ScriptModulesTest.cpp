@@ -16,6 +16,7 @@ namespace hemiroll::script {
 namespace {
 
 using ::testing::HasSubstr;
+using ::testing::Not;
 using ::testing::StartsWith;
 
 class ScriptModules : public ::testing::Test {
@@ -65,6 +66,18 @@ TEST_F(ScriptModules, RefusesEscapesAndBadNames) {
   }
   EXPECT_THAT(run("return require('lib.secret')"), HasSubstr("no module file"));
   EXPECT_THAT(run("return require({})"), HasSubstr("string expected, got table"));
+}
+
+TEST_F(ScriptModules, RefusesALinkOutOfTheScriptsFolder) {
+  // A link inside scripts/ to a file outside it was followed, and the
+  // file's text shown in the syntax error (it read /etc/shadow; issue 19).
+  std::filesystem::create_symlink(dir_.path() / "secret.lua", dir_.path() / "scripts" / "lib" / "link.lua");
+  const std::string result = run("return require('lib.link')");
+  EXPECT_THAT(result, HasSubstr("leads outside the scripts folder"));
+  EXPECT_THAT(result, Not(HasSubstr("outside scripts/'")));  // the secret's text is not shown
+  // A link that stays inside is fine.
+  std::filesystem::create_symlink(dir_.path() / "scripts" / "lib" / "vec.lua", dir_.path() / "scripts" / "lib" / "alias.lua");
+  EXPECT_EQ(run("return require('lib.alias').add(1, 2)"), "3");
 }
 
 TEST_F(ScriptModules, RefusesBytecodeAndKeepsTheSandboxSealed) {
