@@ -146,6 +146,8 @@ void readScene(const LuaTableReader& top, SceneDef& scene) {
   scene.contactTrace = readBool(*table, "contact_trace").value_or(scene.contactTrace);
   scene.recordRate = readPositive(*table, "record_rate", "Hz").value_or(scene.recordRate);
   if (scene.recordRate > 1000.0) table->fail("record_rate", "at most 1000 Hz (the servo rate)");
+  // Slower would be a row every few minutes; 1e-300 overflowed the ticks per row.
+  if (scene.recordRate < 0.1) table->fail("record_rate", "at least 0.1 Hz");
   if (const auto plots = table->table("plots")) {
     const int count = plots->entryCount();
     for (int i = 1; i <= count; ++i) {

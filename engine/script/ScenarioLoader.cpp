@@ -180,7 +180,8 @@ ScenarioDef readScenario(const DataTable& data) {
     top.fail("integrator",
              "unknown integrator '" + *out.integrator + "' (available: " + joinNames(registry.list()) + ")");
   out.tolerance = top.number("tol");
-  if (out.tolerance && !(*out.tolerance > 0.0)) top.fail("tol", "must be a positive number");
+  // Below 1e-15 no double step can meet it (as `sim --tol`).
+  if (out.tolerance && !(*out.tolerance >= 1e-15 && *out.tolerance <= 1.0)) top.fail("tol", "must be in 1e-15 .. 1");
   out.orientation = top.string("orientation");
   physics::OrientationForm form;
   if (out.orientation && !physics::parseOrientationForm(*out.orientation, form))

@@ -113,6 +113,7 @@ void readRun(const LuaTableReader& top, SweepDef& def) {
     top.fail("integrator", "unknown integrator '" + def.integrator + "' (available: " + names + ")");
   }
   def.tolerance = readPositive(top, "tol", "a tolerance").value_or(def.tolerance);
+  if (!(def.tolerance >= 1e-15 && def.tolerance <= 1.0)) top.fail("tol", "must be in 1e-15 .. 1 (no double step meets less)");
 }
 
 // Pushes list[i] and returns its reader; the caller restores the stack.

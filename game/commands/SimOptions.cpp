@@ -31,7 +31,7 @@ const char* simUsage() {
          "  --integrator NAME  integration method (default: the scenario's, else rk4);\n"
          "                     'list' prints the available ones\n"
          "  --tol TOL          adaptive integrators (dopri5, dop853, dop853ld): error\n"
-         "                     tolerance per step, absolute and relative per component\n"
+         "                     tolerance (1e-15 .. 1) per step, absolute and relative per component\n"
          "                     (default: the scenario's 'tol', else 1e-8); they choose\n"
          "                     their own steps and --dt only sets the output grid,\n"
          "                     filled in by dense output\n"
@@ -59,7 +59,9 @@ SimOptionsResult parseSimOptions(const std::vector<std::string>& args) {
       .positional("scenario file", 1, [&](const std::string& path) { o.scenarioPath = path; })
       .option("--duration", cli::positiveNumber(o.duration, "a positive number of seconds"))
       .option("--dt", cli::positiveNumber(o.timeStep, "a positive number of seconds"))
-      .option("--tol", cli::positiveNumber(o.tolerance, "a positive number"))
+      // Below 1e-15 no double step can meet it: the run would only report a
+      // non-finite step (1e-300 did, with exit 0).
+      .option("--tol", cli::numberIn(o.tolerance, 1e-15, 1.0, "a tolerance in 1e-15 .. 1"))
       .option("--every", cli::integerIn(o.every, 1, std::numeric_limits<long long>::max(), "a whole number >= 1"))
       .option("--max-rows", cli::integerIn(o.maxRows, 2, std::numeric_limits<long long>::max(), "a whole number >= 2"))
       .option("--out", cli::text(o.outPath, "a file name"))

@@ -55,6 +55,9 @@ TEST(SimOptions, BadFlagsAreExplained) {
   EXPECT_THAT(parse({"s.lua", "--duration", "inf"}).error, HasSubstr("positive"));
   EXPECT_THAT(parse({"s.lua", "--duration", "nan"}).error, HasSubstr("positive"));
   EXPECT_THAT(parse({"s.lua", "--every", "0"}).error, HasSubstr("--every needs a whole number"));
+  // A tolerance no double step can meet (issue 19: 1e-300 ran and "succeeded").
+  EXPECT_THAT(parse({"s.lua", "--tol", "1e-300"}).error, HasSubstr("--tol needs a tolerance in 1e-15 .. 1"));
+  EXPECT_THAT(parse({"s.lua", "--max-rows", "1"}).error, HasSubstr("--max-rows needs a whole number >= 2"));
   EXPECT_THAT(parse({"s.lua", "--every", "2.5"}).error, HasSubstr("--every needs a whole number"));
   EXPECT_THAT(parse({"s.lua", "--integrator", "euler"}).error, HasSubstr("unknown integrator 'euler' (available: rk4"));
   EXPECT_THAT(parse({"s.lua", "t.lua"}).error, HasSubstr("unexpected argument 't.lua'"));

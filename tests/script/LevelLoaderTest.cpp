@@ -33,6 +33,8 @@ TEST(LevelLoader, TimeLimitStagesAndZonesHaveCaps) {
   EXPECT_THAT(errorOf("local st = {} for i = 1, 101 do st[i] = { targets = { x_p = { value = 0, tol = 1 } } } end\n"
                       "return { name = 'x', task = { stages = st } }"),
               HasSubstr("task.stages: 101 stages; a level may have at most 100"));
+  EXPECT_THAT(errorOf("return { name = 'x', scene = { record_rate = 1e-300 } }"),
+              HasSubstr("scene.record_rate: at least 0.1 Hz"));
   // At the caps, they load.
   EXPECT_NO_THROW(load("return { name = 'x', task = { targets = { x_p = { value = 0, tol = 1 } }, time_limit = 86400 } }"));
 }
