@@ -49,6 +49,14 @@ bool readRecord(const std::string& text, std::size_t& at, std::vector<std::strin
 
 }  // namespace
 
+std::optional<std::vector<std::string>> parseCsvLine(const std::string& line) {
+  std::vector<std::string> fields;
+  std::size_t at = 0;
+  int lineNumber = 1;
+  if (!readRecord(line, at, fields, lineNumber) || at != line.size()) return std::nullopt;
+  return fields;
+}
+
 ResultsTable ResultsFile::read() const {
   ResultsTable table;
   std::error_code ec;

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,10 @@ struct ResultsTable {
   std::vector<std::string> columns;
   std::vector<std::vector<std::string>> rows;
 };
+
+// The fields of one RFC 4180 record that is all of `line` (its line end
+// included); nothing when it is not exactly one whole record.
+std::optional<std::vector<std::string>> parseCsvLine(const std::string& line);
 
 class ResultsFile {
  public:

@@ -2,11 +2,14 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
+#include <optional>
 #include <system_error>
 #include <vector>
 
 #include "engine/record/DurableFile.h"
 #include "engine/record/RecordError.h"
+#include "engine/record/ResultsFile.h"
 #include "game/sweep/OrderedPool.h"
 #include "game/sweep/PointMeasurement.h"
 #include "game/sweep/SweepError.h"
@@ -23,6 +26,28 @@ namespace fs = std::filesystem;
 namespace {
 
 [[noreturn]] void environment(const std::string& message) { throw SweepError(SweepError::Kind::Environment, message); }
+
+// A row as this program writes it for `point`: one CSV record with every
+// column, the point first, the text columns from their vocabularies and
+// every other cell empty or a number.
+bool isSweepRowFor(const std::string& line, long long point) {
+  const std::optional<std::vector<std::string>> fields = record::parseCsvLine(line);
+  const std::vector<std::string>& columns = sweepColumns();
+  if (!fields || fields->size() != columns.size() || (*fields)[0] != std::to_string(point)) return false;
+  for (std::size_t i = 1; i < columns.size(); ++i) {
+    const std::string& cell = (*fields)[i];
+    if (columns[i] == "notes" || columns[i] == "event") continue;
+    if (columns[i] == "helix_window") {
+      if (cell != "steady" && cell != "whole") return false;
+      continue;
+    }
+    if (cell.empty()) continue;
+    char* end = nullptr;
+    std::strtod(cell.c_str(), &end);
+    if (end != cell.c_str() + cell.size()) return false;
+  }
+  return true;
+}
 
 // The rows of an interrupted run that can be kept: whole lines after the
 // header, the shard's first points in order. Rows never hold a line break
@@ -43,7 +68,9 @@ std::vector<std::string> keptRows(const fs::path& partial, const std::vector<lon
   for (std::size_t at = header.size(); at < text.size() && rows.size() < points.size();) {
     const std::size_t end = text.find('\n', at);
     std::string line = text.substr(at, end + 1 - at);
-    if (line.rfind(std::to_string(points[rows.size()]) + ",", 0) != 0) break;
+    // Kept only as this program writes it: a tampered or damaged row would
+    // be copied into a part marked complete and break every later read.
+    if (!isSweepRowFor(line, points[rows.size()])) break;
     rows.push_back(std::move(line));
     at = end + 1;
   }

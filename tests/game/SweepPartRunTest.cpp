@@ -100,6 +100,27 @@ TEST(SweepPartRun, APartialFileOfOtherRowsIsNotKept) {
   EXPECT_EQ(TempDirectory::read(out / "sweep.csv"), complete);
 }
 
+// Rows that start with the right point but are not what this program
+// writes (a cell of garbage, a stray quote) were kept, copied into a part
+// marked complete, and broke every later read for good (issue 19). They are
+// recomputed: the rerun keeps only the whole, well-formed rows before them.
+TEST(SweepPartRun, TamperedRowsAreRecomputedNotKept) {
+  for (const char* damage : {"GARBAGE", "\"unterminated"}) {
+    const TempDirectory dir;
+    const fs::path out = dir.path() / "out";
+    const std::string complete = crashed(dir, [&](const std::string& csv) {
+      // Header + points 0, 1 whole, then point 2 with its second cell damaged.
+      std::size_t at = 0;
+      for (int line = 0; line < 3; ++line) at = csv.find('\n', at) + 1;
+      const std::size_t second = csv.find(',', at) + 1;
+      return csv.substr(0, second) + damage + csv.substr(csv.find(',', second));
+    });
+    const SweepPartReport r = test::runSweepInto(test::kTinySweep, out);
+    EXPECT_EQ(r.resumed, 2) << damage;
+    EXPECT_EQ(TempDirectory::read(out / "sweep.csv"), complete) << damage;
+  }
+}
+
 TEST(SweepPartRun, AFolderWithAnotherSpecsShardIsRefused) {
   const TempDirectory dir;
   test::runSweepInto(test::kTinySweep, dir.path(), {0, 2});

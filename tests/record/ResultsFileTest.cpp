@@ -25,6 +25,15 @@ TrialResult result(const std::string& trial, const std::string& reason) {
                      .extra = {{"condition", "M3"}}};
 }
 
+TEST(ResultsFileTest, ACsvLineIsOneWholeRecordOrNothing) {
+  using Fields = std::vector<std::string>;
+  EXPECT_EQ(parseCsvLine("a,\"b,c\",\"d\"\"e\"\n"), (Fields{"a", "b,c", "d\"e"}));
+  EXPECT_EQ(parseCsvLine("1,,2\r\n"), (Fields{"1", "", "2"}));
+  EXPECT_FALSE(parseCsvLine("a,\"unterminated\n").has_value());  // the quote swallows the line end
+  EXPECT_FALSE(parseCsvLine("no line end").has_value());
+  EXPECT_FALSE(parseCsvLine("one\ntwo\n").has_value());         // two records
+}
+
 TEST(ResultsFileTest, HeaderOnceThenOneRowPerTrial) {
   hemiroll::test::TempDirectory dir;
   const ResultsFile file(dir.path() / "results.csv");
