@@ -61,6 +61,10 @@ ResultsTable ResultsFile::read() const {
   ResultsTable table;
   std::error_code ec;
   if (!std::filesystem::exists(path_, ec)) return table;
+  // A folder (or a device) in its place reads as empty: a resume would take
+  // every finished trial for an interrupted one and move it aside.
+  if (!std::filesystem::is_regular_file(path_, ec))
+    throw RecordError(path_.string() + ": not a regular file; move it away and run again");
   const std::string text = readWholeFile(path_);
   std::size_t at = 0;
   int line = 1;
@@ -93,6 +97,8 @@ std::vector<std::string> ResultsFile::columns(const TrialResult& r) {
 void ResultsFile::append(const TrialResult& r) const {
   const std::string header = csvLine(columns(r));
   std::error_code ec;
+  if (std::filesystem::exists(path_, ec) && !std::filesystem::is_regular_file(path_, ec))
+    throw RecordError(path_.string() + ": not a regular file; move it away and run again");
   const bool fresh = !std::filesystem::exists(path_, ec) || std::filesystem::file_size(path_, ec) == 0;
   if (!fresh) {
     // The header already there must be this row's: a session resumed with

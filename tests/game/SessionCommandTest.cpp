@@ -146,6 +146,22 @@ TEST(SessionCommandTest, BadInputIsOneSentenceAndExitTwoWithNothingWritten) {
   EXPECT_EQ(session({"--help"}).exitCode, 0);
 }
 
+// results.csv replaced by a folder read as empty: the resume moved every
+// finished trial aside and ended on a misleading "header differs" (issue
+// 19). Now it stops at once, naming the file, and moves nothing.
+TEST(SessionCommandTest, AFolderInPlaceOfResultsStopsTheResumeBeforeMovingAnything) {
+  TempDirectory dir;
+  ASSERT_EQ(session({kDemo, "--participant", "p01", "--data", dir.path().string(), "--bot", kSolver}).exitCode, 0);
+  const fs::path folder = dir.path() / "tutorial-demo" / "p01" / "1";
+  fs::remove(folder / "results.csv");
+  fs::create_directories(folder / "results.csv");
+  const std::set<std::string> before = filesIn(folder);
+  const ProcessResult r = session({kDemo, "--participant", "p01", "--data", dir.path().string(), "--bot", kSolver});
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_THAT(r.err, HasSubstr("results.csv: not a regular file"));
+  EXPECT_EQ(filesIn(folder), before);
+}
+
 TEST(SessionCommandTest, AnUnwritableDataRootIsExitOne) {
   TempDirectory dir;
   const std::string blocker = dir.write("blocker", "a file where a folder must go");

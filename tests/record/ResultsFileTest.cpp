@@ -34,6 +34,23 @@ TEST(ResultsFileTest, ACsvLineIsOneWholeRecordOrNothing) {
   EXPECT_FALSE(parseCsvLine("one\ntwo\n").has_value());         // two records
 }
 
+TEST(ResultsFileTest, AFolderInItsPlaceIsNamedNotReadAsEmpty) {
+  // Read as empty, a session's resume took every finished trial for an
+  // interrupted one and moved it aside (issue 19).
+  test::TempDirectory dir;
+  std::filesystem::create_directories(dir.path() / "results.csv");
+  const ResultsFile file(dir.path() / "results.csv");
+  for (int attempt = 0; attempt < 2; ++attempt) {
+    try {
+      if (attempt == 0) (void)file.read();
+      else file.append(TrialResult{});
+      FAIL() << attempt;
+    } catch (const RecordError& e) {
+      EXPECT_NE(std::string(e.what()).find("results.csv: not a regular file"), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST(ResultsFileTest, HeaderOnceThenOneRowPerTrial) {
   hemiroll::test::TempDirectory dir;
   const ResultsFile file(dir.path() / "results.csv");
