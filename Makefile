@@ -7,7 +7,7 @@ JOBS      ?= $(shell nproc 2>/dev/null || echo 2)
 OUT       := out
 CMAKE_CFG := cmake --preset release -Wno-dev > /dev/null
 
-.PHONY: play test build bench asan deps configure clean
+.PHONY: play test build bench asan tsan deps configure clean
 
 deps:
 	@tools/install-deps.sh
@@ -38,5 +38,13 @@ asan: deps
 	@cmake --build build-asan -j $(JOBS)
 	@ctest --test-dir build-asan -j $(JOBS) --output-on-failure -LE heavy
 
+# ThreadSanitizer on the threaded parts: the servo loop and devices (the
+# UDP bridge), the recorder's writer threads, the play session and window.
+TSAN_TARGETS := haptics_tests haptics_devices_tests record_tests screens_tests screens_window_tests hemiroll hemiroll-haptic-client
+tsan: deps
+	@cmake --preset tsan -Wno-dev > /dev/null
+	@cmake --build build-tsan -j $(JOBS) --target $(TSAN_TARGETS)
+	@TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1" ctest --test-dir build-tsan -j $(JOBS) --output-on-failure -LE heavy -L "haptics|record|screens"
+
 clean:
-	@rm -rf $(BUILD) build-asan build-debug
+	@rm -rf $(BUILD) build-asan build-tsan build-debug

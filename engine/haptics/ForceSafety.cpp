@@ -12,12 +12,27 @@ void ForceSafety::clearFault() {
   staleTime_ = 0.0;
 }
 
+double ForceSafety::recentPath(const SafetyInputs& in) {
+  const double step = hasPosition_ ? (in.devicePosition - lastPosition_).norm() : 0.0;
+  lastPosition_ = in.devicePosition;
+  hasPosition_ = true;
+  steps_[static_cast<std::size_t>(stepIndex_)] = step;
+  stepIndex_ = (stepIndex_ + 1) % kJumpWindow;
+  double path = 0.0;
+  for (const double s : steps_) path += s;
+  return path;
+}
+
 SafetyFault ForceSafety::watchdogs(const SafetyInputs& in) {
+  // Tracked every tick, faulted or not, so that the window is current when
+  // a fault is cleared.
+  const double path = recentPath(in);
   if (in.deviceError) return SafetyFault::DeviceError;
   staleTime_ = in.deviceFresh ? 0.0 : staleTime_ + in.dt;
   if (staleTime_ > def_.staleLimit) return SafetyFault::StaleDevice;
   // Negated comparisons so that NaN observations trip the guard.
   if (!(in.deviceVelocity.norm() <= def_.maxDeviceSpeed)) return SafetyFault::VelocityGuard;
+  if (!(path <= def_.maxDeviceSpeed * kJumpWindow * in.dt)) return SafetyFault::PositionJump;
   if (in.modelHalted) return SafetyFault::ModelHalted;
   if (!(in.tickLateness <= def_.maxTickLateness)) return SafetyFault::LoopOverrun;
   if (!(in.injectedEnergy <= def_.maxInjectedEnergy)) return SafetyFault::EnergyInjection;
@@ -28,7 +43,8 @@ SafetyFault ForceSafety::watchdogs(const SafetyInputs& in) {
 
 Vec3 ForceSafety::update(const SafetyInputs& in) {
   clamped_ = false;
-  if (fault_ == SafetyFault::None) fault_ = watchdogs(in);
+  const SafetyFault now = watchdogs(in);
+  if (fault_ == SafetyFault::None) fault_ = now;
   if (fault_ != SafetyFault::None) {
     ramp_.dropNow();
     last_ = Vec3::Zero();
@@ -60,6 +76,7 @@ const char* safetyFaultName(SafetyFault f) {
     case SafetyFault::StaleDevice: return "stale device data";
     case SafetyFault::NonFiniteForce: return "non-finite force";
     case SafetyFault::VelocityGuard: return "device velocity above the guard";
+    case SafetyFault::PositionJump: return "device position jumped (faster than the velocity guard)";
     case SafetyFault::EnergyInjection: return "energy injection beyond the bound";
     case SafetyFault::RunawayRotation: return "runaway angular velocity";
     case SafetyFault::ModelHalted: return "model halted at a domain edge";

@@ -13,6 +13,8 @@
 //   4. clamp to the device's maxForce (ForceClamp.h) - last, so nothing after
 //      it can lengthen the force.
 
+#include <array>
+
 #include "engine/haptics/EngagementRamp.h"
 #include "engine/haptics/ForceClamp.h"
 
@@ -28,6 +30,7 @@ enum class SafetyFault {
   RunawayRotation,   // the hemisphere spins faster than maxAngularSpeed
   ModelHalted,       // the physics stopped at a domain edge (tip-over, off-face, non-finite)
   LoopOverrun,       // the servo loop stalled: a tick started too late
+  PositionJump,      // the device's positions moved faster than maxDeviceSpeed, whatever velocity it reported
 };
 
 struct SafetyDef {
@@ -47,6 +50,7 @@ struct SafetyInputs {
   double dt = 0.001;                   // [s]
   Vec3 desiredForce = Vec3::Zero();    // device frame, before safety [N]
   Vec3 deviceVelocity = Vec3::Zero();  // device frame [m/s]
+  Vec3 devicePosition = Vec3::Zero();  // device frame [m]
   bool deviceError = false;
   bool deviceFresh = true;
   bool modelHalted = false;
@@ -81,6 +85,14 @@ class ForceSafety {
 
  private:
   SafetyFault watchdogs(const SafetyInputs& in);
+  // The device's path length over the last kJumpWindow ticks, this tick's step included.
+  double recentPath(const SafetyInputs& in);
+
+  // The position guard looks at the path over 10 ticks, not one: a mouse's
+  // strokes arrive once per frame (16 ms of motion in one tick), while a
+  // device teleporting every tick covers metres per second however it is
+  // sampled and whatever velocity it reports.
+  static constexpr int kJumpWindow = 10;
 
   SafetyDef def_;
   double maxForce_;
@@ -89,6 +101,10 @@ class ForceSafety {
   Vec3 last_ = Vec3::Zero();
   bool clamped_ = false;
   double staleTime_ = 0.0;
+  std::array<double, kJumpWindow> steps_{};  // [m] per tick, a ring
+  int stepIndex_ = 0;
+  bool hasPosition_ = false;
+  Vec3 lastPosition_ = Vec3::Zero();
 };
 
 const char* safetyFaultName(SafetyFault f);

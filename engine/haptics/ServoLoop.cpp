@@ -202,6 +202,7 @@ void ServoLoop::tick(std::int64_t latenessNs) {
   in.dt = h;
   in.desiredForce = def_.mapping.forceToDevice(forces.deviceForce);
   in.deviceVelocity = reading.velocity;
+  in.devicePosition = reading.position;
   in.deviceError = deviceError != nullptr;
   in.deviceFresh = reading.fresh;
   in.modelHalted = stepper_.halted();

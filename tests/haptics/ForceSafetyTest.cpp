@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <functional>
+
 #include <limits>
 
 namespace hemiroll::haptics {
@@ -101,7 +103,32 @@ INSTANTIATE_TEST_SUITE_P(
         Trip{"inf force", [](SafetyInputs& in) { in.desiredForce.z() = std::numeric_limits<double>::infinity(); },
              SafetyFault::NonFiniteForce},
         Trip{"halted", [](SafetyInputs& in) { in.modelHalted = true; }, SafetyFault::ModelHalted},
-        Trip{"overrun", [](SafetyInputs& in) { in.tickLateness = 0.05; }, SafetyFault::LoopOverrun}));
+        Trip{"overrun", [](SafetyInputs& in) { in.tickLateness = 0.05; }, SafetyFault::LoopOverrun},
+        Trip{"teleport", [](SafetyInputs& in) { in.devicePosition.x() = 0.09; }, SafetyFault::PositionJump},
+        Trip{"nan position",
+             [](SafetyInputs& in) { in.devicePosition.z() = std::numeric_limits<double>::quiet_NaN(); },
+             SafetyFault::PositionJump}));
+
+// A client that teleports 9 cm every tick while reporting zero velocity got
+// past the velocity guard (issue 19). The position guard sees the path over
+// 10 ticks: a steady 1.5 m/s hand, or a mouse's motion arriving once per
+// 16 ms frame, stays inside it.
+TEST(ForceSafetyTest, ThePositionGuardCatchesTeleportsNotHandsOrFramedMice) {
+  const auto run = [](const std::function<Vec3(int)>& position) {
+    ForceSafety safety(quickRamp(), DeviceSpec{});
+    safety.engage();
+    SafetyInputs in;
+    for (int k = 0; k < 500 && !safety.faulted(); ++k) {
+      in.devicePosition = position(k);  // deviceVelocity stays zero, as the client claims
+      safety.update(in);
+    }
+    return safety.fault();
+  };
+  EXPECT_EQ(run([](int k) { return Vec3(k % 2 ? 0.09 : 0.0, 0.0, 0.0); }), SafetyFault::PositionJump);
+  EXPECT_EQ(run([](int k) { return Vec3(0.0015 * k, 0.0, 0.0); }), SafetyFault::None);
+  // 1 m/s delivered as 16 mm every 16th tick.
+  EXPECT_EQ(run([](int k) { return Vec3(0.016 * (k / 16), 0.0, 0.0); }), SafetyFault::None);
+}
 
 TEST(ForceSafetyTest, ForceOffIsImmediateAndTheRateLimitRestartsFromZero) {
   SafetyDef def = quickRamp();
