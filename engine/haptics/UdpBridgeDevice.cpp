@@ -163,7 +163,10 @@ void UdpBridgeDevice::sendForce(const Vec3& force) {
   m.sequence = ++forceSequence_;
   m.answers = current_.state.sequence;
   m.echoTimestampNs = current_.state.timestampNs;
-  m.status = h == Health::Stale ? udp::BridgeStatus::Stale : udp::BridgeStatus::Ok;
+  // The client hears why its force is zero: silence, or its device's own fault.
+  m.status = h == Health::Stale         ? udp::BridgeStatus::Stale
+             : h == Health::DeviceFault ? udp::BridgeStatus::DeviceFault
+                                        : udp::BridgeStatus::Ok;
   // The safety layer already clamped; the bridge clamps again so that no
   // path through it can exceed the spec, and sends nothing but zero while
   // its watchdog holds.

@@ -34,6 +34,7 @@ enum class BridgeStatus : std::uint8_t {
   Ok = 0,
   Stale = 1,    // the bridge's watchdog tripped (no state for 10 ms): the force is zero
   Closing = 2,  // the bridge is shutting down: the force is zero and stays so
+  DeviceFault = 3,  // the client's device reported a fault (its status byte): the force is zero
 };
 
 struct StateMessage {

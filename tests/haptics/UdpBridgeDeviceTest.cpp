@@ -234,6 +234,12 @@ TEST(UdpBridgeDeviceTest, ADeviceFaultFromTheClientIsAnError) {
   d.read(0.0);
   ASSERT_NE(d.error(), nullptr);
   EXPECT_NE(std::string(d.error()).find("fault of its device"), std::string::npos);
+  // The client is told why its force is zero (it heard status 0; issue 19).
+  d.sendForce(Vec3(1.0, 0.0, 0.0));
+  udp::ForceMessage f;
+  ASSERT_TRUE(client.receiveForce(f));
+  EXPECT_EQ(f.status, udp::BridgeStatus::DeviceFault);
+  EXPECT_EQ(f.force, (std::array<double, 3>{0.0, 0.0, 0.0}));
 }
 
 TEST(UdpBridgeDeviceTest, CloseTellsTheClient) {
