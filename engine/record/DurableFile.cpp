@@ -81,12 +81,20 @@ bool DurableFile::close() {
 void writeFileAtomically(const std::filesystem::path& path, std::string_view content) {
   std::filesystem::path temp = path;
   temp += ".tmp";
+  // The temporary file never outlives a failure: a folder in the target's
+  // place (sweep map --out DIR) left DIR.tmp behind.
+  std::string error;
   {
     DurableFile out(temp, "wb");
     out.write(content);
-    if (!out.close()) throw RecordError(out.error());
+    if (!out.close()) error = out.error();
   }
-  if (std::rename(temp.c_str(), path.c_str()) != 0) throw RecordError(systemError(path, "cannot replace"));
+  if (error.empty() && std::rename(temp.c_str(), path.c_str()) != 0) error = systemError(path, "cannot replace");
+  if (!error.empty()) {
+    std::error_code ignored;
+    std::filesystem::remove(temp, ignored);
+    throw RecordError(error);
+  }
   syncDirectory(path.parent_path());
 }
 

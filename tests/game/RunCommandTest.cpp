@@ -207,6 +207,10 @@ TEST(RunCommand, MissingFilesExitTwo) {
   r = hemiroll({"run", dir.write("quick.lua", kQuickLevel), "--bot", "/nonexistent/bot.lua"});
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_THAT(r.err, HasSubstr("bot.lua:1: no such file"));
+  // A folder given as the bot said "got nil" (issue 19); a FIFO would block.
+  r = hemiroll({"run", dir.write("quick2.lua", kQuickLevel), "--bot", dir.path().string()});
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_THAT(r.err, HasSubstr(":1: not a regular file"));
 }
 
 TEST(RunCommand, WrongFlagsExitTwoWithUsage) {

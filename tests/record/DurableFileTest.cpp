@@ -1,0 +1,47 @@
+// engine/record/DurableFile: whole-file replacement that is all or nothing,
+// and appends that land whole.
+
+#include "engine/record/DurableFile.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "engine/record/RecordError.h"
+#include "tests/support/TempDirectory.h"
+
+namespace hemiroll::record {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(DurableFileTest, AtomicReplacementWritesTheWholeContent) {
+  test::TempDirectory dir;
+  const fs::path file = dir.path() / "map.svg";
+  writeFileAtomically(file, "first");
+  writeFileAtomically(file, "second");
+  EXPECT_EQ(readWholeFile(file), "second");
+  EXPECT_FALSE(fs::exists(dir.path() / "map.svg.tmp"));
+}
+
+TEST(DurableFileTest, AFailedReplacementLeavesNoTemporaryFile) {
+  // A folder where the file should go: the rename fails, and the temporary
+  // file went on lying beside it (issue 19: sweep map --out DIR left DIR.tmp).
+  test::TempDirectory dir;
+  const fs::path target = dir.path() / "out";
+  fs::create_directories(target / "inside");
+  EXPECT_THROW(writeFileAtomically(target, "content"), RecordError);
+  EXPECT_FALSE(fs::exists(dir.path() / "out.tmp"));
+  EXPECT_TRUE(fs::is_directory(target / "inside"));  // and the folder is untouched
+}
+
+TEST(DurableFileTest, AppendsLandWhole) {
+  test::TempDirectory dir;
+  const fs::path file = dir.path() / "results.csv";
+  appendDurably(file, "a,b\n");
+  appendDurably(file, "1,2\n");
+  EXPECT_EQ(readWholeFile(file), "a,b\n1,2\n");
+}
+
+}  // namespace
+}  // namespace hemiroll::record
