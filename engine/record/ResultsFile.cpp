@@ -94,20 +94,25 @@ std::vector<std::string> ResultsFile::columns(const TrialResult& r) {
   return c;
 }
 
-void ResultsFile::append(const TrialResult& r) const {
+void ResultsFile::checkColumns(const TrialResult& r) const {
   const std::string header = csvLine(columns(r));
   std::error_code ec;
   if (std::filesystem::exists(path_, ec) && !std::filesystem::is_regular_file(path_, ec))
     throw RecordError(path_.string() + ": not a regular file; move it away and run again");
+  if (!std::filesystem::exists(path_, ec) || std::filesystem::file_size(path_, ec) == 0) return;
+  // The header already there must be this row's: a session resumed with
+  // other extra columns would otherwise misalign every later row.
+  const std::string existing = readWholeFile(path_);
+  if (existing.compare(0, header.size(), header) != 0)
+    throw RecordError(path_.string() + ": line 1: the header differs from this result's columns (" +
+                      header.substr(0, header.size() - 1) + ")");
+}
+
+void ResultsFile::append(const TrialResult& r) const {
+  const std::string header = csvLine(columns(r));
+  checkColumns(r);
+  std::error_code ec;
   const bool fresh = !std::filesystem::exists(path_, ec) || std::filesystem::file_size(path_, ec) == 0;
-  if (!fresh) {
-    // The header already there must be this row's: a session resumed with
-    // other extra columns would otherwise misalign every later row.
-    const std::string existing = readWholeFile(path_);
-    if (existing.compare(0, header.size(), header) != 0)
-      throw RecordError(path_.string() + ": line 1: the header differs from this result's columns (" +
-                        header.substr(0, header.size() - 1) + ")");
-  }
   std::vector<std::string> fields = {r.participant, r.session,      r.trialId, r.level,
                                      r.levelHash,   r.outcome,      r.reason,  number(r.duration),
                                      number(r.score), std::to_string(r.rows), std::to_string(r.droppedRows),

@@ -47,6 +47,10 @@ class ResultsFile {
 
   // Throws RecordError naming the file on an I/O error or a column mismatch.
   void append(const TrialResult& result) const;
+  // Throws RecordError when the file holds a header other than `result`'s
+  // columns: what append() would refuse, asked before a trial is played
+  // rather than after it.
+  void checkColumns(const TrialResult& result) const;
   const std::filesystem::path& path() const { return path_; }
   // The file's header and rows (RFC 4180: quoted fields may hold commas,
   // quotes and line breaks); a missing file is an empty table. Throws

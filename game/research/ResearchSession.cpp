@@ -6,6 +6,7 @@
 #include "engine/record/CsvRowFormat.h"
 #include "engine/record/DurableFile.h"
 #include "engine/record/RecordError.h"
+#include "engine/record/ResultsFile.h"
 #include "engine/script/ProtocolLoader.h"
 #include "engine/script/ProtocolPlan.h"
 #include "engine/script/ScriptError.h"
@@ -239,6 +240,15 @@ std::unique_ptr<TrialRecording> ResearchSession::recordNext(const script::LevelD
                       {"repetition", std::to_string(t.repetition)}, {"condition", std::to_string(t.condition)},
                       {"condition_label", t.conditionLabel},  {"level_file", t.levelFile},
                       {"player", player_}};
+  // A results.csv whose header this trial's row could not join is found
+  // now, not after the participant has played the trial.
+  try {
+    record::TrialResult row;
+    row.extra = resultsFields(t, TrialResult{});
+    record::ResultsFile(folder_ / "results.csv").checkColumns(row);
+  } catch (const record::RecordError& e) {
+    environment(e.what());
+  }
   try {
     return std::make_unique<TrialRecording>(def, level, loop);
   } catch (const TrialRecordingError& e) {
@@ -248,7 +258,17 @@ std::unique_ptr<TrialRecording> ResearchSession::recordNext(const script::LevelD
 
 void ResearchSession::finishNext(TrialRecording& recording, const TrialResult& result,
                                  const std::optional<haptics::LoopTimingSummary>& timing) {
-  const ManifestTrial& t = nextTrial();
+  record::Fields extra = resultsFields(nextTrial(), result);
+  try {
+    recording.finish(result, extra, timing);
+  } catch (const TrialRecordingError& e) {
+    environment(e.what());
+  }
+  ++done_;
+  ++ranThisSitting_;
+}
+
+record::Fields ResearchSession::resultsFields(const ManifestTrial& t, const TrialResult& result) const {
   record::Fields extra = {{"trial_index", std::to_string(t.index)},
                           {"block", std::to_string(t.block)},
                           {"block_name", t.blockName},
@@ -266,13 +286,7 @@ void ResearchSession::finishNext(TrialRecording& recording, const TrialResult& r
   for (auto& field : TrialRecording::scoreFields(result)) extra.push_back(std::move(field));
   extra.emplace_back("ticks", std::to_string(result.ticks));
   extra.emplace_back("player", player_);
-  try {
-    recording.finish(result, extra, timing);
-  } catch (const TrialRecordingError& e) {
-    environment(e.what());
-  }
-  ++done_;
-  ++ranThisSitting_;
+  return extra;
 }
 
 }  // namespace hemiroll::game

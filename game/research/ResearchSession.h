@@ -89,6 +89,9 @@ class ResearchSession {
                   const std::optional<haptics::LoopTimingSummary>& timing = std::nullopt);
 
  private:
+  // The extra columns of `t`'s row in results.csv (their names never depend
+  // on the result, so they can be checked before the trial).
+  record::Fields resultsFields(const ManifestTrial& t, const TrialResult& result) const;
   void buildPlan(const SessionRequest& request, std::uint64_t seed);
   void checkAgainst(const SessionManifest& previous) const;
 

@@ -2,7 +2,6 @@
 
 #include <imgui.h>
 
-#include <cctype>
 #include <ctime>
 
 #include "engine/record/DataDirectory.h"

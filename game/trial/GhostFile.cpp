@@ -1,6 +1,5 @@
 #include "game/trial/GhostFile.h"
 
-#include <cctype>
 #include "engine/record/FileNames.h"
 
 namespace hemiroll::game {

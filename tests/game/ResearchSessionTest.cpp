@@ -2,7 +2,6 @@
 // folder, trial by trial; resumed only with the same protocol, seed and
 // levels; breaks that end a sitting.
 
-#include "engine/record/ContentHash.h"
 #include "game/research/ResearchSession.h"
 
 #include <gmock/gmock.h>
@@ -11,10 +10,11 @@
 #include <fstream>
 #include <sstream>
 
+#include "engine/record/ContentHash.h"
 #include "engine/record/DurableFile.h"
 #include "engine/record/ResultsFile.h"
-#include "game/trial/ReplayCapture.h"
 #include "game/research/SessionFolder.h"
+#include "game/trial/ReplayCapture.h"
 #include "game/trial/TrialSetup.h"
 #include "tests/support/TempDirectory.h"
 
@@ -144,6 +144,25 @@ TEST_F(ResearchSessionTest, EachFinishedTrialHasItsFilesAndOneResultsRowWithTheP
   EXPECT_EQ(row[24], "12");     // time_limit_s
   EXPECT_EQ(row[28], "1500");   // ticks
   EXPECT_EQ(row[29], "bot.lua");
+}
+
+// A results.csv whose header the next row cannot join was found only when
+// the row was appended, after the participant had played the trial (issue
+// 19). It is refused when the trial is set up, before any file is made.
+TEST_F(ResearchSessionTest, AResultsHeaderTheRowCannotJoinIsRefusedBeforeTheTrial) {
+  ResearchSession s(request_);
+  s.begin("bot.lua");
+  record::appendDurably(folder() / "results.csv", "participant,session,trial,other\n");
+  const script::LoadedLevel level = s.loadNextLevel();
+  try {
+    (void)s.recordNext(level.def, trialLoopDef(level.def), "bot", botDeviceSpec());
+    FAIL() << "no error";
+  } catch (const SessionError& e) {
+    EXPECT_EQ(e.kind(), SessionError::Kind::Environment);
+    EXPECT_THAT(e.what(), HasSubstr("results.csv: line 1: the header differs"));
+  }
+  EXPECT_FALSE(fs::exists(folder() / "trial-001.csv"));
+  EXPECT_FALSE(fs::exists(folder() / "trial-001.json"));
 }
 
 TEST_F(ResearchSessionTest, AStopBreakEndsTheSittingAndTheNextSittingStartsAfterIt) {
