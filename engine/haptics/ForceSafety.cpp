@@ -32,7 +32,9 @@ SafetyFault ForceSafety::watchdogs(const SafetyInputs& in) {
   if (staleTime_ > def_.staleLimit) return SafetyFault::StaleDevice;
   // Negated comparisons so that NaN observations trip the guard.
   if (!(in.deviceVelocity.norm() <= def_.maxDeviceSpeed)) return SafetyFault::VelocityGuard;
-  if (!(path <= def_.maxDeviceSpeed * kJumpWindow * in.dt)) return SafetyFault::PositionJump;
+  // Only where a force is rendered: a mouse has none to send into a
+  // teleporting hand, and its strokes may arrive faster in a flick.
+  if (maxForce_ > 0.0 && !(path <= def_.maxDeviceSpeed * kJumpWindow * in.dt)) return SafetyFault::PositionJump;
   if (in.modelHalted) return SafetyFault::ModelHalted;
   if (!(in.tickLateness <= def_.maxTickLateness)) return SafetyFault::LoopOverrun;
   if (!(in.injectedEnergy <= def_.maxInjectedEnergy)) return SafetyFault::EnergyInjection;

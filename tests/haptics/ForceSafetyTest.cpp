@@ -128,6 +128,16 @@ TEST(ForceSafetyTest, ThePositionGuardCatchesTeleportsNotHandsOrFramedMice) {
   EXPECT_EQ(run([](int k) { return Vec3(0.0015 * k, 0.0, 0.0); }), SafetyFault::None);
   // 1 m/s delivered as 16 mm every 16th tick.
   EXPECT_EQ(run([](int k) { return Vec3(0.016 * (k / 16), 0.0, 0.0); }), SafetyFault::None);
+  // A device without force output (the mouse) has no force to make safe: a
+  // 5 cm flick in one frame does not stop the game.
+  DeviceSpec mouse;
+  mouse.hasForceOutput = false;
+  ForceSafety safety(quickRamp(), mouse);
+  SafetyInputs in;
+  safety.update(in);
+  in.devicePosition = Vec3(0.05, 0.0, 0.0);
+  safety.update(in);
+  EXPECT_EQ(safety.fault(), SafetyFault::None);
 }
 
 TEST(ForceSafetyTest, ForceOffIsImmediateAndTheRateLimitRestartsFromZero) {
