@@ -83,12 +83,16 @@ TEST(LevelScript, AMessageIsAHudLineNotAFile) {
   EXPECT_EQ(messages[0].text, std::string(512, 'x'));
 }
 
+// A level that fails on its 0.2 s time limit, with `onFail` as its on_fail body.
+LoadedLevel timingOut(const std::string& onFail) {
+  return load("return { name = 'f', task = { targets = { x_p = { value = 1, tol = 0.001 } }, time_limit = 0.2 },"
+              "callbacks = { on_fail = function(s, reason) " + onFail + " end } }");
+}
+
 TEST(LevelScript, AnErrorInOnFailIsKeptNotDropped) {
   // The trial has ended (time limit): the outcome stands, and the error is
   // there for the caller to report (it was dropped; issue 19).
-  LoadedLevel level = load(std::string("return { name = 'f', ") +
-                           "task = { targets = { x_p = { value = 1, tol = 0.001 } }, time_limit = 0.2 }," +
-                           "callbacks = { on_fail = function(s, reason) error('on_fail broke') end } }");
+  LoadedLevel level = timingOut("error('on_fail broke')");
   TaskJudge judge(level.def.task);
   run(level, judge, 1.0);
   EXPECT_EQ(judge.reason(), trial_reason::kTimeLimit);
@@ -96,9 +100,7 @@ TEST(LevelScript, AnErrorInOnFailIsKeptNotDropped) {
 }
 
 TEST(LevelScript, OnFailGetsTheReason) {
-  LoadedLevel level = load(std::string("return { name = 'f', ") +
-                           "task = { targets = { x_p = { value = 1, tol = 0.001 } }, time_limit = 0.2 }," +
-                           "callbacks = { on_fail = function(s, reason) hemiroll.message(reason) end } }");
+  LoadedLevel level = timingOut("hemiroll.message(reason)");
   TaskJudge judge(level.def.task);
   run(level, judge, 1.0);
   const auto messages = level.script->takeMessages();

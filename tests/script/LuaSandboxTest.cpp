@@ -210,6 +210,17 @@ TEST(LuaSandbox, PrintHasAnOutputBudgetToldOnce) {
                      "(print: the script's output budget of 100 bytes is spent; further prints are dropped)\n");
 }
 
+TEST(LuaSandbox, AWallClockLimitStandsBehindTheQuota) {
+  // Work well inside the instruction quota, under a clock already run out:
+  // the first count hook (every 1000 instructions) stops it.
+  SandboxLimits limits;
+  limits.chunkWallSeconds = 0.0;
+  EXPECT_THAT(runFresh("local s = 0 for i = 1, 100000 do s = s + i end return 'done'", limits),
+              HasSubstr("ERROR: t.lua:1: wall-clock limit of 0.0 s exceeded"));
+  // With time to spare the same chunk finishes.
+  EXPECT_EQ(runFresh("local s = 0 for i = 1, 100000 do s = s + i end return 'done'"), "done");
+}
+
 TEST(LuaSandbox, QuotaAllowsWorkWithinIt) {
   SandboxLimits limits;
   limits.chunkInstructionQuota = 1'000'000;
