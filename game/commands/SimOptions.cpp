@@ -43,7 +43,7 @@ const char* simUsage() {
          "                     states are always written\n"
          "  --out FILE.csv     write the CSV to FILE instead of stdout\n"
          "  --max-rows N       refuse, before writing, a run that would write more rows\n"
-         "                     (default 10000000, about 2 GB)\n"
+         "                     (default 10000000, about 3 GB)\n"
          "  --help             print this help\n"
          "\n"
          "Exit codes: 0 done (also when a domain event stops the run early),\n"

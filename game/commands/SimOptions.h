@@ -24,7 +24,7 @@ struct SimOptions {
   static constexpr double kDefaultTimeStep = 1e-3;  // [s], the paper's RK4 step
   static constexpr const char* kDefaultIntegrator = "rk4";
   static constexpr double kDefaultTolerance = 1e-8;  // [-], AdaptiveIntegrator<N>::kDefaultTolerance
-  // About 2 GB of CSV: a run asking for more is told before it writes a row.
+  // About 3 GB of CSV: a run asking for more is told before it writes a row.
   static constexpr long long kDefaultMaxRows = 10'000'000;
 };
 
