@@ -29,6 +29,7 @@ struct RecordRow {
   Triple handForce{};                // F_h on the mass point, scene [N]
   Triple modelForce{};               // f: the part of F_h the model receives, scene [N]
   Triple renderedForce{};            // sent to the device, device frame, after safety [N]
+  Triple guidanceForce{};            // guidance's part of the desired force, scene, before safety [N]
   double proxyDistance = 0.0;        // proxy to mass point [m]
   double injectedEnergy = 0.0;       // energy watchdog's observation [J]
   double rampScale = 0.0;            // engagement ramp [0, 1]
@@ -76,6 +77,7 @@ inline RecordRow recordRowOf(const ServoSnapshot& s) {
   r.handForce = s.handForce;
   r.modelForce = s.modelForce;
   r.renderedForce = s.renderedForce;
+  r.guidanceForce = s.guidanceForce;
   r.proxyDistance = s.proxyDistance;
   r.injectedEnergy = s.injectedEnergy;
   r.rampScale = s.rampScale;

@@ -42,6 +42,8 @@ ServoLoop::ServoLoop(const ServoLoopDef& def, HapticDevice& device)
   if (!problem.empty()) throw std::invalid_argument("ServoLoop: " + problem);
   const std::string params = physics::validateParams(def.params, false);
   if (!params.empty()) throw std::invalid_argument("ServoLoop: " + params);
+  const std::string guidance = validateGuidance(def.guidance);
+  if (!guidance.empty()) throw std::invalid_argument("ServoLoop: guidance." + guidance);
 }
 
 ServoLoop::~ServoLoop() { stop(); }
@@ -198,9 +200,11 @@ void ServoLoop::tick(std::int64_t latenessNs) {
     injected = physics::mechanicalEnergy(system_.dynamics(), x).total() - energyAtEngage_ - handWork_;
   }
 
+  lastGuidance_ = guidanceNow();
+
   SafetyInputs in;
   in.dt = h;
-  in.desiredForce = def_.mapping.forceToDevice(forces.deviceForce);
+  in.desiredForce = def_.mapping.forceToDevice(forces.deviceForce + lastGuidance_);
   in.deviceVelocity = reading.velocity;
   in.devicePosition = reading.position;
   in.deviceError = deviceError != nullptr;
@@ -220,6 +224,12 @@ void ServoLoop::tick(std::int64_t latenessNs) {
   publish(forces, distance, injected, latenessNs);
 }
 
+Vec3 ServoLoop::guidanceNow() {
+  if (!def_.guidance.active()) return Vec3::Zero();
+  guides_.read(guide_);  // keeps the previous plan when nothing new came
+  return guidanceForce(def_.guidance, guide_, stepper_.time(), proxy_.position, proxy_.velocity);
+}
+
 void ServoLoop::publish(const physics::CouplingForces& forces, double distance, double injected,
                         std::int64_t latenessNs) {
   ServoSnapshot s;
@@ -232,6 +242,7 @@ void ServoLoop::publish(const physics::CouplingForces& forces, double distance, 
   s.handForce = toTriple(forces.handForce);
   s.modelForce = toTriple(forces.modelForce);
   s.renderedForce = toTriple(lastRendered_);
+  s.guidanceForce = toTriple(lastGuidance_);
   s.proxyDistance = distance;
   s.injectedEnergy = injected;
   s.event = stepper_.event();

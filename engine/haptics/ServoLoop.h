@@ -1,7 +1,8 @@
 #pragma once
 // The 1 kHz servo loop: one tick is
 //   read device pose -> map to the scene -> hold the proxy -> physics step
-//   (Stepper, RK4, h = period) -> domain events -> coupling forces -> safety
+//   (Stepper, RK4, h = period) -> domain events -> coupling forces
+//   (+ guidance towards the latest published plan, Guidance.h) -> safety
 //   -> force to the device -> publish a snapshot.
 // The tick allocates nothing, takes no lock, does no I/O and calls no Lua;
 // other threads talk to it only through the command ring (one producer) and
@@ -38,6 +39,7 @@
 #include <thread>
 
 #include "engine/haptics/ForceSafety.h"
+#include "engine/haptics/Guidance.h"
 #include "engine/haptics/HapticDevice.h"
 #include "engine/haptics/RealtimeThread.h"
 #include "engine/haptics/RecordRow.h"
@@ -65,6 +67,7 @@ struct ServoLoopDef {
   physics::CouplingDef coupling;         // must pass validateCoupling and the device's maxStiffness
   WorkspaceMapping mapping;
   SafetyDef safety;
+  GuidanceDef guidance;                  // none by default; the plan comes through publishGuide()
   std::array<double, 12> initialState{};  // 12-state (physics/StateLayout.h)
   double startTime = 0.0;                // [s]
   // Recording (see above); null rings record nothing. The rings must outlive
@@ -116,6 +119,9 @@ class ServoLoop {
   // maxStiffness; checked here, outside the tick, because the check
   // allocates its message).
   bool post(const ServoCommand& command);
+  // The planner's latest wish for the proxy, for guidance (one producer
+  // thread; lock free, latest wins). Ignored without def.guidance.
+  void publishGuide(const GuideSample& sample) { guides_.write(sample); }
   // One consumer thread. False until the first tick has published.
   bool latest(ServoSnapshot& out) { return snapshots_.read(out); }
 
@@ -139,6 +145,7 @@ class ServoLoop {
   void drainCommands();
   void apply(const ServoCommand& c);
   void publish(const physics::CouplingForces& forces, double distance, double injected, std::int64_t latenessNs);
+  Vec3 guidanceNow();
   void logInput(const DeviceReading& reading, std::int64_t latenessNs);
 
   ServoLoopDef def_;
@@ -155,10 +162,13 @@ class ServoLoop {
   double handWork_ = 0.0;
   Vec3 lastHandForce_ = Vec3::Zero();
   Vec3 lastRendered_ = Vec3::Zero();
+  Vec3 lastGuidance_ = Vec3::Zero();  // scene [N], before safety
+  GuideSample guide_;                 // the latest plan this thread has taken
   bool lastClamped_ = false;
 
   SpscRing<ServoCommand, kCommandCapacity> commands_;
   TripleBuffer<ServoSnapshot> snapshots_;
+  TripleBuffer<GuideSample> guides_;
   TimingHistogram lateness_, period_;
   std::atomic<std::uint64_t> ticks_{0}, missed_{0}, wakeups_{0};
   std::atomic<std::uint64_t> recordDropped_{0}, inputDropped_{0};

@@ -23,6 +23,7 @@ struct ServoSnapshot {
   Triple handForce{};                     // F_h on the mass point, scene [N]
   Triple modelForce{};                    // the part of F_h the model receives, scene [N]
   Triple renderedForce{};                 // sent to the device, device frame, after safety [N]
+  Triple guidanceForce{};                 // guidance's part of the desired force, scene, before safety [N]
   double proxyDistance = 0.0;             // proxy to mass point [m]
   double injectedEnergy = 0.0;            // energy watchdog's observation [J]
   physics::DomainEvent event = physics::DomainEvent::None;

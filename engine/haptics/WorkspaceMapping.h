@@ -17,6 +17,8 @@ struct WorkspaceMapping {
   Vec3 positionToScene(const Vec3& p) const { return scale * p + offset; }
   Vec3 velocityToScene(const Vec3& v) const { return scale * v; }
   Vec3 forceToDevice(const Vec3& sceneForce) const { return (forceGain * scale) * sceneForce; }
+  // The inverse of forceToDevice (what a hand on the device feels, in the scene).
+  Vec3 forceToScene(const Vec3& deviceForce) const { return deviceForce / (forceGain * scale); }
 };
 
 }  // namespace hemiroll::haptics

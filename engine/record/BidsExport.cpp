@@ -46,6 +46,7 @@ std::vector<Channel> channels() {
            {"proxy_distance", "m"}, {"injected_energy", "J"}, {"ramp_scale", "n/a"}, {"lateness", "s"},
            {"event", "n/a"}, {"engagement", "n/a"}, {"fault", "n/a"}, {"paused", "n/a"}, {"force_clamped", "n/a"}})
     c.push_back({name, "n/a", "MISC", "n/a", units});
+  triple("Fguide", "MISC", "proxy", "N");  // the CSV's order: after the codes
   return c;
 }
 

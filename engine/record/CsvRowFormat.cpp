@@ -1,5 +1,6 @@
 #include "engine/record/CsvRowFormat.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cstdint>
 #include <system_error>
@@ -32,7 +33,17 @@ std::vector<std::string> makeColumns() {
   for (const char* name : {"proxy_distance_m", "injected_energy_J", "ramp_scale", "lateness_s", "event",
                            "engagement", "fault", "paused", "force_clamped"})
     c.push_back(name);
+  triple("Fguide", "N");  // added after the codes, so that a pre-guidance file is this one cut short
   return c;
+}
+
+std::string joined(const std::vector<std::string>& columns, std::size_t count) {
+  std::string h;
+  for (std::size_t i = 0; i < count; ++i) {
+    if (i > 0) h += ',';
+    h += columns[i];
+  }
+  return h;
 }
 
 void appendInt(std::uint64_t value, std::string& out) {
@@ -74,14 +85,14 @@ const std::vector<std::string>& CsvRowFormat::columns() {
   return c;
 }
 
-std::string CsvRowFormat::header() {
-  std::string h;
-  for (const std::string& c : columns()) {
-    if (!h.empty()) h += ',';
-    h += c;
-  }
-  h += '\n';
-  return h;
+std::string CsvRowFormat::header() { return joined(columns(), columns().size()) + '\n'; }
+
+std::string CsvRowFormat::headerBeforeGuidance() { return joined(columns(), kColumnsBeforeGuidance) + '\n'; }
+
+bool CsvRowFormat::knownColumns(const std::vector<std::string>& names) {
+  const std::vector<std::string>& c = columns();
+  return names == c || (names.size() == kColumnsBeforeGuidance &&
+                        std::equal(names.begin(), names.end(), c.begin()));
 }
 
 void appendDouble(double value, std::string& out) {
@@ -126,6 +137,10 @@ void CsvRowFormat::append(const RecordRow& row, std::string& out) {
     out += ',';
     appendInt(code, out);
   }
+  for (const double v : row.guidanceForce) {
+    out += ',';
+    appendDouble(v, out);
+  }
   out += '\n';
 }
 
@@ -139,7 +154,8 @@ std::string CsvRowFormat::parse(std::string_view line, RecordRow& row) {
     if (comma == std::string_view::npos) break;
     start = comma + 1;
   }
-  if (fields.size() != names.size())
+  const bool beforeGuidance = fields.size() == kColumnsBeforeGuidance;
+  if (fields.size() != names.size() && !beforeGuidance)
     return std::to_string(fields.size()) + " fields, expected " + std::to_string(names.size());
   std::size_t i = 0;
   const auto bad = [&](std::size_t k) {
@@ -164,6 +180,13 @@ std::string CsvRowFormat::parse(std::string_view line, RecordRow& row) {
   if (!parseCode(fields[i], row.paused, 2)) return bad(i);
   ++i;
   if (!parseCode(fields[i], row.forceClamped, 2)) return bad(i);
+  ++i;
+  row.guidanceForce = {};
+  if (beforeGuidance) return {};
+  for (double& v : row.guidanceForce) {
+    if (!parseDouble(fields[i], v)) return bad(i);
+    ++i;
+  }
   return {};
 }
 

@@ -20,15 +20,23 @@ inline constexpr int kEventCodes = 4;       // physics::DomainEvent
 inline constexpr int kEngagementCodes = 4;  // haptics::Engagement
 inline constexpr int kFaultCodes = 10;      // haptics::SafetyFault
 
+// Files written before guidance (issue 14) end at force_clamped; they read
+// back with a zero guidance force.
+inline constexpr std::size_t kColumnsBeforeGuidance = 38;
+
 class CsvRowFormat {
  public:
   static const std::vector<std::string>& columns();
   // The header line, with its '\n'.
   static std::string header();
+  // The header of a file written before the guidance columns, with its '\n'.
+  static std::string headerBeforeGuidance();
+  // This build's columns, or the ones before guidance.
+  static bool knownColumns(const std::vector<std::string>& names);
   // Appends the row as one line, with its '\n'.
   static void append(const haptics::RecordRow& row, std::string& out);
-  // One line without its '\n'. Empty string when it parsed, else what is
-  // wrong (naming the column).
+  // One line without its '\n' (this build's layout or the one before
+  // guidance). Empty string when it parsed, else what is wrong (naming the column).
   static std::string parse(std::string_view line, haptics::RecordRow& row);
 };
 

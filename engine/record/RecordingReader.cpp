@@ -20,12 +20,14 @@ std::vector<haptics::RecordRow> RecordingReader::loadCsv(const std::filesystem::
                                                          const ReadOptions& options, bool* truncatedTail) {
   const std::string text = readWholeFile(csvPath);
   const std::string where = csvPath.string() + ": line ";
-  const std::string header = CsvRowFormat::header();
   const std::size_t headerEnd = text.find('\n');
   if (headerEnd == std::string::npos)
     throw RecordError(where + "1: missing or incomplete header (an empty or cut-off file)");
-  if (withoutCarriageReturn(std::string_view(text).substr(0, headerEnd)) !=
-      std::string_view(header).substr(0, header.size() - 1))
+  const std::string_view firstLine = withoutCarriageReturn(std::string_view(text).substr(0, headerEnd));
+  const auto is = [&firstLine](const std::string& header) {
+    return firstLine == std::string_view(header).substr(0, header.size() - 1);
+  };
+  if (!is(CsvRowFormat::header()) && !is(CsvRowFormat::headerBeforeGuidance()))
     throw RecordError(where + "1: the header is not this build's trial CSV header");
 
   std::vector<haptics::RecordRow> rows;

@@ -69,6 +69,11 @@ std::string Sidecar::toJson(const TrialMeta& m, const SidecarStatus& s) {
                    {"damping_N_s_per_m", m.coupling.damping},
                    {"alpha", m.coupling.alpha},
                    {"visual_only", m.coupling.visualOnly}};
+  j["guidance"] = {{"kind", haptics::guidanceKindName(m.guidance.kind)},
+                   {"stiffness_N_per_m", m.guidance.stiffness},
+                   {"damping_N_s_per_m", m.guidance.damping},
+                   {"max_error_m", m.guidance.maxError},
+                   {"fade", m.guidance.scale}};
   j["device"] = {{"name", m.deviceName},
                  {"max_force_N", m.deviceSpec.maxForce},
                  {"max_stiffness_N_per_m", m.deviceSpec.maxStiffness},
@@ -128,6 +133,16 @@ void Sidecar::fromJson(const std::string& text, const std::string& source, Trial
     m.coupling.damping = c.at("damping_N_s_per_m").get<double>();
     m.coupling.alpha = c.at("alpha").get<double>();
     m.coupling.visualOnly = c.at("visual_only").get<bool>();
+    m.guidance = {};
+    if (j.contains("guidance")) {  // absent from sidecars written before guidance: none
+      const auto& g = j.at("guidance");
+      if (!haptics::parseGuidanceKind(g.at("kind").get<std::string>(), m.guidance.kind))
+        throw RecordError("guidance.kind: unknown kind '" + g.at("kind").get<std::string>() + "'");
+      m.guidance.stiffness = g.at("stiffness_N_per_m").get<double>();
+      m.guidance.damping = g.at("damping_N_s_per_m").get<double>();
+      m.guidance.maxError = g.at("max_error_m").get<double>();
+      m.guidance.scale = g.at("fade").get<double>();
+    }
     const auto& d = j.at("device");
     m.deviceName = d.at("name").get<std::string>();
     m.deviceSpec.maxForce = d.at("max_force_N").get<double>();
@@ -136,7 +151,7 @@ void Sidecar::fromJson(const std::string& text, const std::string& source, Trial
     m.deviceSpec.hasForceOutput = d.at("has_force_output").get<bool>();
     m.tickPeriod = j.at("sampling").at("tick_period_s").get<double>();
     m.recordEvery = j.at("sampling").at("record_every").get<int>();
-    if (j.at("columns").get<std::vector<std::string>>() != CsvRowFormat::columns())
+    if (!CsvRowFormat::knownColumns(j.at("columns").get<std::vector<std::string>>()))
       throw RecordError("its columns differ from this build's CSV columns");
     m.extra.clear();
     for (const auto& [key, value] : j.at("extra").items()) m.extra.emplace_back(key, value.get<std::string>());

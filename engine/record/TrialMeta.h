@@ -33,6 +33,7 @@ struct TrialMeta {
   std::uint64_t seed = 0;
   physics::HemisphereParams params;
   physics::CouplingDef coupling;
+  haptics::GuidanceDef guidance;   // the trial's haptic guidance (kind none: no guidance); scale = its fade value
   std::string deviceName = "device";
   haptics::DeviceSpec deviceSpec;  // its name field is not used (deviceName is)
   double tickPeriod = 0.001;       // servo period [s]

@@ -25,6 +25,9 @@ struct BotObservation {
   Triple3 contact{};                 // contact point on the plane, scene [m]
   Triple3 proxy{};                   // the proxy the device delivered last tick, scene [m]
   Triple3 force{};                   // coupling force on the mass point, scene [N]
+  // What the hand feels: the force the device rendered last tick (coupling
+  // and guidance, after the safety layer), turned back into the scene frame [N].
+  Triple3 deviceForce{};
   double proxyDistance = 0.0;        // proxy to mass point [m]
   bool engaged = false;              // the coupling is on (the proxy came within reach after engage)
   // The task (filled from the level's judge; zero and unset without one).

@@ -15,27 +15,29 @@ namespace hemiroll::script {
 // and the registry references of the nested views.
 struct ObservationViews {
   const BotObservation* current = nullptr;  // set only while act runs
-  int nested[12] = {};                       // state, target, tolerance, then the nine vectors
+  int nested[13] = {};                       // state, target, tolerance, then the ten vectors
 };
 
 namespace {
 
-constexpr const char* kVectorNames[9] = {"mass",   "mass_velocity", "centre", "face_x", "face_y",
-                                         "normal", "contact",       "proxy",  "force"};
+constexpr int kVectorCount = 10;
+constexpr int kNestedCount = 3 + kVectorCount;  // state, target, tolerance, then the vectors
+constexpr const char* kVectorNames[kVectorCount] = {"mass",   "mass_velocity", "centre", "face_x", "face_y",
+                                                    "normal", "contact",       "proxy",  "force",  "device_force"};
 
 // Field codes (the `codes` table maps each name to one). A view of kind k
 // answers only the codes that belong to it; anything else reads as nil.
 enum Code : int {
   kTime = 1, kProxyDistance, kEngaged, kHeld, kStage, kTimeLimit, kHoldTime,
-  kNested0 = 20,     // + 0..11: state, target, tolerance, mass, ..., force
+  kNested0 = 20,     // + 0..12: state, target, tolerance, mass, ..., force, device_force
   kSlot0 = 100,      // + state slot 0..11
   kComponent0 = 200  // + 0..2: x, y, z
 };
 enum ViewKind : int { kObs = 0, kState = 1, kTarget = 2, kTolerance = 3, kVector0 = 4 };
 
 const Triple3& vectorOf(const BotObservation& o, int i) {
-  const Triple3* vectors[9] = {&o.mass, &o.massVelocity, &o.centre, &o.faceX, &o.faceY,
-                               &o.normal, &o.contact, &o.proxy, &o.force};
+  const Triple3* vectors[kVectorCount] = {&o.mass,   &o.massVelocity, &o.centre, &o.faceX, &o.faceY,
+                                          &o.normal, &o.contact,      &o.proxy,  &o.force, &o.deviceForce};
   return *vectors[i];
 }
 
@@ -64,7 +66,7 @@ int observationIndex(lua_State* L) {
       case kTimeLimit: lua_pushnumber(L, o->timeLimit); return 1;
       case kHoldTime: lua_pushnumber(L, o->holdTime); return 1;
       default:
-        if (code >= kNested0 && code < kNested0 + 12) {
+        if (code >= kNested0 && code < kNested0 + kNestedCount) {
           lua_rawgeti(L, LUA_REGISTRYINDEX, views->nested[code - kNested0]);
           return 1;
         }
@@ -175,9 +177,9 @@ void BotScript::buildObservation() {
   };
   const char* scalars[] = {"time", "proxy_distance", "engaged", "held", "stage", "time_limit", "hold_time"};
   for (int i = 0; i < 7; ++i) code(scalars[i], kTime + i);
-  const char* nested[12] = {"state", "target", "tolerance"};
-  for (int i = 0; i < 9; ++i) nested[3 + i] = kVectorNames[i];
-  for (int i = 0; i < 12; ++i) code(nested[i], kNested0 + i);
+  const char* nested[kNestedCount] = {"state", "target", "tolerance"};
+  for (int i = 0; i < kVectorCount; ++i) nested[3 + i] = kVectorNames[i];
+  for (int i = 0; i < kNestedCount; ++i) code(nested[i], kNested0 + i);
   for (int i = 0; i < 12; ++i) code(physics::kStateNames[i], kSlot0 + i);
   code("x", kComponent0);
   code("y", kComponent0 + 1);
@@ -185,7 +187,7 @@ void BotScript::buildObservation() {
 
   pushView(L, views_.get(), kObs, codes);
   obsRef_ = luaL_ref(L, LUA_REGISTRYINDEX);
-  for (int i = 0; i < 12; ++i) {
+  for (int i = 0; i < kNestedCount; ++i) {
     pushView(L, views_.get(), i < 3 ? kState + i : kVector0 + (i - 3), codes);
     views_->nested[i] = luaL_ref(L, LUA_REGISTRYINDEX);
   }

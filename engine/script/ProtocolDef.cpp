@@ -1,5 +1,7 @@
 #include "engine/script/ProtocolDef.h"
 
+#include <algorithm>
+
 namespace hemiroll::script {
 
 physics::CouplingDef overriddenCoupling(const TrialOverrides& o, const physics::CouplingDef& level) {
@@ -32,6 +34,16 @@ bool isFolderName(const std::string& id) {
 
 std::string couplingMethodName(const physics::CouplingDef& coupling) {
   return coupling.visualOnly ? "visual" : physics::forceMethodName(coupling.method);
+}
+
+}  // namespace hemiroll::script
+
+namespace hemiroll::script {
+
+double GuidanceSpec::fadeAt(int trialInBlock) const {
+  if (fade.overTrials <= 1 || trialInBlock >= fade.overTrials) return fade.to;
+  const double progress = static_cast<double>(std::max(trialInBlock, 1) - 1) / (fade.overTrials - 1);
+  return fade.from + (fade.to - fade.from) * progress;
 }
 
 }  // namespace hemiroll::script

@@ -14,6 +14,27 @@
 
 namespace hemiroll::script {
 
+// Haptic guidance of a condition (docs/PROTOCOLS.md "Guidance"): the kind
+// and its gains as the protocol writes them, and how it fades over the
+// block's trials. The game turns it into haptics::GuidanceDef.
+struct GuidanceFade {
+  double from = 1.0;    // the fade value of the block's first trial, [0, 1]
+  double to = 1.0;      // ... of trial over_trials and every one after, [0, 1]
+  int overTrials = 1;   // >= 1
+};
+
+struct GuidanceSpec {
+  std::string kind = "none";  // "none", "autopilot" or "error_augmentation"
+  double stiffness = 0.0;     // [N/m]: autopilot's `stiffness`, error augmentation's `gain`
+  double damping = 0.0;       // [N s/m]
+  double maxError = 0.02;     // [m] the spring's reach
+  GuidanceFade fade;
+
+  // The fade value of the block's trial `trialInBlock` (1-based): linear
+  // from `from` at trial 1 to `to` at trial over_trials, then held.
+  double fadeAt(int trialInBlock) const;
+};
+
 // What a protocol may change in a level for a trial. Unset = the level's.
 struct TrialOverrides {
   std::optional<std::string> method;  // "M1", "M2", "M3" or "visual" (as a level's force.method)
@@ -21,8 +42,9 @@ struct TrialOverrides {
   std::optional<double> damping;      // kv [N s/m], >= 0
   std::optional<double> alpha;        // M3's normal / in-face gain ratio [-], > 0
   std::optional<double> timeLimit;    // [s], > 0
+  std::optional<GuidanceSpec> guidance;  // unset = none
 
-  bool empty() const { return !method && !stiffness && !damping && !alpha && !timeLimit; }
+  bool empty() const { return !method && !stiffness && !damping && !alpha && !timeLimit && !guidance; }
 };
 
 // The coupling a level gets under the overrides: the method replaces the

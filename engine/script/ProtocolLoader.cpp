@@ -71,7 +71,47 @@ std::optional<double> readNonNegative(const LuaTableReader& table, const char* k
   return value;
 }
 
-// method, kr, kv, alpha, time_limit of a block or a condition.
+double readFadeValue(const LuaTableReader& table, const char* key, double fallback) {
+  const double v = table.number(key, fallback);
+  if (v < 0.0 || v > 1.0) table.fail(key, "must be in [0, 1] (1 = full guidance, 0 = none)");
+  return v;
+}
+
+// guidance = { kind = ..., stiffness | gain = ..., damping = ..., max_error = ..., fade = { ... } }
+GuidanceSpec readGuidance(const LuaTableReader& table) {
+  rejectUnknownLevelKeys(table, {"kind", "stiffness", "gain", "damping", "max_error", "fade"});
+  GuidanceSpec g;
+  const auto kind = table.string("kind");
+  if (!kind) table.fail("kind", "missing; \"none\", \"autopilot\" or \"error_augmentation\"");
+  static constexpr std::initializer_list<const char*> kKinds = {"none", "autopilot", "error_augmentation"};
+  if (std::none_of(kKinds.begin(), kKinds.end(), [&](const char* k) { return *kind == k; })) {
+    const char* near = nearestName(*kind, kKinds);
+    table.fail("kind", "unknown guidance kind '" + *kind + "'" +
+                           (near ? " (did you mean '" + std::string(near) + "'?)"
+                                 : " (expected \"none\", \"autopilot\" or \"error_augmentation\")"));
+  }
+  g.kind = *kind;
+  // The spring's name says its sign: autopilot guidance has a stiffness
+  // (towards the plan), error augmentation a gain (away from it).
+  const char* spring = g.kind == "error_augmentation" ? "gain" : "stiffness";
+  const char* other = g.kind == "error_augmentation" ? "stiffness" : "gain";
+  if (table.typeOf(other) != LUA_TNIL)
+    table.fail(other, std::string("not a key of ") + g.kind + " guidance (its spring is '" + spring + "')");
+  const auto k = readNonNegative(table, spring, "N/m");
+  if (g.kind != "none" && !k) table.fail(spring, "missing; the guidance spring [N/m]");
+  g.stiffness = k.value_or(0.0);
+  g.damping = readNonNegative(table, "damping", "N s/m").value_or(0.0);
+  g.maxError = readPositive(table, "max_error", "m").value_or(g.maxError);
+  if (const auto fade = table.table("fade")) {
+    rejectUnknownLevelKeys(*fade, {"from", "to", "over_trials"});
+    g.fade.from = readFadeValue(*fade, "from", 1.0);
+    g.fade.to = readFadeValue(*fade, "to", g.fade.from);
+    g.fade.overTrials = readInteger(*fade, "over_trials", 1, kMaxRepetitions).value_or(1);
+  }
+  return g;
+}
+
+// method, kr, kv, alpha, time_limit, guidance of a block or a condition.
 TrialOverrides readOverrides(const LuaTableReader& table) {
   TrialOverrides o;
   if (const auto method = table.string("method")) {
@@ -87,6 +127,7 @@ TrialOverrides readOverrides(const LuaTableReader& table) {
   o.damping = readNonNegative(table, "kv", "damping, N s/m");
   o.alpha = readPositive(table, "alpha", "the normal / in-face gain ratio");
   o.timeLimit = readPositive(table, "time_limit", "s");
+  if (const auto guidance = table.table("guidance")) o.guidance = readGuidance(*guidance);
   return o;
 }
 
@@ -98,6 +139,7 @@ TrialOverrides merged(const TrialOverrides& block, const TrialOverrides& own) {
   if (own.damping) o.damping = own.damping;
   if (own.alpha) o.alpha = own.alpha;
   if (own.timeLimit) o.timeLimit = own.timeLimit;
+  if (own.guidance) o.guidance = own.guidance;
   return o;
 }
 
@@ -109,6 +151,7 @@ std::string defaultLabel(const TrialOverrides& o, const std::string& level) {
   if (o.damping) add("kv " + shortest(*o.damping));
   if (o.alpha) add("alpha " + shortest(*o.alpha));
   if (o.timeLimit) add("time limit " + shortest(*o.timeLimit) + " s");
+  if (o.guidance && o.guidance->kind != "none") add(o.guidance->kind == "autopilot" ? "guided" : "error augmented");
   return label.empty() ? fs::path(level).stem().string() : label;
 }
 
@@ -131,7 +174,7 @@ LuaTableReader entry(const LuaTableReader& list, int i) {
 ConditionDef readCondition(const LuaTableReader& table, const TrialOverrides& blockOverrides,
                            const std::optional<std::string>& blockLevel, const LuaTableReader& block,
                            const LevelFolders& folders) {
-  rejectUnknownLevelKeys(table, {"label", "level", "method", "kr", "kv", "alpha", "time_limit"});
+  rejectUnknownLevelKeys(table, {"label", "level", "method", "kr", "kv", "alpha", "time_limit", "guidance"});
   ConditionDef c;
   c.overrides = merged(blockOverrides, readOverrides(table));
   const auto own = table.string("level");
@@ -160,7 +203,7 @@ BreakDef readBreak(const LuaTableReader& table) {
 
 BlockDef readBlock(const LuaTableReader& block, int index, const LevelFolders& folders) {
   rejectUnknownLevelKeys(block, {"name", "instructions", "label", "level", "conditions", "method", "kr", "kv", "alpha",
-                                 "time_limit", "repetitions", "randomise", "break_after"});
+                                 "time_limit", "guidance", "repetitions", "randomise", "break_after"});
   BlockDef b;
   b.name = block.string("name").value_or("block " + std::to_string(index));
   if (b.name.empty()) block.fail("name", "must not be empty");

@@ -15,7 +15,7 @@ OutputFiles analysisFiles(const std::vector<AnalysedTrial>& trials, bool plots) 
   OutputFiles files;
   for (const AnalysedTrial& t : trials) {
     const std::string& id = t.data.id;
-    files.emplace_back(id + ".analysis.json", featuresJson(t.data, t.features));
+    files.emplace_back(id + ".analysis.json", featuresJson(t.data, t.features, t.guidance));
     if (!plots) continue;
     files.emplace_back(id + ".overview.svg", overviewSheet(t.data, t.features));
     files.emplace_back(id + ".contact.svg", report::renderLinePlot(contactTracePlot(t.data, t.features)));

@@ -46,7 +46,7 @@ std::string featureTableCsv(const std::vector<AnalysedTrial>& trials) {
        "steady_rate_spread_rad_per_s", "leaves", "leaves_per_cycle", "leaves_per_cycle_spread", "leaf_radius_m",
        "leaf_radius_spread_m", "outer_radius_m", "outer_radius_spread_m", "rose_start_s", "rose_end_s",
        "arc_curvature_per_m", "arc_curvature_error_per_m", "arc_rms_residual_m", "drift_speed_m_per_s", "loops",
-       "loop_spacing_s", "loop_spacing_m", "loops_per_leaf", "notes"});
+       "loop_spacing_s", "loop_spacing_m", "loops_per_leaf", "guidance_work_J", "guidance_opposed_share", "notes"});
   for (const AnalysedTrial& t : trials) {
     const analysis::TrialFeatures& f = t.features;
     const auto& p = f.phases;
@@ -62,7 +62,8 @@ std::string featureTableCsv(const std::vector<AnalysedTrial>& trials) {
          when(r.found, r.span.start), when(r.found, r.span.end), when(a.found, a.curvature),
          when(a.found, a.curvatureError), when(a.found, a.rmsResidual), number(a.driftSpeed),
          l.found ? std::to_string(l.count) : "", when(l.found, l.spacingTime.value), when(l.found, l.spacingArc.value),
-         when(f.loopsPerLeaf > 0.0, f.loopsPerLeaf), notesOf(t)});
+         when(f.loopsPerLeaf > 0.0, f.loopsPerLeaf), when(t.guidance.present, t.guidance.work),
+         when(t.guidance.present, t.guidance.opposedShare), notesOf(t)});
   }
   return out;
 }
@@ -70,8 +71,9 @@ std::string featureTableCsv(const std::vector<AnalysedTrial>& trials) {
 std::string featureTableMarkdown(const std::vector<AnalysedTrial>& trials) {
   std::string out =
       "| trial | duration [s] | steady phase [s] | rate [rad/s] | leaves | leaf radius [cm] | outer radius [cm] "
-      "| rose span [s] | arc curvature [1/m] | loops | loop spacing [s] | notes |\n"
-      "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+      "| rose span [s] | arc curvature [1/m] | loops | loop spacing [s] | guidance work [J] | opposed guidance [%] "
+      "| notes |\n"
+      "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const AnalysedTrial& t : trials) {
     const analysis::TrialFeatures& f = t.features;
     const auto& p = f.phases;
@@ -88,7 +90,8 @@ std::string featureTableMarkdown(const std::vector<AnalysedTrial>& trials) {
            (r.found ? shown(true, 100.0 * r.outerRadius.value, 2) + " ± " + shown(true, 100.0 * r.outerRadius.spread, 2) : "-") +
            " | " + shown(r.found, r.span.duration(), 1) + " | " + shown(f.helix.arc.found, f.helix.arc.curvature, 1) +
            " | " + (l.found ? std::to_string(l.count) : "-") + " | " + shown(l.found, l.spacingTime.value, 2) + " | " +
-           notes + " |\n";
+           shown(t.guidance.present, t.guidance.work, 4) + " | " +
+           shown(t.guidance.present, 100.0 * t.guidance.opposedShare, 1) + " | " + notes + " |\n";
   }
   return out;
 }

@@ -14,6 +14,7 @@ namespace hemiroll::game {
 struct AnalysedTrial {
   TrialData data;
   analysis::TrialFeatures features;
+  analysis::GuidanceWork guidance;
 };
 
 std::string featureTableCsv(const std::vector<AnalysedTrial>& trials);

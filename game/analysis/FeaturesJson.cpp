@@ -90,7 +90,8 @@ json helixJson(const analysis::HelixFeatures& h, const analysis::TimeInterval& w
 
 }  // namespace
 
-std::string featuresJson(const TrialData& trial, const analysis::TrialFeatures& f) {
+std::string featuresJson(const TrialData& trial, const analysis::TrialFeatures& f,
+                         const analysis::GuidanceWork& guidance) {
   json j;
   j["format"] = "hemiroll-analysis";
   j["format_version"] = 1;
@@ -104,6 +105,10 @@ std::string featuresJson(const TrialData& trial, const analysis::TrialFeatures& 
   j["rose"] = roseJson(f.rose, f.roseWindow, f.roseNote);
   j["helix"] = helixJson(f.helix, f.helixWindow, f.helixNote);
   if (f.loopsPerLeaf > 0.0) j["loops_per_leaf"] = f.loopsPerLeaf;
+  if (guidance.present)
+    j["guidance"] = {{"work_J", guidance.work},
+                     {"opposed_share", guidance.opposedShare},
+                     {"guided_time_s", guidance.guidedTime}};
   return j.dump(2) + "\n";
 }
 

@@ -6,12 +6,15 @@
 
 #include <string>
 
+#include "engine/analysis/GuidanceWork.h"
 #include "engine/analysis/TrialAnalyzer.h"
 #include "game/analysis/TrialData.h"
 
 namespace hemiroll::game {
 
 // Pretty-printed, with a final newline.
-std::string featuresJson(const TrialData& trial, const analysis::TrialFeatures& features);
+// `guidance`: written as "guidance" when present (a guided recording).
+std::string featuresJson(const TrialData& trial, const analysis::TrialFeatures& features,
+                         const analysis::GuidanceWork& guidance = {});
 
 }  // namespace hemiroll::game

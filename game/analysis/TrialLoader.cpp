@@ -50,6 +50,15 @@ TrialData readRecording(const fs::path& path) {
     trial.psi.push_back(row.state[slot::psi]);
     trial.proxyX.push_back(row.proxyPosition[0]);
     trial.proxyY.push_back(row.proxyPosition[1]);
+    trial.guideX.push_back(row.guidanceForce[0]);
+    trial.guideY.push_back(row.guidanceForce[1]);
+    trial.guideZ.push_back(row.guidanceForce[2]);
+    trial.proxyVX.push_back(row.proxyVelocity[0]);
+    trial.proxyVY.push_back(row.proxyVelocity[1]);
+    trial.proxyVZ.push_back(row.proxyVelocity[2]);
+    trial.handX.push_back(row.handForce[0]);
+    trial.handY.push_back(row.handForce[1]);
+    trial.handZ.push_back(row.handForce[2]);
   }
   if (trial.time.empty()) throw AnalysisInputError(path.string() + ": line 2: no rows after the header");
   return trial;

@@ -24,7 +24,8 @@ int runAnalyzeCommand(const std::vector<std::string>& args) {
   try {
     for (TrialData& data : loadTrials(o.inputs)) {
       analysis::TrialFeatures features = analysis::analyzeTrial(data.samples());
-      trials.push_back({std::move(data), std::move(features)});
+      const analysis::GuidanceWork guidance = analysis::guidanceWork(data.guidanceSamples());
+      trials.push_back({std::move(data), std::move(features), guidance});
     }
   } catch (const AnalysisInputError& e) {
     std::cerr << "hemiroll analyze: " << e.what() << "\n";

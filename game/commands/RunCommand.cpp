@@ -14,7 +14,7 @@
 #include "game/commands/CommandUsage.h"
 #include "game/commands/ExitCode.h"
 #include "game/commands/RunOptions.h"
-#include "game/trial/AutopilotBot.h"
+#include "game/trial/BuiltinBots.h"
 #include "game/trial/HeadlessTrial.h"
 #include "game/trial/JsonLine.h"
 #include "game/trial/ReplayCapture.h"
@@ -83,16 +83,10 @@ int runRunCommand(const std::vector<std::string>& args) {
     script::LevelLoadOptions levelOptions;
     levelOptions.seed = options.seed;
     level = script::LevelLoader(levelOptions).loadFile(options.levelPath);
-    if (options.botPath == kAutopilotBotName) {
-      AutopilotBotOptions autopilotOptions;
-      autopilotOptions.budget = options.autopilotBudget;
-      autopilotOptions.plannerThread = options.realtime;
-      bot = std::make_unique<AutopilotBot>(autopilotOptions);
-    } else {
-      script::BotLoadOptions botOptions;
-      botOptions.seed = options.seed;
-      bot = std::make_unique<script::BotScript>(options.botPath, botOptions);
-    }
+    AutopilotBotOptions autopilotOptions;
+    autopilotOptions.budget = options.autopilotBudget;
+    autopilotOptions.plannerThread = options.realtime;
+    bot = makeBot(options.botPath, options.seed, autopilotOptions);
   } catch (const script::ScriptError& e) {
     return badInput(e.what());
   }
@@ -100,6 +94,9 @@ int runRunCommand(const std::vector<std::string>& args) {
   TrialSettings settings;
   settings.seed = options.seed;
   settings.realtime = options.realtime;
+  haptics::parseGuidanceKind(options.guidance, settings.guidance.kind);  // checked by parseRunOptions
+  settings.guidance.stiffness = options.guidanceStiffness;
+  settings.guidance.damping = options.guidanceDamping.value_or(10.0);
   std::unique_ptr<TrialRecording> recording;
   TrialResult result;
   try {

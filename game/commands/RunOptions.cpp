@@ -6,7 +6,8 @@ namespace hemiroll::game {
 
 const char* runUsage() {
   return "usage: hemiroll run LEVEL.lua --bot BOT.lua|autopilot [--seed N] [--record DIR] [--realtime]\n"
-         "                    [--autopilot-budget X]\n"
+         "                    [--autopilot-budget X] [--guidance KIND [--guidance-stiffness K]\n"
+         "                    [--guidance-damping C]]\n"
          "\n"
          "Plays a level with a bot (a Lua module, e.g. scripts/bots/rose.lua) and prints one\n"
          "JSON line: level, bot, outcome, reason, time, score, medal, ticks, wall_time\n"
@@ -14,7 +15,8 @@ const char* runUsage() {
          "the same level, bot and seed give the same result bit for bit.\n"
          "\n"
          "  --bot BOT.lua   the bot that plays (required); \"autopilot\" is the built-in\n"
-         "                  planner (docs/AUTOPILOT.md)\n"
+         "                  planner (docs/AUTOPILOT.md), \"passive-hand\" a hand that only\n"
+         "                  yields to the device's force\n"
          "  --autopilot-budget X  the autopilot's planning effort, 0.25 to 4 (default 1):\n"
          "                  more tries per decision and a longer look ahead\n"
          "  --seed N        seed of the level's and the bot's hemiroll.random and the\n"
@@ -22,6 +24,11 @@ const char* runUsage() {
          "  --record DIR    record the trial into DIR (per-trial CSV + JSON sidecar and\n"
          "                  results.csv, docs/RECORDING.md)\n"
          "  --realtime      pace the servo ticks at 1 kHz on the wall clock\n"
+         "  --guidance KIND haptic guidance: \"autopilot\" pulls the device towards the\n"
+         "                  autopilot's plan, \"error_augmentation\" pushes it away,\n"
+         "                  \"none\" (default); try it with --bot passive-hand\n"
+         "  --guidance-stiffness K  the guidance spring [N/m] (default 200)\n"
+         "  --guidance-damping C    the guidance damper [N s/m] (default 10)\n"
          "  --help          print this help\n"
          "\n"
          "Exit codes: 0 success, 1 failure (the trial failed, or the recording could not\n"
@@ -38,6 +45,9 @@ RunOptionsResult parseRunOptions(const std::vector<std::string>& args) {
       .positional("level file", 1, [&](const std::string& path) { o.levelPath = path; })
       .option("--bot", cli::text(o.botPath, "a bot file"))
       .option("--record", cli::text(o.recordDir, "a directory"))
+      .option("--guidance", cli::text(o.guidance, "none, autopilot or error_augmentation"))
+      .option("--guidance-stiffness", cli::positiveNumber(o.guidanceStiffness, "a stiffness in N/m"))
+      .option("--guidance-damping", cli::positiveNumber(o.guidanceDamping, "a damping in N s/m"))
       .option("--autopilot-budget", cli::positiveNumber(o.autopilotBudget, "a planning effort from 0.25 to 4"))
       // Lua integers are signed 64-bit, and the bot receives the seed as one.
       .option("--seed", cli::unsignedUpTo(o.seed, 0x7fffffffffffffffULL, "a whole number from 0 to 9223372036854775807"));
@@ -47,6 +57,8 @@ RunOptionsResult parseRunOptions(const std::vector<std::string>& args) {
   else if (o.botPath.empty()) result.error = "missing --bot BOT.lua";
   else if (o.autopilotBudget < 0.25 || o.autopilotBudget > 4.0)
     result.error = "--autopilot-budget needs a planning effort from 0.25 to 4";
+  else if (o.guidance != "none" && o.guidance != "autopilot" && o.guidance != "error_augmentation")
+    result.error = "--guidance needs none, autopilot or error_augmentation, not '" + o.guidance + "'";
   return result;
 }
 

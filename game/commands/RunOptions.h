@@ -15,6 +15,12 @@ struct RunOptions {
   std::uint64_t seed = 0;                  // --seed: 0 .. 2^63 - 1
   std::optional<std::string> recordDir;    // --record DIR
   bool realtime = false;                   // --realtime
+  // --guidance KIND with --guidance-stiffness K [N/m] (a gain for error
+  // augmentation) and --guidance-damping C [N s/m]: haptic guidance
+  // towards (or away from) the autopilot's plan (docs/PROTOCOLS.md "Guidance").
+  std::string guidance = "none";
+  double guidanceStiffness = 200.0;
+  std::optional<double> guidanceDamping;
   bool help = false;                       // --help
 };
 

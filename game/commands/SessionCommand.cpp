@@ -11,6 +11,7 @@
 #include "game/commands/ExitCode.h"
 #include "game/commands/SessionOptions.h"
 #include "engine/script/BotScript.h"
+#include "game/trial/BuiltinBots.h"
 #include "game/trial/HeadlessTrial.h"
 #include "game/trial/JsonLine.h"
 #include "game/research/ResearchSession.h"
@@ -64,18 +65,18 @@ std::string summaryLine(const ResearchSession& s, const Tally& tally, bool stopp
 TrialResult playNext(ResearchSession& session, const std::string& botPath) {
   const ManifestTrial& trial = session.nextTrial();
   script::LoadedLevel level = session.loadNextLevel();
-  std::unique_ptr<script::BotScript> bot;
+  std::unique_ptr<script::BotPolicy> bot;
   try {
-    script::BotLoadOptions options;
-    options.seed = trial.seed;
-    bot = std::make_unique<script::BotScript>(botPath, options);
+    bot = makeBot(botPath, trial.seed);
   } catch (const script::ScriptError& e) {
     throw SessionError(SessionError::Kind::BadInput, e.what());
   }
-  const std::unique_ptr<TrialRecording> recording =
-      session.recordNext(level.def, trialLoopDef(level.def), "bot", botDeviceSpec());
+  haptics::ServoLoopDef loop = trialLoopDef(level.def);
+  loop.guidance = trial.guidance;
+  const std::unique_ptr<TrialRecording> recording = session.recordNext(level.def, loop, "bot", botDeviceSpec());
   TrialSettings settings;
   settings.seed = trial.seed;
+  settings.guidance = trial.guidance;
   recording->attach(settings);
   TrialResult result;
   try {
@@ -102,7 +103,8 @@ int runSessionCommand(const std::vector<std::string>& args) {
                 "people play sessions in the game window: run `hemiroll play`, open Research session (R), pick "
                 "the protocol, enter the participant and start; here a bot plays every trial (--bot BOT.lua)");
   try {
-    const script::BotScript check(*o.botPath);  // a broken bot is refused before anything is written
+    // A broken bot is refused before anything is written.
+    if (!isBuiltinBot(*o.botPath)) script::BotScript{*o.botPath};
   } catch (const script::ScriptError& e) {
     return fail(kExitUsage, e.what());
   }

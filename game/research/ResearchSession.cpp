@@ -96,6 +96,21 @@ ResearchSession::ResearchSession(const SessionRequest& request) {
   interrupted_ = point.interrupted;
 }
 
+haptics::GuidanceDef guidanceOf(const script::TrialOverrides& overrides, int trialInBlock) {
+  haptics::GuidanceDef g;
+  if (!overrides.guidance) {
+    g.scale = 0.0;  // results show fade 0: no guidance at all
+    return g;
+  }
+  const script::GuidanceSpec& spec = *overrides.guidance;
+  haptics::parseGuidanceKind(spec.kind, g.kind);  // the loader accepts only the three names
+  g.stiffness = spec.stiffness;
+  g.damping = spec.damping;
+  g.maxError = spec.maxError;
+  g.scale = spec.fadeAt(trialInBlock);
+  return g;
+}
+
 void ResearchSession::buildPlan(const SessionRequest& request, std::uint64_t seed) {
   const script::ProtocolPlan plan = script::expandProtocol(protocol_, seed);
   manifest_.experiment = protocol_.experiment;
@@ -129,6 +144,7 @@ void ResearchSession::buildPlan(const SessionRequest& request, std::uint64_t see
     t.alpha = coupling.alpha;
     t.timeLimit = condition.overrides.timeLimit.value_or(level.timeLimit);
     t.seed = p.seed;
+    t.guidance = guidanceOf(condition.overrides, p.trialInBlock);
     if (const script::BreakDef* b = script::ProtocolPlan::breakBefore(protocol_, p))
       t.breakBefore = ManifestBreak{b->message, b->minDuration, b->stop};
     manifest_.plan.push_back(std::move(t));
@@ -152,7 +168,10 @@ void ResearchSession::checkAgainst(const SessionManifest& previous) const {
       badInput(now.levelFile + " (" + now.trialId + ") changed since " + which + " started (content hash " +
                was.levelHash + ", now " + now.levelHash + ")" + fix);
     if (was.trialId != now.trialId || was.method != now.method || was.stiffness != now.stiffness ||
-        was.damping != now.damping || was.alpha != now.alpha || was.timeLimit != now.timeLimit || was.seed != now.seed)
+        was.damping != now.damping || was.alpha != now.alpha || was.timeLimit != now.timeLimit || was.seed != now.seed ||
+        was.guidance.kind != now.guidance.kind || was.guidance.stiffness != now.guidance.stiffness ||
+        was.guidance.damping != now.guidance.damping || was.guidance.maxError != now.guidance.maxError ||
+        was.guidance.scale != now.guidance.scale)
       badInput(now.trialId + " of " + which + " is planned differently now" + fix);
   }
 }
@@ -282,7 +301,11 @@ record::Fields ResearchSession::resultsFields(const ManifestTrial& t, const Tria
                           {"kv_N_s_per_m", number(t.damping)},
                           {"alpha", number(t.alpha)},
                           {"time_limit_s", number(t.timeLimit)},
-                          {"seed", std::to_string(t.seed)}};
+                          {"seed", std::to_string(t.seed)},
+                          {"guidance", haptics::guidanceKindName(t.guidance.kind)},
+                          {"guidance_stiffness_N_per_m", number(t.guidance.stiffness)},
+                          {"guidance_damping_N_s_per_m", number(t.guidance.damping)},
+                          {"guidance_fade", number(t.guidance.scale)}};
   for (auto& field : TrialRecording::scoreFields(result)) extra.push_back(std::move(field));
   extra.emplace_back("ticks", std::to_string(result.ticks));
   extra.emplace_back("player", player_);

@@ -33,6 +33,10 @@
 
 namespace hemiroll::game {
 
+// A condition's guidance for the block's trial `trialInBlock` (1-based):
+// the protocol's spec with the fade value of that trial as its scale.
+haptics::GuidanceDef guidanceOf(const script::TrialOverrides& overrides, int trialInBlock);
+
 struct SessionRequest {
   std::string protocolPath;
   std::string levelsDir;                  // "" = the protocol loader's default (ProtocolLoadOptions)

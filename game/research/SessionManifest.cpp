@@ -32,6 +32,11 @@ json trialJson(const ManifestTrial& t) {
             {"alpha", t.alpha},
             {"time_limit_s", t.timeLimit},
             {"seed", t.seed},
+            {"guidance", {{"kind", haptics::guidanceKindName(t.guidance.kind)},
+                          {"stiffness_N_per_m", t.guidance.stiffness},
+                          {"damping_N_s_per_m", t.guidance.damping},
+                          {"max_error_m", t.guidance.maxError},
+                          {"fade", t.guidance.scale}}},
             {"break_before", nullptr}};
   if (t.breakBefore)
     j["break_before"] = {{"message", t.breakBefore->message},
@@ -59,6 +64,15 @@ ManifestTrial trialOf(const json& j) {
   t.alpha = j.at("alpha").get<double>();
   t.timeLimit = j.at("time_limit_s").get<double>();
   t.seed = j.at("seed").get<std::uint64_t>();
+  if (j.contains("guidance")) {  // manifests written before guidance have none
+    const json& g = j.at("guidance");
+    if (!haptics::parseGuidanceKind(g.at("kind").get<std::string>(), t.guidance.kind))
+      throw json::other_error::create(501, "guidance.kind: unknown kind", &g);
+    t.guidance.stiffness = g.at("stiffness_N_per_m").get<double>();
+    t.guidance.damping = g.at("damping_N_s_per_m").get<double>();
+    t.guidance.maxError = g.at("max_error_m").get<double>();
+    t.guidance.scale = g.at("fade").get<double>();
+  }
   if (const json& b = j.at("break_before"); !b.is_null())
     t.breakBefore = ManifestBreak{b.at("message").get<std::string>(), b.at("min_duration_s").get<double>(),
                                   b.at("stop").get<bool>()};

@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include "engine/haptics/Guidance.h"
+
 namespace hemiroll::game {
 
 struct ManifestBreak {
@@ -40,6 +42,7 @@ struct ManifestTrial {
   double alpha = 0.0;          // [-]
   double timeLimit = 0.0;      // [s]
   std::uint64_t seed = 0;      // the level's and the bot's
+  haptics::GuidanceDef guidance;  // the trial's haptic guidance, its scale the fade value of this trial
   std::optional<ManifestBreak> breakBefore;
 };
 

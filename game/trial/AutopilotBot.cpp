@@ -87,4 +87,15 @@ std::string AutopilotBot::giveUpReason() const {
   return "autopilot: " + autopilot_->failure();
 }
 
+haptics::GuideSample guideSampleOf(AutopilotBot& autopilot, const script::BotObservation& obs) {
+  haptics::GuideSample sample;
+  sample.time = obs.time;
+  if (!autopilot.giveUpReason().empty()) return sample;  // no plan any more
+  const script::BotAction plan = autopilot.act(obs);
+  sample.position = plan.position;
+  if (plan.hasVelocity) sample.velocity = plan.velocity;
+  sample.valid = autopilot.giveUpReason().empty() && vec(sample.position).allFinite() && vec(sample.velocity).allFinite();
+  return sample;
+}
+
 }  // namespace hemiroll::game

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "engine/autopilot/Autopilot.h"
+#include "engine/haptics/Guidance.h"
 #include "engine/script/BotPolicy.h"
 
 namespace hemiroll::game {
@@ -39,5 +40,9 @@ class AutopilotBot final : public script::BotPolicy {
   std::unique_ptr<autopilot::Autopilot> autopilot_;
   autopilot::AutopilotInput input_;
 };
+
+// The autopilot's answer to `obs` as a plan for haptic guidance (or a hint):
+// where it would put the proxy now. Not valid once it has given up.
+haptics::GuideSample guideSampleOf(AutopilotBot& autopilot, const script::BotObservation& obs);
 
 }  // namespace hemiroll::game

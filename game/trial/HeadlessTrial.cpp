@@ -5,6 +5,7 @@
 
 #include "engine/physics/StateKinematics.h"
 #include "engine/script/ScriptError.h"
+#include "game/trial/AutopilotBot.h"
 #include "game/trial/BotDevice.h"
 #include "game/trial/ObservationBuilder.h"
 #include "game/trial/RealtimeTrial.h"
@@ -31,10 +32,11 @@ TrialResult HeadlessTrial::run() {
   haptics::ServoLoopDef loopDef = trialLoopDef(def);
   loopDef.recordRing = settings_.recordRing;
   loopDef.recordEvery = settings_.recordEvery;
+  loopDef.guidance = settings_.guidance;
   BotDevice device(botDeviceSpec(), loopDef.mapping, loopDef.period);
   haptics::ServoLoop loop(loopDef, device);
   TrialJudge judging(level_);
-  const ObservationBuilder observer(def.params);
+  const ObservationBuilder observer(def.params, loopDef.mapping);
   const physics::ForceDrivenState initial = physics::forceStateOf(loopDef.initialState);
 
   haptics::ServoSnapshot snapshot;  // defaults until the first tick publishes
@@ -51,6 +53,16 @@ TrialResult HeadlessTrial::run() {
     judging.judge().finish(TrialOutcome::Failure, std::string("bot error: ") + e.what(), loop.time());
   }
   judging.start(initial);  // on_start, and on_fail for a failed init
+
+  std::unique_ptr<AutopilotBot> guide;
+  if (settings_.guidance.active()) {
+    guide = std::make_unique<AutopilotBot>();
+    try {
+      guide->init(botLevelInfo(def, def.source), settings_.seed);
+    } catch (const script::ScriptError& e) {
+      judging.fail(std::string("guidance: ") + e.what());
+    }
+  }
 
   const double period = loopDef.period;
   const auto maxTicks = static_cast<std::uint64_t>(std::ceil(def.task.timeLimit * settings_.maxTimeFactor / period)) + 1;
@@ -72,6 +84,7 @@ TrialResult HeadlessTrial::run() {
       device.setPose(vec(action.position), vec(action.velocity));
     else
       device.setPose(vec(action.position));
+    if (guide) loop.publishGuide(guideSampleOf(*guide, obs));
 
     loop.tick();
     loop.latest(snapshot);

@@ -12,6 +12,10 @@
 // servo loop on its own thread at 1 kHz, the bot on this thread at 500 Hz
 // with a lock-free hand-over (no Lua in the servo thread).
 //
+// With guidance, a second policy (the autopilot) answers every observation
+// too; its answer moves nothing, it only becomes the loop's guide. An
+// autopilot that gives up leaves the trial without guidance (the bot plays on).
+//
 // Ends early, as a failure with a reason, when the bot fails ("bot error:
 // file:line: ...", from init or act), when it gives up ("autopilot: ..."),
 // when a safety watchdog trips ("safety: <fault>"), or when a level callback
@@ -20,6 +24,7 @@
 #include <cstdint>
 #include <functional>
 
+#include "engine/haptics/Guidance.h"
 #include "engine/haptics/RecordRow.h"
 #include "engine/script/BotPolicy.h"
 #include "engine/script/LevelLoader.h"
@@ -39,6 +44,10 @@ struct TrialSettings {
   haptics::RecordRing* recordRing = nullptr;
   int recordEvery = 10;
   std::function<void()> drainRecording;
+  // Haptic guidance (engine/haptics/Guidance.h): when active, the trial runs
+  // an autopilot beside the bot, on the same observations, and publishes its
+  // plan to the loop every tick; the device adds the guidance force.
+  haptics::GuidanceDef guidance;
 };
 
 class HeadlessTrial {

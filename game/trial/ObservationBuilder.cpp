@@ -33,6 +33,8 @@ void ObservationBuilder::fill(double time, const physics::ForceDrivenState& x, c
 
   out.proxy = snapshot.proxyPosition;
   out.force = snapshot.handForce;
+  const haptics::Triple& f = snapshot.renderedForce;
+  out.deviceForce = triple(mapping_.forceToScene(haptics::Vec3(f[0], f[1], f[2])));
   out.proxyDistance = snapshot.proxyDistance;
   out.engaged = snapshot.engagement == haptics::Engagement::Engaged;
 

@@ -6,6 +6,7 @@
 // computation on plain numbers; allocates nothing, so it may run every tick.
 
 #include "engine/haptics/ServoSnapshot.h"
+#include "engine/haptics/WorkspaceMapping.h"
 #include "engine/physics/HemisphereParams.h"
 #include "engine/physics/StateLayout.h"
 #include "engine/script/BotObservation.h"
@@ -15,7 +16,9 @@ namespace hemiroll::game {
 
 class ObservationBuilder {
  public:
-  explicit ObservationBuilder(const physics::HemisphereParams& params) : constants_(params) {}
+  // `mapping`: the device's, to turn the rendered force back into the scene.
+  ObservationBuilder(const physics::HemisphereParams& params, const haptics::WorkspaceMapping& mapping)
+      : constants_(params), mapping_(mapping) {}
 
   // `time`, `state`: the loop's after the last tick; `snapshot`: its last
   // published tick (proxy, force, engagement), or a default one before the
@@ -25,6 +28,7 @@ class ObservationBuilder {
 
  private:
   physics::ModelConstants constants_;
+  haptics::WorkspaceMapping mapping_;
 };
 
 }  // namespace hemiroll::game

@@ -37,7 +37,7 @@ TrialResult runRealtimeTrial(script::LoadedLevel& level, script::BotPolicy& bot,
   haptics::ServoLoop loop(loopDef, device);
   TrialJudge judging(level, settings.recordRing, settings.recordEvery);
   script::TaskJudge& judge = judging.judge();
-  const ObservationBuilder observer(def.params);
+  const ObservationBuilder observer(def.params, loopDef.mapping);
   const physics::ForceDrivenState initial = physics::forceStateOf(loopDef.initialState);
 
   haptics::ServoSnapshot snapshot;

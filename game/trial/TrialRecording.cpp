@@ -35,6 +35,7 @@ TrialRecording::TrialRecording(const TrialRecordingDef& def, const script::Level
     meta.seed = def.seed;
     meta.params = level.params;
     meta.coupling = loop.coupling;
+    meta.guidance = loop.guidance;
     meta.deviceName = def.deviceName;
     meta.deviceSpec = def.deviceSpec;
     meta.tickPeriod = loop.period;

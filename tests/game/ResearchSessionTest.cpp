@@ -131,8 +131,9 @@ TEST_F(ResearchSessionTest, EachFinishedTrialHasItsFilesAndOneResultsRowWithTheP
   const record::ResultsTable table = record::ResultsFile(folder() / "results.csv").read();
   const std::vector<std::string> plan = {"trial_index", "block", "block_name", "trial_in_block", "repetition",
                                          "condition", "condition_label", "level_file", "method", "kr_N_per_m",
-                                         "kv_N_s_per_m", "alpha", "time_limit_s", "seed", "has_score", "medal",
-                                         "ticks", "player"};
+                                         "kv_N_s_per_m", "alpha", "time_limit_s", "seed", "guidance",
+                                         "guidance_stiffness_N_per_m", "guidance_damping_N_s_per_m", "guidance_fade",
+                                         "has_score", "medal", "ticks", "player"};
   ASSERT_EQ(table.columns.size(), 12u + plan.size());
   EXPECT_EQ(std::vector<std::string>(table.columns.begin() + 12, table.columns.end()), plan);
   ASSERT_EQ(table.rows.size(), 1u);
@@ -142,8 +143,10 @@ TEST_F(ResearchSessionTest, EachFinishedTrialHasItsFilesAndOneResultsRowWithTheP
   EXPECT_EQ(row[12], "1");      // trial_index
   EXPECT_EQ(row[20], "M1");     // method
   EXPECT_EQ(row[24], "12");     // time_limit_s
-  EXPECT_EQ(row[28], "1500");   // ticks
-  EXPECT_EQ(row[29], "bot.lua");
+  EXPECT_EQ(row[26], "none");   // guidance
+  EXPECT_EQ(row[29], "0");      // guidance_fade: none at all
+  EXPECT_EQ(row[32], "1500");   // ticks
+  EXPECT_EQ(row[33], "bot.lua");
 }
 
 // A results.csv whose header the next row cannot join was found only when

@@ -7,13 +7,16 @@
 #include <gtest/gtest.h>
 #include <signal.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
 #include <thread>
 
+#include "engine/haptics/Guidance.h"
 #include "engine/record/DurableFile.h"
 #include "engine/record/RecordingReader.h"
 #include "engine/record/ResultsFile.h"
@@ -114,6 +117,52 @@ TEST(SessionCommandTest, ABotPlaysEveryTrialIntoTheSessionFolder) {
   EXPECT_EQ(again.exitCode, 0) << again.err;
   EXPECT_THAT(again.out, HasSubstr("\"done\":3,\"kept\":3,\"ran\":0"));
   EXPECT_EQ(record::readWholeFile(folder / "results.csv"), results);
+}
+
+// The shipped guidance study, end to end with the passive hand: the plan's
+// guidance and fade reach every trial's results row, sidecar and samples,
+// and `hemiroll analyze` reports what the guidance did.
+TEST(SessionCommandTest, TheGuidanceStudyRunsWithItsFadeInEveryRecord) {
+  TempDirectory dir;
+  const std::string protocol = kSource + "/levels/protocols/paper_guidance.lua";
+  const ProcessResult r = session({protocol, "--participant", "p01", "--data", dir.path().string(), "--bot", "passive-hand"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const fs::path folder = dir.path() / "paper-guidance" / "p01" / "1";
+  const record::ResultsTable table = record::ResultsFile(folder / "results.csv").read();
+  ASSERT_EQ(table.rows.size(), 21u);
+  const auto column = [&](const std::string& name) {
+    const auto at = std::find(table.columns.begin(), table.columns.end(), name);
+    EXPECT_NE(at, table.columns.end()) << name;
+    return static_cast<std::size_t>(at - table.columns.begin());
+  };
+  const std::size_t kind = column("guidance"), fade = column("guidance_fade"), block = column("block_name");
+  for (std::size_t i = 0; i < table.rows.size(); ++i) {
+    const std::vector<std::string>& row = table.rows[i];
+    const bool training = row[block] == "training";
+    EXPECT_EQ(row[kind], training ? "autopilot" : "none") << i;
+    // Training trials 1..12 fade linearly from 1 to 0: trial k has 1 - (k - 1) / 11.
+    const double expected = training ? 1.0 - static_cast<double>(i - 3) / 11.0 : 0.0;
+    EXPECT_NEAR(std::stod(row[fade]), expected, 1e-15) << i;
+    const record::Recording rec = record::RecordingReader::load(folder / (row[2] + ".csv"));
+    EXPECT_EQ(haptics::guidanceKindName(rec.meta.guidance.kind), row[kind]);
+    EXPECT_NEAR(rec.meta.guidance.scale, expected, 1e-15);
+    double largest = 0.0;
+    for (const haptics::RecordRow& sample : rec.rows)
+      largest = std::max(largest, std::abs(sample.guidanceForce[0]) + std::abs(sample.guidanceForce[1]));
+    if (training && expected > 0.0)
+      EXPECT_GT(largest, 0.01) << row[2] << ": a guided trial with no guidance force";
+    else
+      EXPECT_EQ(largest, 0.0) << row[2];
+  }
+  const ProcessResult analysed = runProcess(kBinary, {"analyze", (folder / "trial-004.csv").string(),
+                                                      (folder / "trial-001.csv").string()});
+  ASSERT_EQ(analysed.exitCode, 0) << analysed.err;
+  EXPECT_THAT(analysed.out, HasSubstr("guidance work [J] | opposed guidance [%]"));
+  // trial-004 is guided (a number), trial-001 is not ("-").
+  const std::vector<std::string> out = lines(analysed.out);
+  ASSERT_EQ(out.size(), 4u) << analysed.out;
+  EXPECT_THAT(out[2], StartsWith("| trial-004 |"));
+  EXPECT_THAT(out[3], HasSubstr("| - | - | phases:"));
 }
 
 TEST(SessionCommandTest, BadInputIsOneSentenceAndExitTwoWithNothingWritten) {

@@ -12,8 +12,11 @@ namespace {
 
 TEST(CsvRowFormatTest, EveryColumnNamedOnceWithItsUnit) {
   const auto& c = CsvRowFormat::columns();
-  // time, tick, 12 states, 5 triples, 4 doubles, 5 codes.
-  EXPECT_EQ(c.size(), 2u + 12u + 15u + 4u + 5u);
+  // time, tick, 12 states, 5 triples, 4 doubles, 5 codes, then the guidance triple.
+  EXPECT_EQ(c.size(), 2u + 12u + 15u + 4u + 5u + 3u);
+  EXPECT_EQ(kColumnsBeforeGuidance, c.size() - 3u);
+  EXPECT_EQ(c[kColumnsBeforeGuidance - 1], "force_clamped");
+  EXPECT_EQ(c[kColumnsBeforeGuidance], "Fguide_x_N");
   EXPECT_EQ(c.front(), "time_s");
   EXPECT_EQ(c[2], "x_p_m");
   EXPECT_EQ(c[13], "psi_rad");
@@ -35,6 +38,32 @@ TEST(CsvRowFormatTest, RandomBitPatternsRoundTripExactly) {
     ASSERT_EQ(CsvRowFormat::parse(std::string_view(line).substr(0, line.size() - 1), back), "");
     ASSERT_TRUE(test::sameBits(row, back)) << line;
   }
+}
+
+// A file written before the guidance columns reads back, with no guidance
+// force; this build's lines with a guidance force keep it exactly.
+TEST(CsvRowFormatTest, LinesFromBeforeGuidanceReadWithZeroGuidance) {
+  std::mt19937_64 rng(14);
+  haptics::RecordRow row = test::randomRow(rng, 10);
+  row.guidanceForce = {0.5, -0.25, 1e-300};
+  std::string line;
+  CsvRowFormat::append(row, line);
+  line.pop_back();
+  haptics::RecordRow back;
+  ASSERT_EQ(CsvRowFormat::parse(line, back), "");
+  EXPECT_EQ(back.guidanceForce, row.guidanceForce);
+  // Cut the three guidance fields: the old layout.
+  std::string old = line;
+  for (int i = 0; i < 3; ++i) old.erase(old.rfind(','));
+  ASSERT_EQ(CsvRowFormat::parse(old, back), "");
+  EXPECT_EQ(back.guidanceForce, (haptics::Triple{0.0, 0.0, 0.0}));
+  row.guidanceForce = {};
+  EXPECT_TRUE(test::sameBits(row, back));
+  EXPECT_TRUE(CsvRowFormat::knownColumns(std::vector<std::string>(
+      CsvRowFormat::columns().begin(), CsvRowFormat::columns().begin() + kColumnsBeforeGuidance)));
+  // One field short of either layout is refused, naming the count.
+  old.erase(old.rfind(','));
+  EXPECT_EQ(CsvRowFormat::parse(old, back).find("37 fields, expected 41"), 0u);
 }
 
 TEST(CsvRowFormatTest, EdgeValuesRoundTripExactly) {
@@ -93,9 +122,9 @@ TEST(CsvRowFormatTest, BadFieldsAreNamed) {
   EXPECT_NE(CsvRowFormat::parse(bad, row).find("column 3 (x_p_m)"), std::string::npos) << CsvRowFormat::parse(bad, row);
   // One field short.
   EXPECT_NE(CsvRowFormat::parse(line.substr(0, line.rfind(',')), row).find("fields, expected"), std::string::npos);
-  // An enum code out of range (fault is the third last column).
+  // An enum code out of range (fault is the third last column before the guidance triple).
   edited = fields;
-  edited[edited.size() - 3] = std::to_string(kFaultCodes);
+  edited[kColumnsBeforeGuidance - 3] = std::to_string(kFaultCodes);
   const std::string code = join(edited);
   EXPECT_NE(CsvRowFormat::parse(code, row).find("(fault)"), std::string::npos) << CsvRowFormat::parse(code, row);
   EXPECT_FALSE(parseDouble("1.0x", row.time));

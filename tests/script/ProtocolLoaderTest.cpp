@@ -132,7 +132,7 @@ TEST(ProtocolLoaderFiles, AMissingProtocolFileIsOneSentenceWithLineOne) {
 }
 
 TEST(ProtocolLoaderFiles, TheShippedProtocolsLoad) {
-  for (const char* name : {"paper_two_days.lua", "tutorial_demo.lua"}) {
+  for (const char* name : {"paper_two_days.lua", "tutorial_demo.lua", "paper_guidance.lua"}) {
     const std::string path = kLevels + "/protocols/" + name;
     ProtocolDef def;
     ASSERT_NO_THROW(def = ProtocolLoader().loadFile(path)) << path;
@@ -192,6 +192,37 @@ TEST(ProtocolLoaderFiles, TheDocumentedExampleLoads) {
   ASSERT_TRUE(def.blocks[1].breakAfter);
   EXPECT_TRUE(def.blocks[1].breakAfter->stop);
   EXPECT_EQ(*def.blocks[2].conditions[0].overrides.timeLimit, 30.0);
+}
+
+TEST_F(ProtocolLoaderTest, GuidanceIsReadMergedAndFadedPerTrial) {
+  const ProtocolDef def = load(
+      "return { experiment = 'g', blocks = {\n"
+      " { level = 'mine.lua', repetitions = 5,\n"
+      "   guidance = { kind = 'autopilot', stiffness = 300, damping = 10, max_error = 0.01,\n"
+      "                fade = { from = 1, to = 0, over_trials = 3 } },\n"
+      "   conditions = { {}, { guidance = { kind = 'error_augmentation', gain = 40 } }, { guidance = { kind = 'none' } } } } } }");
+  const std::vector<ConditionDef>& c = def.blocks.at(0).conditions;
+  ASSERT_EQ(c.size(), 3u);
+  ASSERT_TRUE(c[0].overrides.guidance);
+  const GuidanceSpec& guided = *c[0].overrides.guidance;
+  EXPECT_EQ(guided.kind, "autopilot");
+  EXPECT_EQ(guided.stiffness, 300.0);
+  EXPECT_EQ(guided.damping, 10.0);
+  EXPECT_EQ(guided.maxError, 0.01);
+  EXPECT_EQ(c[0].label, "guided");
+  // The fade: 1 at the block's first trial, linear to 0 at the third, then held.
+  EXPECT_EQ(guided.fadeAt(1), 1.0);
+  EXPECT_EQ(guided.fadeAt(2), 0.5);
+  EXPECT_EQ(guided.fadeAt(3), 0.0);
+  EXPECT_EQ(guided.fadeAt(5), 0.0);
+  // A condition's own guidance replaces the block's whole (no field merge).
+  ASSERT_TRUE(c[1].overrides.guidance);
+  EXPECT_EQ(c[1].overrides.guidance->kind, "error_augmentation");
+  EXPECT_EQ(c[1].overrides.guidance->stiffness, 40.0);
+  EXPECT_EQ(c[1].overrides.guidance->damping, 0.0);
+  EXPECT_EQ(c[1].overrides.guidance->fadeAt(1), 1.0);  // no fade given: full every trial
+  EXPECT_EQ(c[1].label, "error augmented");
+  EXPECT_EQ(c[2].overrides.guidance->kind, "none");
 }
 
 struct ErrorCase {
@@ -265,6 +296,20 @@ INSTANTIATE_TEST_SUITE_P(
         ErrorCase{"return { experiment = 'e',\n seed = 0.5, blocks = { { level = 'mine.lua' } } }", "p.lua:2: seed: expected a whole number"},
         ErrorCase{"return { experiment = 'e', blocks = {\n { level = 'mine.lua', repetitions = 10000, conditions = {\n {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {} } } } }",
                   "p.lua:2: blocks[1].repetitions: the plan would exceed 100000 trials"},
+        ErrorCase{"return { experiment = 'e', blocks = {\n { level = 'mine.lua',\n   guidance = { kind = 'autopilt', stiffness = 300 } } } }",
+                  "p.lua:3: blocks[1].guidance.kind: unknown guidance kind 'autopilt' (did you mean 'autopilot'?)"},
+        ErrorCase{"return { experiment = 'e', blocks = {\n { level = 'mine.lua',\n   guidance = { kind = 'autopilot', stifness = 300 } } } }",
+                  "p.lua:3: blocks[1].guidance.stifness: unknown key 'stifness' (did you mean 'stiffness'?)"},
+        ErrorCase{"return { experiment = 'e', blocks = {\n { level = 'mine.lua',\n   guidance = { kind = 'autopilot' } } } }",
+                  "p.lua:3: blocks[1].guidance.stiffness: missing; the guidance spring [N/m]"},
+        ErrorCase{"return { experiment = 'e', blocks = {\n { level = 'mine.lua',\n   guidance = { kind = 'error_augmentation', stiffness = 50 } } } }",
+                  "p.lua:3: blocks[1].guidance.stiffness: not a key of error_augmentation guidance (its spring is 'gain')"},
+        ErrorCase{"return { experiment = 'e', blocks = {\n { level = 'mine.lua', guidance = { kind = 'autopilot', stiffness = 300,\n   fade = { from = 1, to = 1.5 } } } } }",
+                  "p.lua:3: blocks[1].guidance.fade.to: must be in [0, 1]"},
+        ErrorCase{"return { experiment = 'e', blocks = {\n { level = 'mine.lua', guidance = { kind = 'autopilot', stiffness = 300,\n   fade = { over_trials = 0 } } } } }",
+                  "p.lua:3: blocks[1].guidance.fade.over_trials: expected a whole number from 1 to 10000"},
+        ErrorCase{"return { experiment = 'e', blocks = {\n { level = 'mine.lua', guidance = { kind = 'autopilot',\n   stiffness = -1 } } } }",
+                  "p.lua:3: blocks[1].guidance.stiffness: must be >= 0 (N/m)"},
         ErrorCase{"return 'protocol'", "p.lua:1: the protocol must return a table, got string"},
         ErrorCase{"return {\n experiment = 'e',\n", "p.lua:3: unexpected symbol near <eof>"},
         ErrorCase{"local x = io.open('f')\nreturn {}", "p.lua:1: attempt to index a nil value (global 'io')"},

@@ -27,7 +27,7 @@ template <typename Visit>
 void forEachRowDouble(haptics::RecordRow& r, Visit visit) {
   visit(r.time);
   for (auto& v : r.state) visit(v);
-  for (auto* t : {&r.proxyPosition, &r.proxyVelocity, &r.handForce, &r.modelForce, &r.renderedForce})
+  for (auto* t : {&r.proxyPosition, &r.proxyVelocity, &r.handForce, &r.modelForce, &r.renderedForce, &r.guidanceForce})
     for (auto& v : *t) visit(v);
   visit(r.proxyDistance);
   visit(r.injectedEnergy);

@@ -1,0 +1,21 @@
+#pragma once
+// What `--bot NAME` means everywhere a bot plays (run, session, the game's
+// watch mode): a built-in name ("autopilot", "passive-hand") or the path of
+// a Lua bot.
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "engine/script/BotPolicy.h"
+#include "game/trial/AutopilotBot.h"
+
+namespace hemiroll::game {
+
+bool isBuiltinBot(const std::string& name);
+
+// Throws script::ScriptError for a Lua bot that does not load.
+std::unique_ptr<script::BotPolicy> makeBot(const std::string& nameOrPath, std::uint64_t seed,
+                                           const AutopilotBotOptions& autopilot = {});
+
+}  // namespace hemiroll::game
