@@ -124,6 +124,9 @@ class ServoLoop {
   void publishGuide(const GuideSample& sample) { guides_.write(sample); }
   // One consumer thread. False until the first tick has published.
   bool latest(ServoSnapshot& out) { return snapshots_.read(out); }
+  // The same snapshots for a second consumer thread (a planner beside the
+  // renderer: the autopilot watching or hinting in the window).
+  bool latestForPlanner(ServoSnapshot& out) { return plannerSnapshots_.read(out); }
 
   const TimingHistogram& lateness() const { return lateness_; }
   const TimingHistogram& wakePeriod() const { return period_; }
@@ -168,6 +171,7 @@ class ServoLoop {
 
   SpscRing<ServoCommand, kCommandCapacity> commands_;
   TripleBuffer<ServoSnapshot> snapshots_;
+  TripleBuffer<ServoSnapshot> plannerSnapshots_;
   TripleBuffer<GuideSample> guides_;
   TimingHistogram lateness_, period_;
   std::atomic<std::uint64_t> ticks_{0}, missed_{0}, wakeups_{0};

@@ -86,6 +86,11 @@ struct RenderScene {
 
   GhostPose ghost;                           // same radius as the hemisphere
 
+  // The autopilot's hint: where it would put the proxy now, drawn as a small
+  // marker there and an arrow from the proxy to it. Moves nothing.
+  bool showHint = false;
+  Vec3d hintFrom{}, hintTo{};                // base frame [m]
+
   CameraDef camera;
 };
 

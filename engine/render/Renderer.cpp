@@ -21,6 +21,7 @@ constexpr Rgba kFloor{0.82f, 0.81f, 0.78f, 1.0f};
 constexpr Rgba kMassPoint{0.95f, 0.75f, 0.10f, 1.0f};
 constexpr Rgba kProxy{0.20f, 0.45f, 0.95f, 0.85f};
 constexpr Rgba kArrow{0.95f, 0.30f, 0.10f, 1.0f};
+constexpr Rgba kHint{0.25f, 0.95f, 0.55f, 0.75f};  // the autopilot's hint: green, apart from the proxy's blue
 constexpr Rgba kWhite{1, 1, 1, 1};
 constexpr Rgba kGhost{0.55f, 0.75f, 1.0f, 0.35f};  // translucent: the live hemisphere shows through
 constexpr double kMassPointRadii = 0.12;  // [R]: visible at the follow distance, small beside the face
@@ -215,6 +216,20 @@ void Renderer::drawSolids(const RenderScene& s) {
     model.topLeftCorner<3, 3>() = align * Eigen::Vector3f(radius, radius, float(length)).asDiagonal();
     model.topRightCorner<3, 1>() = massPoint;
     drawMesh(arrow_, model, kArrow, true);
+  }
+
+  if (s.showHint) {
+    const Eigen::Vector3f from = toVec(s.hintFrom), to = toVec(s.hintTo);
+    drawMesh(proxy_, translateScale(to, 1.6f * float(kProxyRadii) * radius), kHint, true);
+    const Eigen::Vector3f way = to - from;
+    if (way.norm() > 0.05f * radius) {  // the arrow's mesh spans z in [0, 1]: scaled to the way
+      const Eigen::Matrix3f align =
+          Eigen::Quaternionf::FromTwoVectors(Eigen::Vector3f::UnitZ(), way.normalized()).toRotationMatrix();
+      Eigen::Matrix4f model = Eigen::Matrix4f::Identity();
+      model.topLeftCorner<3, 3>() = align * Eigen::Vector3f(radius, radius, way.norm()).asDiagonal();
+      model.topRightCorner<3, 1>() = from;
+      drawMesh(arrow_, model, kHint, true);
+    }
   }
 
   if (s.showProxy) {

@@ -65,6 +65,10 @@ bool SceneSanitizer::sanitize(const RenderScene& in, RenderScene& out) {
   out.forceScale = forceOk ? in.forceScale : 0.0;
   if ((in.showProxy && !out.showProxy) || !forceOk) clean = false;
 
+  out.showHint = in.showHint && finite(in.hintFrom) && finite(in.hintTo);
+  out.hintFrom = out.showHint ? in.hintFrom : Vec3d{};
+  out.hintTo = out.showHint ? in.hintTo : Vec3d{};
+
   // A ghost with a bad pose is left out (the live hemisphere matters more).
   out.ghost = in.ghost;
   if (in.ghost.shown && !(finite(in.ghost.centre) && finite(in.ghost.orientation) &&

@@ -12,7 +12,7 @@ constexpr KeyActionInfo kActions[kKeyActionCount] = {
     {"take_hold", "take hold", "Space"},  {"let_go", "let go", "Backspace"},
     {"camera", "next camera", "Tab"},     {"orbit_left", "orbit left", "Left"},
     {"orbit_right", "orbit right", "Right"}, {"orbit_up", "orbit up", "Up"},
-    {"orbit_down", "orbit down", "Down"}};
+    {"orbit_down", "orbit down", "Down"}, {"hint", "autopilot hint", "H"}};
 }  // namespace
 
 const KeyActionInfo& keyActionInfo(KeyAction action) { return kActions[static_cast<int>(action)]; }

@@ -11,8 +11,8 @@
 
 namespace hemiroll::game {
 
-enum class KeyAction : std::uint8_t { TakeHold, LetGo, CycleCamera, OrbitLeft, OrbitRight, OrbitUp, OrbitDown };
-inline constexpr int kKeyActionCount = 7;
+enum class KeyAction : std::uint8_t { TakeHold, LetGo, CycleCamera, OrbitLeft, OrbitRight, OrbitUp, OrbitDown, Hint };
+inline constexpr int kKeyActionCount = 8;
 
 struct KeyActionInfo {
   const char* id;          // the key under "keys" in settings.json

@@ -16,10 +16,16 @@ void settle(App& app, int frames = 3) {
   for (int i = 0; i < frames; ++i) app.frame();
 }
 
-void stop(App& app, std::vector<ScreenTourStop>& out) {
+// `name`: the picture's name when it is not the screen's own.
+void stop(App& app, std::vector<ScreenTourStop>& out, const std::string& name = "") {
   app.requestCapture();
   app.frame();
-  out.push_back({app.topScreen(), app.capture()});
+  out.push_back({name.empty() ? app.topScreen() : name, app.capture()});
+}
+
+void frameFor(App& app, double seconds) {
+  const auto start = std::chrono::steady_clock::now();
+  while (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < seconds) app.frame();
 }
 
 }  // namespace
@@ -67,6 +73,27 @@ std::vector<ScreenTourStop> runScreenTour(App& app, const ScreenTourDef& def) {
   app.inject(platform::keyDownEvent("Q"));
   settle(app);
   stop(app, stops);  // results
+  if (!def.autopilot) return stops;
+
+  // The autopilot: watched from the level select, then taken over with the
+  // hint shown (the green arrow: where it would put the proxy now).
+  app.inject(platform::keyDownEvent("Escape"));
+  settle(app);
+  app.inject(platform::keyDownEvent("A"));
+  settle(app, 2);
+  frameFor(app, def.playSeconds);
+  stop(app, stops, "watch");
+  app.inject(platform::keyDownEvent("Space"));  // take over
+  app.inject(platform::keyDownEvent("H"));      // the hint
+  ScriptedMouse after;
+  const auto handed = std::chrono::steady_clock::now();
+  for (;;) {
+    const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - handed).count();
+    if (t >= 2.5) break;  // long enough for the mouse's circle to part from the autopilot's plan
+    after.step(app, t);
+    app.frame();
+  }
+  stop(app, stops, "hint");
   return stops;
 }
 

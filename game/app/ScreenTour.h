@@ -18,6 +18,9 @@ class App;
 struct ScreenTourDef {
   std::string level;        // path of the level to pick, as the level select lists it
   double playSeconds = 2.0; // [s] of wall time played by the scripted mouse
+  // After results: back to the level select, watch the autopilot ("watch"),
+  // take over with the hint on ("hint").
+  bool autopilot = true;
 };
 
 struct ScreenTourStop {

@@ -17,6 +17,7 @@
 #include "game/cli/ArgumentReader.h"
 #include "game/commands/CommandUsage.h"
 #include "game/commands/ExitCode.h"
+#include "game/screens/FreePlay.h"
 #include "game/screens/PlayScreen.h"
 
 namespace hemiroll::game {
@@ -32,7 +33,7 @@ bool haveDisplay() {
 }
 
 int autoplay(App& app, const PlayOptions& o) {
-  app.screens().push(std::make_unique<PlayScreen>(app, o.level));
+  app.screens().push(std::make_unique<PlayScreen>(app, std::make_unique<FreePlay>(app, o.level, o.watch)));
   std::vector<double> frameSeconds;
   frameSeconds.reserve(static_cast<std::size_t>(o.autoplay * 2000) + 16);
   const auto start = std::chrono::steady_clock::now();
@@ -41,14 +42,25 @@ int autoplay(App& app, const PlayOptions& o) {
   haptics::LoopTimingSummary timing;
   std::string engagement = "never engaged";
   std::string scheduling;
+  std::uint64_t plans = 0;
+  std::string autopilotNote, outcome = "the trial was still running";
   while (true) {
     const auto now = std::chrono::steady_clock::now();
     const double t = std::chrono::duration<double>(now - start).count();
     if (t >= o.autoplay) break;
-    mouse.step(app, t);
+    if (!o.watch) mouse.step(app, t);  // watching: the autopilot holds the proxy
     if (!app.frame()) break;
     auto* play = dynamic_cast<PlayScreen*>(app.screens().top());
     if (play && play->session()) {
+      plans = play->session()->autopilotPlans();
+      autopilotNote = play->session()->autopilotNote();
+      const script::TaskJudge& judge = play->session()->judging().judge();
+      if (judge.finished()) {
+        char line[160];
+        std::snprintf(line, sizeof line, "%s at %.2f s (%.*s)", script::trialOutcomeName(judge.outcome()),
+                      judge.finishTime(), static_cast<int>(judge.reason().size()), judge.reason().data());
+        outcome = line;
+      }
       if (play->session()->snapshot().engagement == haptics::Engagement::Engaged) engagement = "engaged";
       timing = play->session()->timing();
       scheduling = play->session()->realtimeNote();
@@ -72,6 +84,10 @@ int autoplay(App& app, const PlayOptions& o) {
               timing.latenessP99 * 1e6, timing.latenessP999 * 1e6, timing.latenessMax * 1e6,
               static_cast<unsigned long long>(timing.missedTicks));
   std::printf("%sservo thread: %s\n", kPrefix, scheduling.c_str());
+  std::printf("%strial: %s\n", kPrefix, outcome.c_str());
+  if (o.watch)
+    std::printf("%sautopilot: %llu plans (%.0f per second)%s%s\n", kPrefix, static_cast<unsigned long long>(plans),
+                static_cast<double>(plans) / o.autoplay, autopilotNote.empty() ? "" : "; ", autopilotNote.c_str());
   return kExitOk;
 }
 
@@ -98,6 +114,8 @@ std::string playUsage() {
          "  --no-vsync          draw frames as fast as they come\n"
          "  --autoplay SECONDS  a scripted mouse plays LEVEL for SECONDS, then the frame rate\n"
          "                      and the servo loop's timing are printed\n"
+         "  --watch             the autopilot plays LEVEL (click or the take-hold key takes over);\n"
+         "                      with --autoplay, the autopilot plays instead of the scripted mouse\n"
          "  --tour DIR          title, settings, level select (LEVEL picked), play, pause, results as\n"
          "                      PNGs in DIR (--autoplay sets the seconds played)\n";
 }
@@ -116,14 +134,15 @@ PlayOptionsResult parsePlayOptions(const std::vector<std::string>& args) {
   reader.flag("--help", [&] { o.help = true; })
       .flag("-h", [&] { o.help = true; })
       .flag("--no-vsync", [&] { o.vsync = false; })
+      .flag("--watch", [&] { o.watch = true; })
       .positional("level", 1, [&](const std::string& path) { o.level = path; })
       .option("--tour", cli::text(o.tourDir, "a directory"))
       .option("--levels", cli::text(o.levelsDir, "a directory"))
       .option("--size", cli::size(o.width, o.height, 64, 16384))
       .option("--autoplay", cli::numberIn(o.autoplay, 1e-3, 3600.0, "seconds in [0.001, 3600]"));
   r.error = reader.read(args);
-  if (r.error.empty() && (o.autoplay > 0.0 || !o.tourDir.empty()) && o.level.empty())
-    r.error = std::string(o.autoplay > 0.0 ? "--autoplay" : "--tour") + " needs a LEVEL.lua";
+  if (r.error.empty() && (o.autoplay > 0.0 || !o.tourDir.empty() || o.watch) && o.level.empty())
+    r.error = std::string(o.autoplay > 0.0 ? "--autoplay" : o.watch ? "--watch" : "--tour") + " needs a LEVEL.lua";
   return r;
 }
 
@@ -144,7 +163,8 @@ int runPlayCommand(const std::vector<std::string>& args) {
     App app(def);
     if (!o.tourDir.empty()) return tour(app, o);
     if (o.autoplay > 0.0) return autoplay(app, o);
-    if (!o.level.empty()) app.screens().push(std::make_unique<PlayScreen>(app, o.level));
+    if (!o.level.empty())
+      app.screens().push(std::make_unique<PlayScreen>(app, std::make_unique<FreePlay>(app, o.level, o.watch)));
     return app.run();
   } catch (const platform::PlatformError& e) {
     std::cerr << kPrefix << e.what() << "\n";

@@ -24,6 +24,7 @@ struct PlayOptions {
   int width = 1280, height = 720;
   bool vsync = true;
   double autoplay = 0.0;         // [s]; 0 = a human plays
+  bool watch = false;            // --watch: the autopilot plays LEVEL (the player may take over)
   std::string tourDir;           // --tour: screenshots of the main screens go here
   bool help = false;
 };

@@ -131,6 +131,7 @@ void PlayHud::draw(double fps) {
   }
   if (mousePlayer_) ImGui::TextDisabled("a mouse pushes no force back: the arrow shows it");
   if (!ghost_.empty()) ImGui::TextColored(kGhostBlue, "%s", ghost_.c_str());
+  if (!autopilot_.empty()) ImGui::TextColored(ImVec4(0.3f, 0.95f, 0.55f, 1.0f), "%s", autopilot_.c_str());
   if (r.loopWarning)
     ImGui::TextColored(kAmber, "servo loop late: worst %.2f ms, %llu missed ticks", r.latenessMs, r.missedTicks);
   ImGui::Text("%.0f fps", fps);

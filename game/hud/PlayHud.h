@@ -54,7 +54,10 @@ class PlayHud {
 
   // The ghost's line ("" = none): whose run it is, and how it is going.
   void setGhost(std::string line) { ghost_ = std::move(line); }
+  // The autopilot's line ("" = none): it is playing, or the hint is on.
+  void setAutopilot(std::string line) { autopilot_ = std::move(line); }
   const std::string& ghost() const { return ghost_; }
+  const std::string& autopilot() const { return autopilot_; }
   const std::string& title() const { return level_; }  // the level's name, or "trial k of N: name"
 
   // The level's score function on the summary so far (none: no score function).
@@ -77,7 +80,7 @@ class PlayHud {
   ScrollingPlot plot_, faceX_, faceY_;
   int channel_ = 0;
   double lastPsi_ = 0.0, lastTime_ = -1.0;
-  std::string level_, device_, method_, ghost_;
+  std::string level_, device_, method_, ghost_, autopilot_;
   std::string takeHoldHint_ = "click or Space to take hold";
   bool mousePlayer_ = true;
   std::optional<double> score_;

@@ -37,7 +37,16 @@ PlaySession::PlaySession(script::LoadedLevel& level, const PlaySessionDef& def)
       replayError_ = e.what();  // the trial goes on without a replay
     }
   }
-  loop_ = std::make_unique<haptics::ServoLoop>(loopDef_, *device_);
+  loopDef_.guidance = def.guidance;
+  if (def.watchAutopilot) {
+    autopilotHand_ = std::make_unique<HandoffBotDevice>(device_->spec(), loopDef_.mapping);
+    takeover_ = std::make_unique<TakeoverDevice>(*autopilotHand_, *device_);
+  }
+  loop_ = std::make_unique<haptics::ServoLoop>(loopDef_, takeover_ ? static_cast<haptics::HapticDevice&>(*takeover_)
+                                                                   : *device_);
+  if (def.watchAutopilot || def.hints || def.guidance.active())
+    companion_ = std::make_unique<AutopilotCompanion>(level.def, *loop_, loopDef_.mapping, autopilotHand_.get(),
+                                                      def.guidance.active());
   initial_ = physics::forceStateOf(loopDef_.initialState);
   snapshot_.state = loopDef_.initialState;
   if (mouse_) {
@@ -52,6 +61,7 @@ PlaySession::PlaySession(script::LoadedLevel& level, const PlaySessionDef& def)
 }
 
 PlaySession::~PlaySession() {
+  if (companion_) companion_->stop();
   if (!stopped_) loop_->stop();
   device_->close();  // on this (the SDL) thread, after the loop let go of it
 }
@@ -75,7 +85,14 @@ bool PlaySession::startLoopWhenReady() {
   startedAt_ = std::chrono::steady_clock::now();
   judging_.start(initial_);
   if (capture_) capture_->start();
-  if (!judging_.finished()) loop_->start();
+  if (!judging_.finished()) {
+    if (autopilotHolds()) post(haptics::ServoCommandKind::Engage);  // the autopilot takes hold at once
+    loop_->start();
+    if (companion_) {
+      companion_->publishTask(judging_.judge());  // the goal before the first plan
+      companion_->start();
+    }
+  }
   return true;
 }
 
@@ -95,7 +112,42 @@ void PlaySession::wheel(double notches) {
   sendPointer(false);
 }
 
-haptics::Vec3 PlaySession::pointerScene() const { return loopDef_.mapping.positionToScene(mapping_.position()); }
+haptics::Vec3 PlaySession::pointerScene() const {
+  if (autopilotHolds()) {
+    const haptics::Triple& p = snapshot_.proxyPosition;
+    return {p[0], p[1], p[2]};
+  }
+  return loopDef_.mapping.positionToScene(mapping_.position());
+}
+
+void PlaySession::takeOver() {
+  if (!autopilotHolds()) return;
+  companion_->stopDriving();
+  if (mouse_) {
+    // The pointer picks the proxy up where the autopilot left it: no jump,
+    // no gap in the coupling.
+    const haptics::Triple& p = snapshot_.proxyPosition;
+    const haptics::Vec3 device = (haptics::Vec3(p[0], p[1], p[2]) - loopDef_.mapping.offset) / loopDef_.mapping.scale;
+    mapping_.moveTo(device.x(), device.y());
+    sendPointer(/*jump=*/true);
+  } else {
+    post(haptics::ServoCommandKind::Disengage);  // the player's hand is elsewhere: let go, take hold anew
+  }
+  takeover_->handToPlayer();
+}
+
+void PlaySession::enableHints() {
+  if (companion_ || stopped_) return;
+  companion_ = std::make_unique<AutopilotCompanion>(level_.def, *loop_, loopDef_.mapping, nullptr, false);
+  companion_->publishTask(judging_.judge());
+  if (loop_->running()) companion_->start();  // else startLoopWhenReady starts it with the loop
+}
+
+bool PlaySession::hint(haptics::GuideSample& out) { return companion_ && companion_->latestPlan(out) && out.valid; }
+
+std::string PlaySession::autopilotNote() const { return companion_ ? companion_->giveUpReason() : std::string(); }
+
+std::uint64_t PlaySession::autopilotPlans() const { return companion_ ? companion_->plans() : 0; }
 
 void PlaySession::post(haptics::ServoCommandKind kind) {
   haptics::ServoCommand c;
@@ -131,6 +183,7 @@ bool PlaySession::frame() {
   if (stopped_) return false;
   if (started_ && !startLoopWhenReady()) return true;
   judging_.drain(*ring_);
+  if (companion_) companion_->publishTask(judging_.judge());
   if (!judging_.finished() && loop_->recordDropped() > 0)
     judging_.fail("the judge fell behind the servo loop (ticks dropped)");
   loop_->latest(snapshot_);
@@ -139,6 +192,7 @@ bool PlaySession::frame() {
 }
 
 TrialResult PlaySession::finish() {
+  if (companion_) companion_->stop();
   if (!stopped_) {
     loop_->stop();
     stopped_ = true;

@@ -34,6 +34,8 @@
 #include "engine/haptics/devices/DeviceFactory.h"
 #include "engine/haptics/PointerMapping.h"
 #include "engine/haptics/ServoLoop.h"
+#include "game/play/AutopilotCompanion.h"
+#include "game/play/TakeoverDevice.h"
 #include "game/trial/ReplayCapture.h"
 #include "game/trial/TrialJudge.h"
 
@@ -55,6 +57,14 @@ struct PlaySessionDef {
   // drains. nullptr = not recorded.
   haptics::RecordRing* recordRing = nullptr;
   int recordEvery = 10;
+  // The autopilot beside the player (AutopilotCompanion, on its own thread):
+  // watchAutopilot: it holds the proxy until takeOver(); hints: its plan is
+  // offered to the UI from the start (hint(); enableHints() starts it
+  // later); guidance: its plan pulls the player's device
+  // (haptic guidance, Guidance.h; felt only on a device with force output).
+  bool watchAutopilot = false;
+  bool hints = false;
+  haptics::GuidanceDef guidance;
 };
 
 class PlaySession {
@@ -103,8 +113,26 @@ class PlaySession {
   std::filesystem::path replayFile() const { return replayError_.empty() && capture_ ? capture_->file() : ""; }
   const std::string& replayError() const { return replayError_; }
   // Where the pointer has put the proxy now, scene frame [m] (what the game
-  // draws in place of the system cursor).
+  // draws in place of the system cursor). While the autopilot holds, where it does.
   haptics::Vec3 pointerScene() const;
+
+  // Watching the autopilot: true until the player takes over.
+  bool autopilotHolds() const { return takeover_ && !takeover_->playerHolds(); }
+  // Whether the autopilot held the proxy at any time of this trial (its
+  // result is then not the player's: no best, no ghost).
+  bool assisted() const { return takeover_ != nullptr; }
+  // The player takes the proxy from the autopilot (UI thread): the mouse
+  // carries on from where the autopilot left the proxy; any other device
+  // lets go, and the player's click takes hold with the usual ramp.
+  void takeOver();
+  // Starts the autopilot beside the player for hints, if it is not already
+  // planning (UI thread; its planning costs CPU, so only once asked for).
+  void enableHints();
+  // The autopilot's latest plan (false when it has none: no companion, not
+  // yet, or it gave up); its give-up reason ("" while it plans).
+  bool hint(haptics::GuideSample& out);
+  std::string autopilotNote() const;
+  std::uint64_t autopilotPlans() const;
 
  private:
   void post(haptics::ServoCommandKind kind);
@@ -122,7 +150,11 @@ class PlaySession {
   std::string deviceName_;
   std::unique_ptr<haptics::HapticDevice> device_;
   haptics::MouseDevice* mouse_ = nullptr;  // device_ when it is the mouse
+  // Watching: the autopilot's hand and the switch between it and device_.
+  std::unique_ptr<HandoffBotDevice> autopilotHand_;
+  std::unique_ptr<TakeoverDevice> takeover_;
   std::unique_ptr<haptics::ServoLoop> loop_;
+  std::unique_ptr<AutopilotCompanion> companion_;  // after loop_: stopped before it
   TrialJudge judging_;
   haptics::ServoSnapshot snapshot_;
   physics::ForceDrivenState initial_;

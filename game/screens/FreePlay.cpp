@@ -12,6 +12,7 @@ namespace hemiroll::game {
 std::unique_ptr<PlaySession> FreePlay::begin(script::LoadedLevel& level, PlaySessionDef& def) {
   level = script::LevelLoader().loadFile(levelPath_);
   def.coupling = coupling(level.def);
+  def.watchAutopilot = watch_;
   if (!host_.settings().overrideCoupling) {
     def.replayFile = record::dataDirectory() / "replays" / "last-trial.hrr";
     def.levelHash = record::fileContentHash(levelPath_);
@@ -27,7 +28,8 @@ void FreePlay::finished(PlaySession& session, TrialResult result, const script::
   std::string replayNote = session.replayError();
   if (host_.settings().overrideCoupling) replayNote = "no replay: the force method was overridden in the settings";
   host_.screens().replace(
-      std::make_unique<ResultsScreen>(host_, levelPath_, level.name, std::move(result), session.replayFile(), replayNote));
+      std::make_unique<ResultsScreen>(host_, levelPath_, level.name, std::move(result), session.replayFile(), replayNote,
+                                      session.assisted()));
 }
 
 void FreePlay::leftWithoutTrial(const std::string& /*error*/) { host_.screens().pop(); }

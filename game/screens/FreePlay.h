@@ -10,7 +10,10 @@ namespace hemiroll::game {
 
 class FreePlay final : public PlayMode {
  public:
-  FreePlay(ScreenHost& host, std::string levelPath) : host_(host), levelPath_(std::move(levelPath)) {}
+  // `watch`: the autopilot plays and the player may take over (no score, no best).
+  FreePlay(ScreenHost& host, std::string levelPath, bool watch = false)
+      : host_(host), levelPath_(std::move(levelPath)), watch_(watch) {}
+  bool watching() const { return watch_; }
 
   const std::string& levelPath() const override { return levelPath_; }
   std::unique_ptr<PlaySession> begin(script::LoadedLevel& level, PlaySessionDef& def) override;
@@ -24,6 +27,7 @@ class FreePlay final : public PlayMode {
  private:
   ScreenHost& host_;
   std::string levelPath_;
+  bool watch_ = false;
 };
 
 }  // namespace hemiroll::game

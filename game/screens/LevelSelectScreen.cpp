@@ -7,6 +7,7 @@
 
 #include "engine/script/LevelLoader.h"
 #include "game/scores/ScoreStore.h"
+#include "game/screens/FreePlay.h"
 #include "game/screens/PlayScreen.h"
 #include "game/screens/ScreenHost.h"
 #include "game/screens/ScreenLayout.h"
@@ -43,10 +44,11 @@ void LevelSelectScreen::enter() {
   selected_ = std::clamp(selected_, 0, std::max(0, static_cast<int>(entries_.size()) - 1));
 }
 
-void LevelSelectScreen::play() {
+void LevelSelectScreen::play(bool watch) {
   if (selected_ < 0 || selected_ >= static_cast<int>(entries_.size())) return;
   if (!entries_[static_cast<std::size_t>(selected_)].error.empty()) return;  // broken: its error is shown
-  host_.screens().push(std::make_unique<PlayScreen>(host_, entries_[static_cast<std::size_t>(selected_)].path));
+  const std::string& path = entries_[static_cast<std::size_t>(selected_)].path;
+  host_.screens().push(std::make_unique<PlayScreen>(host_, std::make_unique<FreePlay>(host_, path, watch)));
 }
 
 void LevelSelectScreen::input(const platform::InputEvent& e) {
@@ -55,6 +57,7 @@ void LevelSelectScreen::input(const platform::InputEvent& e) {
   if (e.key == platform::Key::Down && n > 0) selected_ = (selected_ + 1) % n;
   else if (e.key == platform::Key::Up && n > 0) selected_ = (selected_ + n - 1) % n;
   else if (e.key == platform::Key::Enter && !e.repeat) play();
+  else if (e.code == 'a' && !e.repeat) play(/*watch=*/true);
   else if (e.key == platform::Key::Escape && !e.repeat) host_.screens().pop();
 }
 
@@ -92,6 +95,8 @@ void LevelSelectScreen::paint() {
   }
   ImGui::Separator();
   if (ImGui::Button("Play  (Enter)")) play();
+  ImGui::SameLine();
+  if (ImGui::Button("Watch the autopilot  (A)")) play(/*watch=*/true);
   ImGui::SameLine();
   if (ImGui::Button("Back  (Esc)")) host_.screens().pop();
   ImGui::End();

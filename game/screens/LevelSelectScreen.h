@@ -37,7 +37,7 @@ class LevelSelectScreen final : public Screen {
   int selected() const { return selected_; }
 
  private:
-  void play();
+  void play(bool watch = false);  // watch: the autopilot plays, the player may take over
   std::vector<LevelEntry> entries_;
   int selected_ = 0;
 };

@@ -19,6 +19,11 @@ void PauseScreen::restart() {
   host_.screens().pop();
 }
 
+void PauseScreen::watch() {
+  play_.watchAutopilot();
+  host_.screens().pop();
+}
+
 void PauseScreen::quit() {
   play_.quit();  // the play screen sees the finished trial on its next update
   host_.screens().pop();
@@ -29,6 +34,7 @@ void PauseScreen::input(const platform::InputEvent& e) {
   if (e.key == platform::Key::Escape || e.key == platform::Key::Enter) resume();
   else if (e.code == 'r') restart();
   else if (e.code == 'q') quit();
+  else if (e.code == 'a' && play_.restartAllowed()) watch();
 }
 
 // The paused loop still publishes a row per tick (time standing still): the
@@ -45,6 +51,7 @@ void PauseScreen::paint() {
   if (ImGui::Button("Continue  (Esc)", button)) resume();
   // A research session's trial is recorded once: it cannot be restarted.
   if (play_.restartAllowed() && ImGui::Button("Restart  (R)", button)) restart();
+  if (play_.restartAllowed() && ImGui::Button("Watch the autopilot  (A)", button)) watch();
   if (ImGui::Button("Quit the trial  (Q)", button)) quit();
   ImGui::End();
 }

@@ -27,6 +27,7 @@ class PauseScreen final : public Screen {
  private:
   void resume();
   void restart();
+  void watch();
   void quit();
   PlayScreen& play_;
   std::string reason_;

@@ -40,6 +40,7 @@ void PlayScreen::begin() {
     def.requestRealtime = host_.requestRealtime();
     session_ = mode_->begin(level_, def);
     session_->start();
+    if (showHint_) session_->enableHints();  // kept on across restarts
   } catch (const std::exception& e) {
     error_ = e.what();
     session_.reset();
@@ -98,6 +99,13 @@ void PlayScreen::restart() {
   if (mode_->restartAllowed()) begin();
 }
 
+void PlayScreen::watchAutopilot() {
+  if (!mode_->restartAllowed()) return;
+  const std::string level = mode_->levelPath();
+  mode_ = std::make_unique<FreePlay>(host_, level, /*watch=*/true);
+  begin();
+}
+
 void PlayScreen::quit() {
   if (session_) session_->quit();
 }
@@ -111,6 +119,10 @@ void PlayScreen::input(const platform::InputEvent& e) {
   switch (e.type) {
     case InputType::PointerMove: session_->pointerMotion(e.dx, e.dy); break;
     case InputType::ButtonDown:
+      if (session_->autopilotHolds()) {  // any click while watching takes over
+        session_->takeOver();
+        break;
+      }
       if (e.button == platform::PointerButton::Left) session_->click();
       if (e.button == platform::PointerButton::Right) session_->release();
       break;
@@ -134,7 +146,16 @@ void PlayScreen::keyAction(KeyAction action, bool repeat) {
   const bool orbit = s.camera == render::CameraMode::Orbit;
   switch (action) {
     case KeyAction::TakeHold:
-      if (!repeat) session_->click();
+      if (repeat) break;
+      if (session_->autopilotHolds())
+        session_->takeOver();
+      else
+        session_->click();
+      break;
+    case KeyAction::Hint:
+      if (repeat) break;
+      showHint_ = !showHint_;
+      if (showHint_) session_->enableHints();
       break;
     case KeyAction::LetGo:
       if (!repeat) session_->release();
@@ -197,11 +218,39 @@ void PlayScreen::buildScene(const haptics::ServoSnapshot& s) {
     trace_.push(s.state[physics::force_slot::u_a], s.state[physics::force_slot::v_a], s.time);
     scene_.trace = &trace_;
   }
+  showAutopilot();
   scene_.camera.mode = host_.settings().camera;
   scene_.camera.zoom = host_.settings().zoom;
   scene_.camera.yaw = host_.settings().orbitYaw;
   scene_.camera.pitch = host_.settings().orbitPitch;
   session_->setScreenYaw(render::screenRightHeading(scene_.camera));
+}
+
+// The autopilot's hint (its next proxy pose, from the proxy) when the player
+// asked for it, and a line in the HUD while it holds the proxy or after it
+// gave up.
+void PlayScreen::showAutopilot() {
+  haptics::GuideSample plan;
+  const bool holding = session_->autopilotHolds();
+  scene_.showHint = showHint_ && !holding && session_->hint(plan);
+  if (scene_.showHint) {
+    // Where the plan goes over the next moment, not only where it is: the
+    // autopilot stays within a millimetre or two of the proxy, too close to
+    // see; its motion is the lesson.
+    constexpr double kLookAhead = 0.3;  // [s]
+    scene_.hintFrom = scene_.proxyPosition;
+    for (int i = 0; i < 3; ++i) scene_.hintTo[i] = plan.position[i] + kLookAhead * plan.velocity[i];
+  }
+  const std::string note = session_->autopilotNote();
+  const std::string takeHold = host_.settings().keys.keyName(KeyAction::TakeHold);
+  if (holding)
+    hud_.setAutopilot(note.empty() ? "AUTOPILOT playing: click or " + takeHold + " to take over" : note);
+  else if (showHint_)
+    hud_.setAutopilot(note.empty() ? "hint (" + host_.settings().keys.keyName(KeyAction::Hint) +
+                                         "): green = the autopilot's next move"
+                                   : note);
+  else
+    hud_.setAutopilot("");
 }
 
 void PlayScreen::followGhost(const haptics::ServoSnapshot& s) {

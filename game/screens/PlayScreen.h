@@ -46,6 +46,9 @@ class PlayScreen final : public Screen {
   // From the pause screen.
   void resume();
   void restart();
+  // Free play only: the trial starts again with the autopilot holding the
+  // proxy; a click or the take-hold key takes over.
+  void watchAutopilot();
   void quit();
   void drainWhilePaused() {
     if (session_) session_->frame();
@@ -65,6 +68,7 @@ class PlayScreen final : public Screen {
   void pollScore(double dt);
   void followGhost(const haptics::ServoSnapshot& s);
   void buildScene(const haptics::ServoSnapshot& s);
+  void showAutopilot();
   void playSounds(const haptics::ServoSnapshot& s);
   bool safetyStop();
   void endTrial();
@@ -82,6 +86,7 @@ class PlayScreen final : public Screen {
   haptics::Engagement lastEngagement_ = haptics::Engagement::Disengaged;
   bool started_ = false;
   double scoreClock_ = 0.0;  // [s] since the running score was last asked for
+  bool showHint_ = false;    // the hint key toggles the autopilot's hint
 };
 
 }  // namespace hemiroll::game

@@ -18,14 +18,20 @@
 namespace hemiroll::game {
 
 ResultsScreen::ResultsScreen(ScreenHost& host, std::string levelPath, std::string levelName, TrialResult result,
-                             std::filesystem::path replay, std::string replayNote)
+                             std::filesystem::path replay, std::string replayNote, bool assisted)
     : Screen(host),
       levelPath_(std::move(levelPath)),
       levelName_(std::move(levelName)),
       result_(std::move(result)),
       replay_(std::move(replay)),
-      replayNote_(std::move(replayNote)) {
+      replayNote_(std::move(replayNote)),
+      assisted_(assisted) {
   const std::string& player = host_.settings().participant;
+  if (assisted_) {  // the autopilot's run is not the player's: no score, no best
+    before_ = host_.scores().personalBest(levelName_, player);
+    replayNote_ = "the autopilot played this run: it is not entered in your scores";
+    return;
+  }
   before_ = host_.scores().personalBest(levelName_, player);
   const bool success = result_.outcome == script::TrialOutcome::Success;
   newBest_ = success && (!before_.bestTime || result_.time < *before_.bestTime);
@@ -46,6 +52,13 @@ ResultsScreen::ResultsScreen(ScreenHost& host, std::string levelPath, std::strin
 ResultsScreen::~ResultsScreen() {
   std::error_code ec;
   if (!replay_.empty() && !replaySaved_) std::filesystem::remove(replay_, ec);
+}
+
+void ResultsScreen::raceThisLine() {
+  if (replay_.empty()) return;
+  const std::string error =
+      keepAsGhost(replay_, ghostFile(record::dataDirectory(), levelName_, host_.settings().participant));
+  replayNote_ = error.empty() ? "kept as your ghost: race the autopilot's line next time" : error;
 }
 
 void ResultsScreen::saveReplay() {
@@ -76,6 +89,7 @@ void ResultsScreen::input(const platform::InputEvent& e) {
   if (e.type != platform::InputType::KeyDown || e.repeat) return;
   if (e.key == platform::Key::Enter) again();
   else if (e.code == 's') saveReplay();
+  else if (e.code == 'g' && assisted_ && result_.outcome == script::TrialOutcome::Success) raceThisLine();
   else if (e.code == 'w') watchReplay();
   else if (e.key == platform::Key::Escape) host_.screens().pop();
 }
@@ -103,6 +117,9 @@ void ResultsScreen::paint() {
     if (!replaySaved_ && ImGui::Button("Save replay  (S)", button)) saveReplay();
     if (ImGui::Button("Watch replay  (W)", button)) watchReplay();
   }
+  if (assisted_ && result_.outcome == script::TrialOutcome::Success && !replay_.empty() &&
+      ImGui::Button("Race this line  (G)", button))
+    raceThisLine();
   if (!replayNote_.empty()) ImGui::TextDisabled("%s", replayNote_.c_str());
   if (ImGui::Button("Play again  (Enter)", button)) again();
   if (ImGui::Button("Levels  (Esc)", button)) host_.screens().pop();

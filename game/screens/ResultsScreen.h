@@ -18,8 +18,10 @@ namespace hemiroll::game {
 class ResultsScreen final : public Screen {
  public:
   ResultsScreen(ScreenHost& host, std::string levelPath, std::string levelName, TrialResult result,
-                std::filesystem::path replay = {}, std::string replayNote = {});
+                std::filesystem::path replay = {}, std::string replayNote = {}, bool assisted = false);
   ~ResultsScreen() override;
+  // The autopilot's run (or the part before the player took over): kept as the ghost to race.
+  void raceThisLine();
   const char* name() const override { return "results"; }
   void input(const platform::InputEvent& e) override;
   void paint() override;
@@ -41,6 +43,7 @@ class ResultsScreen final : public Screen {
   LevelBest before_;
   bool newBest_ = false;
   bool stored_ = false;
+  bool assisted_ = false;  // the autopilot played: not in the scores, offered as a ghost
 };
 
 }  // namespace hemiroll::game

@@ -24,6 +24,10 @@ std::unique_ptr<PlaySession> SessionTrialPlay::begin(script::LoadedLevel& level,
   def.levelHash = trial.levelHash;
   // The player's device: its mapping and spec go into the trial's sidecar.
   haptics::ServoLoopDef loop = trialLoopDef(level.def, def.device);
+  // The plan's haptic guidance: the autopilot plans beside the participant
+  // and the device pulls towards its plan (felt on a device with force output).
+  loop.guidance = trial.guidance;
+  def.guidance = trial.guidance;
   const std::optional<haptics::DeviceSpec> spec = haptics::DeviceFactory().specOf(def.device, def.deviceOptions);
   if (!spec) throw std::runtime_error("unknown device '" + def.device + "'");
   recording_ = research_.recordNext(level.def, loop, def.device, *spec);

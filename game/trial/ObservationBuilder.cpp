@@ -15,6 +15,12 @@ script::Triple3 triple(const physics::Vec3& v) { return {v.x(), v.y(), v.z()}; }
 
 void ObservationBuilder::fill(double time, const physics::ForceDrivenState& x, const haptics::ServoSnapshot& snapshot,
                               const script::TaskJudge& judge, script::BotObservation& out) const {
+  fillKinematics(time, x, snapshot, out);
+  fillTask(judge, out);
+}
+
+void ObservationBuilder::fillKinematics(double time, const physics::ForceDrivenState& x,
+                                        const haptics::ServoSnapshot& snapshot, script::BotObservation& out) const {
   using namespace physics::force_slot;
   out.time = time;
   for (int i = 0; i < 12; ++i) out.state[static_cast<std::size_t>(i)] = x[i];
@@ -37,7 +43,9 @@ void ObservationBuilder::fill(double time, const physics::ForceDrivenState& x, c
   out.deviceForce = triple(mapping_.forceToScene(haptics::Vec3(f[0], f[1], f[2])));
   out.proxyDistance = snapshot.proxyDistance;
   out.engaged = snapshot.engagement == haptics::Engagement::Engaged;
+}
 
+void ObservationBuilder::fillTask(const script::TaskJudge& judge, script::BotObservation& out) {
   judge.slotTargets(out.target, out.tolerance, out.targetSet);
   out.omegaNormSet = false;
   for (const script::ComponentStatus& c : judge.components()) {

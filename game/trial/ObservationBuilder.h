@@ -25,6 +25,11 @@ class ObservationBuilder {
   // first tick; `judge`: the task as it stands.
   void fill(double time, const physics::ForceDrivenState& state, const haptics::ServoSnapshot& snapshot,
             const script::TaskJudge& judge, script::BotObservation& out) const;
+  // The two halves of fill, for a planner on another thread than the judge:
+  // the state's part (any thread) and the task's part (the judge's thread).
+  void fillKinematics(double time, const physics::ForceDrivenState& state, const haptics::ServoSnapshot& snapshot,
+                      script::BotObservation& out) const;
+  static void fillTask(const script::TaskJudge& judge, script::BotObservation& out);
 
  private:
   physics::ModelConstants constants_;

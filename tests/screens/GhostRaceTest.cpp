@@ -74,6 +74,27 @@ TEST_F(GhostRaceTest, ANewBestIsKeptAsTheLevelsGhost) {
   EXPECT_EQ(bytesOf(ghost), kept);
 }
 
+// The autopilot's run is not the player's: it is not scored and becomes the
+// ghost only when the player asks to race its line.
+TEST_F(GhostRaceTest, TheAutopilotsLineBecomesTheGhostOnlyWhenAsked) {
+  const std::filesystem::path replay = dir_.path() / "replays" / "last-trial.hrr";
+  std::filesystem::create_directories(replay.parent_path());
+  playAndLog(replay);
+  App app(def_);
+  const script::LoadedLevel level = script::LevelLoader().loadFile(kLevel);
+  TrialResult result;
+  result.outcome = script::TrialOutcome::Success;
+  result.reason = "target held";
+  result.time = 1.0;
+  ResultsScreen results(app, kLevel, level.def.name, result, replay, "", /*assisted=*/true);
+  const std::filesystem::path ghost = ghostFile(dir_.path(), level.def.name, app.settings().participant);
+  EXPECT_FALSE(std::filesystem::exists(ghost));
+  EXPECT_EQ(app.scores().personalBest(level.def.name, app.settings().participant).attempts, 0);
+  results.raceThisLine();
+  ASSERT_TRUE(std::filesystem::exists(ghost));
+  EXPECT_EQ(bytesOf(ghost), bytesOf(replay));
+}
+
 TEST_F(GhostRaceTest, TheNextPlayRacesTheGhostInStep) {
   const script::LoadedLevel level = script::LevelLoader().loadFile(kLevel);
   const std::filesystem::path ghost = ghostFile(dir_.path(), level.def.name, "player");

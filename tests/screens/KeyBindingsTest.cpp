@@ -33,15 +33,16 @@ TEST(KeyBindingsTest, TheDefaultsAreTheOnesTheSettingsScreenNamed) {
   EXPECT_EQ(keys.keyName(KeyAction::OrbitRight), "Right");
   EXPECT_EQ(keys.keyName(KeyAction::OrbitUp), "Up");
   EXPECT_EQ(keys.keyName(KeyAction::OrbitDown), "Down");
+  EXPECT_EQ(keys.keyName(KeyAction::Hint), "H");
   expectEveryActionItsOwnKey(keys);
-  EXPECT_FALSE(keys.actionOf(code("H")).has_value());
+  EXPECT_FALSE(keys.actionOf(code("J")).has_value());
   EXPECT_FALSE(keys.actionOf(0).has_value());
 }
 
 TEST(KeyBindingsTest, AFreeKeyFreesTheOldOne) {
   KeyBindings keys;
-  ASSERT_TRUE(keys.bind(KeyAction::TakeHold, code("H")));
-  EXPECT_EQ(keys.actionOf(code("H")), KeyAction::TakeHold);
+  ASSERT_TRUE(keys.bind(KeyAction::TakeHold, code("J")));
+  EXPECT_EQ(keys.actionOf(code("J")), KeyAction::TakeHold);
   EXPECT_FALSE(keys.actionOf(code("Space")).has_value());
   expectEveryActionItsOwnKey(keys);
 }

@@ -92,6 +92,42 @@ TEST(PlaySessionTest, AScriptedMouseEngagesAndPlaysPausesAndQuits) {
   EXPECT_LE(result.maxRenderedForce, 1e-12);  // a mouse renders no force (max force 0)
 }
 
+// Guidance in the window: the autopilot plans on its own thread and the loop
+// adds its spring towards the plan; the mouse renders no force, so the
+// guidance is computed (the HUD and the recording see it) and nothing is
+// rendered. A starved attempt is retried (see above).
+TEST(PlaySessionTest, GuidanceFollowsTheAutopilotsPlanOnItsOwnThread) {
+  for (int attempt = 0; attempt < 3; ++attempt) {
+    script::LoadedLevel level = script::LevelLoader().loadFile(HEMIROLL_SOURCE_DIR "/levels/tutorial_04_stop_on_target.lua");
+    PlaySessionDef def;
+    def.guidance.kind = haptics::GuidanceKind::Autopilot;
+    def.guidance.stiffness = 300.0;
+    def.guidance.damping = 10.0;
+    PlaySession session(level, def);
+    session.start();
+    session.click();
+    double largest = 0.0, rendered = 0.0;
+    const auto start = std::chrono::steady_clock::now();
+    while (std::chrono::steady_clock::now() - start < 1500ms && !session.finished() && !stalled(session)) {
+      session.frame();
+      const haptics::ServoSnapshot& s = session.snapshot();
+      largest = std::max(largest, std::hypot(s.guidanceForce[0], s.guidanceForce[1], s.guidanceForce[2]));
+      rendered = std::max(rendered, std::hypot(s.renderedForce[0], s.renderedForce[1], s.renderedForce[2]));
+      std::this_thread::sleep_for(5ms);
+    }
+    if (stalled(session)) continue;
+    EXPECT_GT(session.autopilotPlans(), 100u);
+    EXPECT_EQ(session.autopilotNote(), "");
+    // The mouse holds still while the autopilot wants to tilt: its spring
+    // pulls (300 N/m towards a plan millimetres away: well over 0.01 N).
+    EXPECT_GT(largest, 0.01);
+    EXPECT_EQ(rendered, 0.0);  // a mouse renders nothing
+    EXPECT_FALSE(session.assisted());
+    return;
+  }
+  FAIL() << "the servo loop was starved in three attempts";
+}
+
 TEST(PlaySessionTest, APointerFarFromTheMassPointDoesNotEngage) {
   script::LoadedLevel level = script::LevelLoader().loadFile(HEMIROLL_SOURCE_DIR "/levels/tutorial_01_tilt_and_return.lua");
   PlaySessionDef def;

@@ -10,6 +10,7 @@
 #include "engine/platform/KeyNames.h"
 #include "game/app/App.h"
 #include "game/screens/LevelSelectScreen.h"
+#include "game/screens/PlayScreen.h"
 #include "game/screens/ReplayScreen.h"
 #include "tests/support/TempDirectory.h"
 
@@ -55,6 +56,7 @@ TEST(ScreenTourTest, TitleLevelsPlayPauseResultsWithSyntheticInput) {
   ScreenTourDef tour;
   tour.level = good;
   tour.playSeconds = 1.5;
+  tour.autopilot = false;  // its stops: the next test
   const std::vector<ScreenTourStop> stops = runScreenTour(app, tour);
 
   ASSERT_EQ(stops.size(), 6u);
@@ -104,6 +106,38 @@ TEST(ScreenTourTest, TitleLevelsPlayPauseResultsWithSyntheticInput) {
   EXPECT_EQ(replay->error(), "");
   EXPECT_GT(replay->ticksPlayed(), 0u);
   EXPECT_GT(replay->ticksTotal(), 1000u);  // the 1.5 s played
+}
+
+// The tour's autopilot stops: watched from the level select (the HUD's green
+// "AUTOPILOT playing" line), then taken over with the hint on (its line).
+TEST(ScreenTourTest, TheAutopilotIsWatchedThenTakenOverWithTheHint) {
+  test::TempDirectory dir;
+  AppDef def;
+  def.hidden = true;
+  def.vsync = false;
+  def.levelsDir = HEMIROLL_SOURCE_DIR "/levels";
+  def.scoresFile = (dir.path() / "scores.sqlite").string();
+  def.settingsFile = (dir.path() / "settings.json").string();
+  setenv("HEMIROLL_DATA_DIR", dir.path().c_str(), 1);
+  App app(def);
+  ScreenTourDef tour;
+  tour.level = HEMIROLL_SOURCE_DIR "/levels/tutorial_04_stop_on_target.lua";
+  tour.playSeconds = 1.0;
+  const std::vector<ScreenTourStop> stops = runScreenTour(app, tour);
+  ASSERT_EQ(stops.size(), 8u);
+  EXPECT_EQ(stops[6].screen, "watch");
+  EXPECT_EQ(stops[7].screen, "hint");
+  // The autopilot's HUD line is green (0.3, 0.95, 0.55): one line of ImGui's
+  // built-in font at 1x has about 80 solid glyph-core pixels of it (measured:
+  // 80 for the hint's line), half that leaves room for the rasteriser; the
+  // mouse's play has none.
+  EXPECT_GT(countColour(stops[6].image, 77, 242, 140), 40);
+  EXPECT_GT(countColour(stops[7].image, 77, 242, 140), 40);
+  EXPECT_EQ(countColour(stops[3].image, 77, 242, 140), 0);
+  auto* play = dynamic_cast<PlayScreen*>(app.screens().top());
+  ASSERT_NE(play, nullptr);
+  EXPECT_FALSE(play->session()->autopilotHolds());  // taken over
+  EXPECT_TRUE(play->session()->assisted());
 }
 
 }  // namespace

@@ -1,0 +1,112 @@
+#include "game/play/AutopilotCompanion.h"
+
+#include <chrono>
+
+#include "engine/physics/StateKinematics.h"
+#include "engine/script/ScriptError.h"
+#include "game/trial/TrialSetup.h"
+
+namespace hemiroll::game {
+
+namespace {
+
+haptics::Vec3 vec(const std::array<double, 3>& t) { return {t[0], t[1], t[2]}; }
+
+AutopilotBotOptions plannerOnItsOwnThread() {
+  AutopilotBotOptions o;
+  o.plannerThread = true;
+  return o;
+}
+
+}  // namespace
+
+AutopilotCompanion::AutopilotCompanion(const script::LevelDef& level, haptics::ServoLoop& loop,
+                                       const haptics::WorkspaceMapping& mapping, HandoffBotDevice* hand, bool guide,
+                                       std::uint64_t seed)
+    : loop_(loop),
+      hand_(hand),
+      guide_(guide),
+      observer_(level.params, mapping),
+      autopilot_(plannerOnItsOwnThread()) {
+  driving_.store(hand != nullptr);
+  try {
+    autopilot_.init(botLevelInfo(level, level.source), static_cast<std::int64_t>(seed));
+  } catch (const script::ScriptError& e) {
+    initError_ = e.what();  // e.g. a visual-only level: no plans, and the reason says why
+    reason_ = initError_;
+    gaveUp_ = true;
+  }
+}
+
+AutopilotCompanion::~AutopilotCompanion() { stop(); }
+
+void AutopilotCompanion::start() {
+  if (thread_.joinable()) return;
+  stopRequested_.store(false);
+  thread_ = std::thread([this] { run(); });
+}
+
+void AutopilotCompanion::stop() {
+  stopRequested_.store(true);
+  if (thread_.joinable()) thread_.join();
+}
+
+void AutopilotCompanion::publishTask(const script::TaskJudge& judge) {
+  script::BotObservation task;
+  ObservationBuilder::fillTask(judge, task);
+  tasks_.write(task);
+}
+
+std::string AutopilotCompanion::giveUpReason() const {
+  std::lock_guard<std::mutex> lock(reasonMutex_);
+  return reason_;
+}
+
+void AutopilotCompanion::run() {
+  using Clock = std::chrono::steady_clock;
+  const auto period = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1.0 / kCompanionRate));
+  auto next = Clock::now();
+  while (!stopRequested_.load(std::memory_order_relaxed)) {
+    step();
+    next += period;
+    const auto now = Clock::now();
+    if (next < now) next = now;  // late: no backlog, the latest snapshot is all that matters
+    std::this_thread::sleep_until(next);
+  }
+}
+
+void AutopilotCompanion::step() {
+  if (gaveUp_ || !loop_.latestForPlanner(snapshot_) || snapshot_.tick == lastTick_) return;
+  lastTick_ = snapshot_.tick;
+  script::BotObservation task;
+  if (tasks_.read(task)) {  // keep the kinematics, take the task's part
+    hasTask_ = true;
+    obs_.target = task.target;
+    obs_.tolerance = task.tolerance;
+    obs_.targetSet = task.targetSet;
+    obs_.omegaNormSet = task.omegaNormSet;
+    obs_.omegaNormTarget = task.omegaNormTarget;
+    obs_.omegaNormTolerance = task.omegaNormTolerance;
+    obs_.zones = task.zones;
+    obs_.zoneCount = task.zoneCount;
+    obs_.timeLimit = task.timeLimit;
+    obs_.holdTime = task.holdTime;
+    obs_.held = task.held;
+    obs_.stage = task.stage;
+  }
+  if (!hasTask_) return;  // no plan without the goal: the first frame publishes it
+  observer_.fillKinematics(snapshot_.time, physics::forceStateOf(snapshot_.state), snapshot_, obs_);
+  const haptics::GuideSample plan = guideSampleOf(autopilot_, obs_);
+  if (!plan.valid) {
+    gaveUp_ = true;
+    std::lock_guard<std::mutex> lock(reasonMutex_);
+    reason_ = autopilot_.giveUpReason().empty() ? "autopilot: no plan" : autopilot_.giveUpReason();
+  } else if (hand_ != nullptr && driving()) {
+    hand_->publish(plan.time, vec(plan.position), vec(plan.velocity));
+  }
+  if (guide_) loop_.publishGuide(plan);
+  plans_.write(plan);
+  planCount_.fetch_add(1, std::memory_order_relaxed);
+}
+
+}  // namespace hemiroll::game
