@@ -123,6 +123,13 @@ BidsFiles BidsExport::write(const Recording& r, const std::filesystem::path& dir
   j["MotionChannelCount"] = chans.size();
   for (const auto& [type, n] : counts) j[type + "ChannelCount"] = n;
   j["TrackedPointsCount"] = 5;  // mass point (face and scene), hemisphere, contact (plane, sphere), proxy, device
+  // Not a BIDS key (BIDS allows more): the trial's haptic guidance, so that
+  // the Fguide channels can be read without the hemiroll sidecar.
+  j["HapticGuidance"] = {{"Kind", haptics::guidanceKindName(r.meta.guidance.kind)},
+                         {"StiffnessNPerM", r.meta.guidance.stiffness},
+                         {"DampingNSPerM", r.meta.guidance.damping},
+                         {"MaxErrorM", r.meta.guidance.maxError},
+                         {"Fade", r.meta.guidance.scale}};
   j["MissingValues"] = "n/a";
   j["SubjectArtefactDescription"] = "n/a";
   writeFileAtomically(files.motionJson, j.dump(2, ' ', false, decltype(j)::error_handler_t::replace) + "\n");

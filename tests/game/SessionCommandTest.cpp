@@ -176,6 +176,14 @@ TEST(SessionCommandTest, BadInputIsOneSentenceAndExitTwoWithNothingWritten) {
   EXPECT_EQ(bad.exitCode, 2);
   EXPECT_THAT(bad.err, StartsWith("hemiroll session: " + broken + ":2: blocks[1].levle: unknown key 'levle' (did you mean 'level'?)"));
   EXPECT_EQ(bad.out, "");
+  const std::string badGuidance = dir.write(
+      "guided.lua", "return { experiment = 'x', blocks = { { level = '" + kSource +
+                        "/levels/tutorial_01_tilt_and_return.lua',\n guidance = { kind = 'autopilot',\n"
+                        "  stiffnes = 300 } } } }");
+  const ProcessResult guided = session({badGuidance, "--participant", "p01", "--data", data, "--bot", "passive-hand"});
+  EXPECT_EQ(guided.exitCode, 2);
+  EXPECT_THAT(guided.err, StartsWith("hemiroll session: " + badGuidance +
+                                     ":3: blocks[1].guidance.stiffnes: unknown key 'stiffnes' (did you mean 'stiffness'?)"));
   const ProcessResult badBot = session({kDemo, "--participant", "p01", "--data", data, "--bot", broken});
   EXPECT_EQ(badBot.exitCode, 2);
   const ProcessResult badId = session({kDemo, "--participant", "a.b", "--data", data, "--bot", kSolver});

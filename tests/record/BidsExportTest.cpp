@@ -34,6 +34,9 @@ Recording sample() {
   r.meta.trialId = "trial-007";
   r.meta.taskName = "hemiroll";
   r.meta.recordEvery = 10;
+  r.meta.guidance.kind = haptics::GuidanceKind::Autopilot;
+  r.meta.guidance.stiffness = 300.0;
+  r.meta.guidance.scale = 0.75;
   r.rows = test::randomRows(30, 5);
   r.status.complete = true;
   return r;
@@ -78,6 +81,9 @@ TEST(BidsExportTest, ChannelsDescribeEveryColumnOfTheMotionFile) {
   const auto j = nlohmann::json::parse(readWholeFile(f.motionJson));
   for (const char* key : {"TaskName", "SamplingFrequency", "TrackingSystemName"}) EXPECT_TRUE(j.contains(key)) << key;
   EXPECT_DOUBLE_EQ(j["SamplingFrequency"].get<double>(), 100.0);
+  EXPECT_EQ(j["HapticGuidance"]["Kind"], "autopilot");
+  EXPECT_EQ(j["HapticGuidance"]["StiffnessNPerM"].get<double>(), 300.0);
+  EXPECT_EQ(j["HapticGuidance"]["Fade"].get<double>(), 0.75);
   EXPECT_EQ(j["MotionChannelCount"].get<std::size_t>(), channels.size() - 1);
   int sum = 0;
   for (const char* type : {"LATENCY", "POS", "VEL", "ANGVEL", "MISC"}) sum += j.value(std::string(type) + "ChannelCount", 0);

@@ -25,6 +25,10 @@ TrialMeta awkwardMeta() {
   m.params.pointMass = 5e-324;     // subnormal
   m.coupling.method = physics::ForceMethod::M2;
   m.coupling.stiffness = 123.456789012345678;
+  m.guidance.kind = haptics::GuidanceKind::ErrorAugmentation;
+  m.guidance.stiffness = 40.0;
+  m.guidance.damping = 0.1 + 0.2;
+  m.guidance.scale = 1.0 / 11.0;  // a fade value of trial 11 of 12
   m.deviceName = "udp-bridge";
   m.deviceSpec.maxForce = 3.3;
   m.recordEvery = 1;
@@ -57,6 +61,10 @@ TEST(SidecarTest, MetadataRoundTripsExactly) {
   EXPECT_EQ(bits(back.params.pointMass), bits(m.params.pointMass));
   EXPECT_EQ(bits(back.coupling.stiffness), bits(m.coupling.stiffness));
   EXPECT_EQ(back.coupling.method, physics::ForceMethod::M2);
+  EXPECT_EQ(back.guidance.kind, haptics::GuidanceKind::ErrorAugmentation);
+  EXPECT_EQ(bits(back.guidance.stiffness), bits(40.0));
+  EXPECT_EQ(bits(back.guidance.damping), bits(0.1 + 0.2));
+  EXPECT_EQ(bits(back.guidance.scale), bits(1.0 / 11.0));
   EXPECT_EQ(back.extra, m.extra);
   EXPECT_EQ(back.recordEvery, 1);
   ASSERT_TRUE(sback.end.has_value());
@@ -65,6 +73,25 @@ TEST(SidecarTest, MetadataRoundTripsExactly) {
   EXPECT_EQ(sback.end->timing.missedTicks, 2u);
   EXPECT_TRUE(sback.complete);
   EXPECT_EQ(sback.rows, 42u);
+}
+
+// A sidecar written before guidance has no "guidance" and reads as none;
+// an unknown kind is a named error.
+TEST(SidecarTest, GuidanceIsOptionalAndItsKindChecked) {
+  SidecarStatus s;
+  nlohmann::ordered_json j = nlohmann::ordered_json::parse(Sidecar::toJson(awkwardMeta(), s));
+  j.erase("guidance");
+  TrialMeta back;
+  Sidecar::fromJson(j.dump(), "old.json", back, s);
+  EXPECT_EQ(back.guidance.kind, haptics::GuidanceKind::None);
+  j["guidance"] = {{"kind", "pull"}, {"stiffness_N_per_m", 1.0}, {"damping_N_s_per_m", 0.0}, {"max_error_m", 0.02},
+                   {"fade", 1.0}};
+  try {
+    Sidecar::fromJson(j.dump(), "bad.json", back, s);
+    FAIL() << "an unknown guidance kind was read";
+  } catch (const RecordError& e) {
+    EXPECT_NE(std::string(e.what()).find("guidance.kind: unknown kind 'pull'"), std::string::npos) << e.what();
+  }
 }
 
 TEST(SidecarTest, StatesTheSamplingRateAndTheCodeNames) {

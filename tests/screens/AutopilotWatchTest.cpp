@@ -13,6 +13,7 @@
 #include "game/app/App.h"
 #include "game/screens/FreePlay.h"
 #include "game/screens/PlayScreen.h"
+#include "tests/screens/support/HiddenApp.h"
 #include "tests/support/TempDirectory.h"
 
 namespace hemiroll::game {
@@ -25,13 +26,7 @@ const std::string kLevels = HEMIROLL_SOURCE_DIR "/levels/";
 
 class AutopilotWatchTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    setenv("HEMIROLL_DATA_DIR", dir_.path().c_str(), 1);
-    def_.hidden = true;
-    def_.vsync = false;
-    def_.scoresFile = (dir_.path() / "scores.sqlite").string();
-    def_.settingsFile = (dir_.path() / "settings.json").string();
-  }
+  void SetUp() override { def_ = test::hiddenAppIn(dir_.path()); }
   PlayScreen* watch(App& app, const std::string& level) {
     app.screens().push(std::make_unique<PlayScreen>(app, std::make_unique<FreePlay>(app, kLevels + level, true)));
     app.frame();

@@ -15,6 +15,7 @@
 #include "game/trial/ReplayCapture.h"
 #include "game/screens/PlayScreen.h"
 #include "game/screens/ResultsScreen.h"
+#include "tests/screens/support/HiddenApp.h"
 #include "tests/screens/support/StrokedTrial.h"
 #include "tests/support/TempDirectory.h"
 
@@ -40,27 +41,30 @@ void playAndLog(const std::filesystem::path& file) {
 
 class GhostRaceTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    setenv("HEMIROLL_DATA_DIR", dir_.path().c_str(), 1);
-    def_.hidden = true;
-    def_.vsync = false;
-    def_.scoresFile = (dir_.path() / "scores.sqlite").string();
-    def_.settingsFile = (dir_.path() / "settings.json").string();
+  void SetUp() override { def_ = test::hiddenAppIn(dir_.path()); }
+  // The level's results after a logged ~1 s trial (`replay`) that succeeded at `time`.
+  TrialResult successAt(double time) const {
+    TrialResult result;
+    result.outcome = script::TrialOutcome::Success;
+    result.reason = "target held";
+    result.time = time;
+    return result;
+  }
+  std::filesystem::path loggedReplay() const {
+    const std::filesystem::path replay = dir_.path() / "replays" / "last-trial.hrr";
+    std::filesystem::create_directories(replay.parent_path());
+    playAndLog(replay);
+    return replay;
   }
   test::TempDirectory dir_;
   AppDef def_;
 };
 
 TEST_F(GhostRaceTest, ANewBestIsKeptAsTheLevelsGhost) {
-  const std::filesystem::path replay = dir_.path() / "replays" / "last-trial.hrr";
-  std::filesystem::create_directories(replay.parent_path());
-  playAndLog(replay);
+  const std::filesystem::path replay = loggedReplay();
   App app(def_);
   const script::LoadedLevel level = script::LevelLoader().loadFile(kLevel);
-  TrialResult result;
-  result.outcome = script::TrialOutcome::Success;
-  result.reason = "target held";
-  result.time = 1.0;
+  TrialResult result = successAt(1.0);
   ResultsScreen results(app, kLevel, level.def.name, result, replay, "");
   const std::filesystem::path ghost = ghostFile(dir_.path(), level.def.name, app.settings().participant);
   ASSERT_TRUE(std::filesystem::exists(ghost));
@@ -77,16 +81,10 @@ TEST_F(GhostRaceTest, ANewBestIsKeptAsTheLevelsGhost) {
 // The autopilot's run is not the player's: it is not scored and becomes the
 // ghost only when the player asks to race its line.
 TEST_F(GhostRaceTest, TheAutopilotsLineBecomesTheGhostOnlyWhenAsked) {
-  const std::filesystem::path replay = dir_.path() / "replays" / "last-trial.hrr";
-  std::filesystem::create_directories(replay.parent_path());
-  playAndLog(replay);
+  const std::filesystem::path replay = loggedReplay();
   App app(def_);
   const script::LoadedLevel level = script::LevelLoader().loadFile(kLevel);
-  TrialResult result;
-  result.outcome = script::TrialOutcome::Success;
-  result.reason = "target held";
-  result.time = 1.0;
-  ResultsScreen results(app, kLevel, level.def.name, result, replay, "", /*assisted=*/true);
+  ResultsScreen results(app, kLevel, level.def.name, successAt(1.0), replay, "", /*assisted=*/true);
   const std::filesystem::path ghost = ghostFile(dir_.path(), level.def.name, app.settings().participant);
   EXPECT_FALSE(std::filesystem::exists(ghost));
   EXPECT_EQ(app.scores().personalBest(level.def.name, app.settings().participant).attempts, 0);

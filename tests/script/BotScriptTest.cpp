@@ -57,6 +57,21 @@ TEST(BotScript, ActSeesTheObservationAndReturnsThePose) {
   EXPECT_FALSE(a.hasVelocity);
 }
 
+// The last two vectors of the observation: the coupling's force and what the
+// hand feels (the device's rendered force), each its own table.
+TEST(BotScript, ForceAndDeviceForceAreSeparateVectors) {
+  const BotFile file(
+      "return {name = 'feel', act = function(t, obs)\n"
+      "  return obs.force.x, obs.device_force.y, obs.device_force.z + obs.proxy.x\n"
+      "end}");
+  BotScript bot(file.path);
+  BotObservation obs;
+  obs.force = {1.5, 0.0, 0.0};
+  obs.deviceForce = {0.0, -0.25, 4.0};
+  obs.proxy = {0.5, 0.0, 0.0};
+  EXPECT_EQ(bot.act(obs).position, (Triple3{1.5, -0.25, 4.5}));
+}
+
 TEST(BotScript, SixValuesGiveAVelocity) {
   const BotFile file("return {name = 'v', act = function(t, obs) return 1, 2, 3, 4, 5, 6 end}");
   BotScript bot(file.path);
