@@ -44,7 +44,7 @@ TSAN_TARGETS := haptics_tests haptics_devices_tests record_tests screens_tests s
 tsan: deps
 	@cmake --preset tsan -Wno-dev > /dev/null
 	@cmake --build build-tsan -j $(JOBS) --target $(TSAN_TARGETS)
-	@TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1" ctest --test-dir build-tsan -j $(JOBS) --output-on-failure -LE heavy -L "haptics|record|screens"
+	@TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1 suppressions=$(CURDIR)/cmake/tsan.supp" ctest --test-dir build-tsan -j $(JOBS) --output-on-failure -LE heavy -L "haptics|record|screens"
 
 clean:
 	@rm -rf $(BUILD) build-asan build-tsan build-debug

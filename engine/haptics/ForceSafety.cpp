@@ -13,6 +13,10 @@ void ForceSafety::clearFault() {
 }
 
 double ForceSafety::recentPath(const SafetyInputs& in) {
+  if (in.newDevicePath) {
+    steps_.fill(0.0);
+    hasPosition_ = false;
+  }
   const double step = hasPosition_ ? (in.devicePosition - lastPosition_).norm() : 0.0;
   lastPosition_ = in.devicePosition;
   hasPosition_ = true;

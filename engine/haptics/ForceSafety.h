@@ -53,6 +53,7 @@ struct SafetyInputs {
   Vec3 devicePosition = Vec3::Zero();  // device frame [m]
   bool deviceError = false;
   bool deviceFresh = true;
+  bool newDevicePath = false;          // DeviceReading::newPath: the jump window restarts
   bool modelHalted = false;
   double proxyDistance = 0.0;          // proxy to mass point, scene [m]
   double injectedEnergy = 0.0;         // [J]

@@ -23,6 +23,10 @@ struct DeviceReading {
   // stops delivering returns its last sample with fresh = false, and the
   // stale-data watchdog counts how long that lasts.
   bool fresh = true;
+  // The first reading of a device switched in for another (the player taking
+  // over from the autopilot): its step from the previous reading is no
+  // motion, so the position-jump guard starts its window afresh here.
+  bool newPath = false;
 };
 
 class HapticDevice {

@@ -50,6 +50,7 @@ struct TickInput {
   Triple velocity{};                 // [m/s]
   std::uint32_t buttons = 0;
   bool fresh = true;
+  bool newPath = false;              // DeviceReading::newPath
   std::int64_t latenessNs = 0;       // [ns], 0 headless
 };
 

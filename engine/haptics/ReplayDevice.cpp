@@ -11,6 +11,7 @@ DeviceReading ReplayDevice::read(double /*t*/) {
   if (next_ >= inputs_.size()) {
     error_ = "replay log ended";
     last_.fresh = false;
+    last_.newPath = false;
     return last_;
   }
   const TickInput& in = inputs_[next_++];
@@ -18,6 +19,7 @@ DeviceReading ReplayDevice::read(double /*t*/) {
   last_.velocity = Vec3(in.velocity[0], in.velocity[1], in.velocity[2]);
   last_.buttons = in.buttons;
   last_.fresh = in.fresh;
+  last_.newPath = in.newPath;
   return last_;
 }
 

@@ -209,6 +209,7 @@ void ServoLoop::tick(std::int64_t latenessNs) {
   in.devicePosition = reading.position;
   in.deviceError = deviceError != nullptr;
   in.deviceFresh = reading.fresh;
+  in.newDevicePath = reading.newPath;
   in.modelHalted = stepper_.halted();
   in.proxyDistance = distance;
   in.injectedEnergy = injected;
@@ -269,6 +270,7 @@ void ServoLoop::logInput(const DeviceReading& reading, std::int64_t latenessNs) 
   in.velocity = toTriple(reading.velocity);
   in.buttons = reading.buttons;
   in.fresh = reading.fresh;
+  in.newPath = reading.newPath;
   in.latenessNs = latenessNs;
   if (!def_.inputRing->push(in))
     inputDropped_.store(inputDropped_.load(std::memory_order_relaxed) + 1, std::memory_order_relaxed);

@@ -88,7 +88,8 @@ ReplayRecordBytes encodeReplayRecord(const haptics::TickInput& in) {
   for (int i = 0; i < 3; ++i) putF64(&b[8 + 8 * i], in.position[static_cast<std::size_t>(i)]);
   for (int i = 0; i < 3; ++i) putF64(&b[32 + 8 * i], in.velocity[static_cast<std::size_t>(i)]);
   putU32(&b[56], in.buttons);
-  b[60] = in.fresh ? 1 : 0;
+  // Bit 0 fresh, bit 1 newPath (files before newPath hold 0 or 1 here).
+  b[60] = static_cast<std::uint8_t>((in.fresh ? 1 : 0) | (in.newPath ? 2 : 0));
   putU64(&b[64], static_cast<std::uint64_t>(in.latenessNs));
   return b;
 }
@@ -99,7 +100,8 @@ haptics::TickInput decodeReplayRecord(const ReplayRecordBytes& b) {
   for (int i = 0; i < 3; ++i) in.position[static_cast<std::size_t>(i)] = getF64(&b[8 + 8 * i]);
   for (int i = 0; i < 3; ++i) in.velocity[static_cast<std::size_t>(i)] = getF64(&b[32 + 8 * i]);
   in.buttons = getU32(&b[56]);
-  in.fresh = b[60] != 0;
+  in.fresh = (b[60] & 1) != 0;
+  in.newPath = (b[60] & 2) != 0;
   in.latenessNs = static_cast<std::int64_t>(getU64(&b[64]));
   return in;
 }

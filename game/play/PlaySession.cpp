@@ -121,19 +121,31 @@ haptics::Vec3 PlaySession::pointerScene() const {
 }
 
 void PlaySession::takeOver() {
-  if (!autopilotHolds()) return;
-  companion_->stopDriving();
+  if (!autopilotHolds() || handoverPending_) return;
   if (mouse_) {
+    companion_->stopDriving();
     // The pointer picks the proxy up where the autopilot left it: no jump,
     // no gap in the coupling.
     const haptics::Triple& p = snapshot_.proxyPosition;
     const haptics::Vec3 device = (haptics::Vec3(p[0], p[1], p[2]) - loopDef_.mapping.offset) / loopDef_.mapping.scale;
     mapping_.moveTo(device.x(), device.y());
     sendPointer(/*jump=*/true);
+    takeover_->handToPlayer();
   } else {
-    post(haptics::ServoCommandKind::Disengage);  // the player's hand is elsewhere: let go, take hold anew
+    // The player's hand is elsewhere and feels force: the autopilot lets go
+    // first (the force ramps out while it still holds the proxy), then the
+    // device is handed over (frame() does, once disengaged) and the player
+    // takes hold with the usual click and ramp-in.
+    post(haptics::ServoCommandKind::Disengage);
+    handoverPending_ = true;
   }
+}
+
+void PlaySession::handOverWhenLetGo() {
+  if (!handoverPending_ || snapshot_.engagement != haptics::Engagement::Disengaged) return;
+  companion_->stopDriving();
   takeover_->handToPlayer();
+  handoverPending_ = false;
 }
 
 void PlaySession::enableHints() {
@@ -187,6 +199,7 @@ bool PlaySession::frame() {
   if (!judging_.finished() && loop_->recordDropped() > 0)
     judging_.fail("the judge fell behind the servo loop (ticks dropped)");
   loop_->latest(snapshot_);
+  handOverWhenLetGo();
   if (judging_.finished()) finish();
   return !judging_.finished();
 }

@@ -122,8 +122,9 @@ class PlaySession {
   // result is then not the player's: no best, no ghost).
   bool assisted() const { return takeover_ != nullptr; }
   // The player takes the proxy from the autopilot (UI thread): the mouse
-  // carries on from where the autopilot left the proxy; any other device
-  // lets go, and the player's click takes hold with the usual ramp.
+  // carries on from where the autopilot left the proxy; for any other device
+  // the autopilot lets go (the force ramps out), the device is handed over
+  // once disengaged, and the player's click takes hold with the usual ramp.
   void takeOver();
   // Starts the autopilot beside the player for hints, if it is not already
   // planning (UI thread; its planning costs CPU, so only once asked for).
@@ -137,6 +138,7 @@ class PlaySession {
  private:
   void post(haptics::ServoCommandKind kind);
   void sendPointer(bool jump);
+  void handOverWhenLetGo();
   bool startLoopWhenReady();
 
   script::LoadedLevel& level_;
@@ -160,6 +162,7 @@ class PlaySession {
   physics::ForceDrivenState initial_;
   std::string waitingFor_;
   bool paused_ = false, stopped_ = false, started_ = false;
+  bool handoverPending_ = false;  // a force device's takeover waits for the autopilot to let go
   std::uint64_t faultClearedBy_ = 0;  // the tick by which a ClearFault has been applied
   std::chrono::steady_clock::time_point startedAt_;
 };

@@ -3,8 +3,11 @@
 namespace hemiroll::game {
 
 haptics::DeviceReading TakeoverDevice::read(double t) {
-  const haptics::DeviceReading player = player_.read(t);
-  return playerHolds() ? player : autopilot_.read(t);
+  haptics::DeviceReading player = player_.read(t);
+  if (!playerHolds()) return autopilot_.read(t);
+  player.newPath = !announced_;  // the switch is no motion of the hand
+  announced_ = true;
+  return player;
 }
 
 void TakeoverDevice::sendForce(const haptics::Vec3& force) {

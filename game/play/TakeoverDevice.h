@@ -34,6 +34,7 @@ class TakeoverDevice final : public haptics::HapticDevice {
   HandoffBotDevice& autopilot_;
   haptics::HapticDevice& player_;
   std::atomic<bool> playerHolds_{false};
+  bool announced_ = false;  // servo thread: the first player reading said newPath
 };
 
 }  // namespace hemiroll::game

@@ -74,7 +74,24 @@ TEST(ReplayFormatTest, RecordsRoundTripBitForBit) {
   EXPECT_EQ(std::memcmp(back.velocity.data(), in.velocity.data(), sizeof in.velocity), 0);
   EXPECT_EQ(back.buttons, in.buttons);
   EXPECT_EQ(back.fresh, false);
+  EXPECT_EQ(back.newPath, false);
   EXPECT_EQ(back.latenessNs, -3);
+}
+
+// Byte 60 holds fresh in bit 0 and newPath in bit 1; a file from before
+// newPath has only 0 or 1 there and reads with newPath false.
+TEST(ReplayFormatTest, TheFlagsByteKeepsFreshAndNewPathApart) {
+  for (const bool fresh : {false, true})
+    for (const bool newPath : {false, true}) {
+      haptics::TickInput in;
+      in.fresh = fresh;
+      in.newPath = newPath;
+      const ReplayRecordBytes b = encodeReplayRecord(in);
+      EXPECT_EQ(b[60], (fresh ? 1 : 0) | (newPath ? 2 : 0));
+      const haptics::TickInput back = decodeReplayRecord(b);
+      EXPECT_EQ(back.fresh, fresh);
+      EXPECT_EQ(back.newPath, newPath);
+    }
 }
 
 TEST(ReplayFormatTest, CommandsRoundTripBitForBit) {
