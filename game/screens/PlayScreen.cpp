@@ -218,12 +218,12 @@ void PlayScreen::buildScene(const haptics::ServoSnapshot& s) {
     trace_.push(s.state[physics::force_slot::u_a], s.state[physics::force_slot::v_a], s.time);
     scene_.trace = &trace_;
   }
-  showAutopilot();
   scene_.camera.mode = host_.settings().camera;
   scene_.camera.zoom = host_.settings().zoom;
   scene_.camera.yaw = host_.settings().orbitYaw;
   scene_.camera.pitch = host_.settings().orbitPitch;
   session_->setScreenYaw(render::screenRightHeading(scene_.camera));
+  showAutopilot();
 }
 
 // The autopilot's hint (its next proxy pose, from the proxy) when the player
@@ -233,6 +233,7 @@ void PlayScreen::showAutopilot() {
   haptics::GuideSample plan;
   const bool holding = session_->autopilotHolds();
   scene_.showHint = showHint_ && !holding && session_->hint(plan);
+  compass_.hide();
   if (scene_.showHint) {
     // Where the plan goes over the next moment, not only where it is: the
     // autopilot stays within a millimetre or two of the proxy, too close to
@@ -240,6 +241,10 @@ void PlayScreen::showAutopilot() {
     constexpr double kLookAhead = 0.3;  // [s]
     scene_.hintFrom = scene_.proxyPosition;
     for (int i = 0; i < 3; ++i) scene_.hintTo[i] = plan.position[i] + kLookAhead * plan.velocity[i];
+    double right = 0.0, up = 0.0;
+    toScreenDirections(scene_.hintTo[0] - scene_.hintFrom[0], scene_.hintTo[1] - scene_.hintFrom[1],
+                       render::screenRightHeading(scene_.camera), right, up);
+    compass_.show(right, up);
   }
   const std::string note = session_->autopilotNote();
   const std::string takeHold = host_.settings().keys.keyName(KeyAction::TakeHold);
@@ -312,6 +317,7 @@ void PlayScreen::paint() {
   const platform::PixelSize d = host_.window().drawableSize();
   host_.renderer().render(scene_, d.width, d.height);
   hud_.draw(host_.fps());
+  compass_.draw();
   if (!session_->waitingFor().empty()) {
     beginCentredPanel("waiting for the device", 640);
     ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1), "Waiting for the %s", session_->deviceName().c_str());

@@ -22,6 +22,7 @@
 #include "engine/render/RenderScene.h"
 #include "engine/script/LevelLoader.h"
 #include "game/app/KeyBindings.h"
+#include "game/hud/HintCompass.h"
 #include "game/hud/PlayHud.h"
 #include "game/play/PlaySession.h"
 #include "game/screens/PlayMode.h"
@@ -58,6 +59,7 @@ class PlayScreen final : public Screen {
   const ReplayPlayer* ghost() const { return ghost_.get(); }
   bool restartAllowed() const { return mode_->restartAllowed(); }
   const PlayHud& hud() const { return hud_; }
+  const HintCompass& compass() const { return compass_; }
   const std::string& error() const { return error_; }
 
  private:
@@ -81,6 +83,7 @@ class PlayScreen final : public Screen {
   std::unique_ptr<PlaySession> session_;
   std::unique_ptr<ReplayPlayer> ghost_;
   PlayHud hud_;
+  HintCompass compass_;  // the autopilot's hint in screen directions
   render::RenderScene scene_;
   render::ContactTrace trace_;
   haptics::Engagement lastEngagement_ = haptics::Engagement::Disengaged;

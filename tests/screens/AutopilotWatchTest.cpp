@@ -118,6 +118,8 @@ TEST_F(AutopilotWatchTest, TheHintShowsThePlanAndMovesNothing) {
   }
   ASSERT_TRUE(planned) << play->session()->autopilotNote();
   EXPECT_THAT(play->hud().autopilot(), HasSubstr("green = the autopilot's next move"));
+  app.frame();
+  EXPECT_TRUE(play->compass().shown());
   // The player never took hold: the proxy stays on the mass point's start
   // however the plan moves.
   const haptics::Vec3 before = play->session()->pointerScene();
@@ -127,6 +129,7 @@ TEST_F(AutopilotWatchTest, TheHintShowsThePlanAndMovesNothing) {
   app.inject(platform::keyDownEvent("H"));  // off again
   app.frame();
   EXPECT_EQ(play->hud().autopilot(), "");
+  EXPECT_FALSE(play->compass().shown());
 }
 
 }  // namespace
