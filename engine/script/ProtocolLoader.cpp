@@ -77,20 +77,26 @@ double readFadeValue(const LuaTableReader& table, const char* key, double fallba
   return v;
 }
 
+// `name` when it is one of `allowed`; else fails naming the key, with the
+// nearest allowed name or, when none is near, the list (`expected`).
+std::string oneOf(const LuaTableReader& table, const char* key, const std::string& name,
+                  std::initializer_list<const char*> allowed, const char* what, const char* expected) {
+  if (std::none_of(allowed.begin(), allowed.end(), [&](const char* a) { return name == a; })) {
+    const char* near = nearestName(name, allowed);
+    table.fail(key, "unknown " + std::string(what) + " '" + name + "'" +
+                        (near ? " (did you mean '" + std::string(near) + "'?)" : " (expected " + std::string(expected) + ")"));
+  }
+  return name;
+}
+
 // guidance = { kind = ..., stiffness | gain = ..., damping = ..., max_error = ..., fade = { ... } }
 GuidanceSpec readGuidance(const LuaTableReader& table) {
   rejectUnknownLevelKeys(table, {"kind", "stiffness", "gain", "damping", "max_error", "fade"});
   GuidanceSpec g;
   const auto kind = table.string("kind");
   if (!kind) table.fail("kind", "missing; \"none\", \"autopilot\" or \"error_augmentation\"");
-  static constexpr std::initializer_list<const char*> kKinds = {"none", "autopilot", "error_augmentation"};
-  if (std::none_of(kKinds.begin(), kKinds.end(), [&](const char* k) { return *kind == k; })) {
-    const char* near = nearestName(*kind, kKinds);
-    table.fail("kind", "unknown guidance kind '" + *kind + "'" +
-                           (near ? " (did you mean '" + std::string(near) + "'?)"
-                                 : " (expected \"none\", \"autopilot\" or \"error_augmentation\")"));
-  }
-  g.kind = *kind;
+  g.kind = oneOf(table, "kind", *kind, {"none", "autopilot", "error_augmentation"}, "guidance kind",
+                 "\"none\", \"autopilot\" or \"error_augmentation\"");
   // The spring's name says its sign: autopilot guidance has a stiffness
   // (towards the plan), error augmentation a gain (away from it).
   const char* spring = g.kind == "error_augmentation" ? "gain" : "stiffness";
@@ -114,15 +120,8 @@ GuidanceSpec readGuidance(const LuaTableReader& table) {
 // method, kr, kv, alpha, time_limit, guidance of a block or a condition.
 TrialOverrides readOverrides(const LuaTableReader& table) {
   TrialOverrides o;
-  if (const auto method = table.string("method")) {
-    if (std::none_of(kMethods.begin(), kMethods.end(), [&](const char* m) { return *method == m; })) {
-      const char* near = nearestName(*method, kMethods);
-      table.fail("method", "unknown method '" + *method + "'" +
-                               (near ? " (did you mean '" + std::string(near) + "'?)"
-                                     : " (expected \"M1\", \"M2\", \"M3\" or \"visual\")"));
-    }
-    o.method = *method;
-  }
+  if (const auto method = table.string("method"))
+    o.method = oneOf(table, "method", *method, kMethods, "method", "\"M1\", \"M2\", \"M3\" or \"visual\"");
   o.stiffness = readNonNegative(table, "kr", "stiffness, N/m");
   o.damping = readNonNegative(table, "kv", "damping, N s/m");
   o.alpha = readPositive(table, "alpha", "the normal / in-face gain ratio");
