@@ -25,6 +25,41 @@ TrialResult passiveHandOn(const std::string& level, haptics::GuidanceKind kind, 
   return HeadlessTrial(loaded, hand, settings).run();
 }
 
+// The passive hand on its own: still without force, and under a steady push
+// the relaxed arm's drift reaches its steady state. In continuous time the
+// arm's spring then stretches by v tau and F = k v tau + b v. The bot's
+// semi-implicit Euler moves the rest after the hand within a tick, so the
+// stretch the force sees is v (tau - dt): v = F / (k (tau - dt) + b), the
+// continuous rate to within dt / tau = 0.1 %.
+TEST(PassiveHandTest, StillWithoutForceAndDriftingAtTheSteadyRateUnderAPush) {
+  const PassiveHandDef def;
+  PassiveHandBot hand(def);
+  script::BotLevelInfo info;
+  info.dt = 0.001;
+  hand.init(info, 0);
+  script::BotObservation obs;
+  obs.mass = {0.01, -0.02, 0.04};
+  script::BotAction a;
+  for (int tick = 0; tick <= 1000; ++tick) {
+    obs.time = tick * info.dt;
+    a = hand.act(obs);
+  }
+  EXPECT_EQ(a.position, obs.mass);  // no force: it holds where it took hold
+  const double push = 0.3;          // [N] along y
+  obs.deviceForce = {0.0, push, 0.0};
+  for (int tick = 1001; tick <= 30000; ++tick) {
+    obs.time = tick * info.dt;
+    a = hand.act(obs);
+  }
+  const double steady = push / (def.stiffness * (def.settleTime - info.dt) + def.damping);
+  // The velocity and the arm's stretch settle as a damped pair with real part
+  // -(b/m + 1/tau)/2 = -17 /s: after 29 s, far below rounding.
+  EXPECT_NEAR(a.velocity[1], steady, 1e-9 * steady);
+  EXPECT_NEAR(a.velocity[1], push / (def.stiffness * def.settleTime + def.damping), 1.1e-3 * steady);
+  EXPECT_EQ(a.velocity[0], 0.0);
+  EXPECT_GT(a.position[1], obs.mass[1] + 0.9 * steady * 28.0);
+}
+
 // The paper's task in miniature (tutorial 04): a hand that only yields to
 // the device reaches the target and stops there when the autopilot guides
 // it, and not without guidance or with the error pushed up.
