@@ -86,7 +86,14 @@ bool PlaySession::startLoopWhenReady() {
   judging_.start(initial_);
   if (capture_) capture_->start();
   if (!judging_.finished()) {
-    if (autopilotHolds()) post(haptics::ServoCommandKind::Engage);  // the autopilot takes hold at once
+    if (autopilotHolds()) {
+      // The autopilot's hand rests on the mass point until its first plan
+      // lands (a few ms on its own thread; without this pose the loop would
+      // read a device with nothing to say), and takes hold at once.
+      autopilotHand_->publish(loopDef_.startTime, physics::massPointPosition(initial_, level_.def.params.radius),
+                              haptics::Vec3::Zero());
+      post(haptics::ServoCommandKind::Engage);
+    }
     loop_->start();
     if (companion_) {
       companion_->publishTask(judging_.judge());  // the goal before the first plan
