@@ -7,7 +7,7 @@ JOBS      ?= $(shell nproc 2>/dev/null || echo 2)
 OUT       := out
 CMAKE_CFG := cmake --preset release -Wno-dev > /dev/null
 
-.PHONY: play test build bench asan tsan deps configure clean
+.PHONY: play test build bench asan tsan fuzz deps configure clean
 
 deps:
 	@tools/install-deps.sh
@@ -46,5 +46,14 @@ tsan: deps
 	@cmake --build build-tsan -j $(JOBS) --target $(TSAN_TARGETS)
 	@TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1 suppressions=$(CURDIR)/cmake/tsan.supp" ctest --test-dir build-tsan -j $(JOBS) --output-on-failure -LE heavy -L "haptics|record|screens"
 
+# libFuzzer (Debian's clang) with ASan and UBSan on every parser and loader,
+# a minute each (tests/fuzz; `make test` runs the same targets a few
+# seconds each without libFuzzer).
+fuzz: deps
+	@tools/install-deps.sh --fuzz
+	@cmake --preset fuzz -Wno-dev > /dev/null
+	@cmake --build build-fuzz -j $(JOBS) --target fuzz_all
+	@ctest --test-dir build-fuzz -j $(JOBS) --output-on-failure -L fuzz
+
 clean:
-	@rm -rf $(BUILD) build-asan build-tsan build-debug
+	@rm -rf $(BUILD) build-asan build-tsan build-debug build-fuzz

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs what hemiroll needs from Debian's packages, once and quietly.
 # Called by `make play`, `make test`, `make build` and `make bench`; does
-# nothing when everything is already there.
+# nothing when everything is already there. `--fuzz` adds what `make fuzz`
+# needs besides: clang with its libFuzzer and sanitizer runtimes.
 set -euo pipefail
 
 packages=(
@@ -16,6 +17,9 @@ packages=(
   libimgui-dev libsqlite3-dev
   libexpat1-dev
 )
+if [ "${1:-}" = "--fuzz" ]; then
+  packages+=(clang libclang-rt-14-dev)
+fi
 
 missing=()
 for p in "${packages[@]}"; do
