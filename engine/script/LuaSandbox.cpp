@@ -406,6 +406,13 @@ void LuaSandbox::runChunk(std::string_view source, const std::string& chunkName,
     } else {
       message = lua_tostring(L, -1);
       if (!hasPosition(message)) message = chunkName + ": " + message;
+      // Lua's parser recurses once per open bracket, parenthesis or block and
+      // stops at LUAI_MAXCCALLS (200); its words for it are about C, and its
+      // line is where it gave up, at or after the deepest one.
+      if (const std::size_t at = message.rfind("C stack overflow"); at != std::string::npos)
+        message = message.substr(0, at) +
+                  "nested too deeply (Lua reads at most about 200 levels of brackets, parentheses or blocks; "
+                  "this line or one before it goes deeper)";
     }
     lua_pop(L, 1);
     throw ScriptError(message);
