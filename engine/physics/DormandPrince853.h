@@ -344,7 +344,11 @@ class DormandPrince853 final : public AdaptiveIntegrator<N> {
   bool denseReady_ = false;
 };
 
-// The long-double variant as a one-parameter template (for the registry).
+// Both variants as one-parameter templates, for the registry's template
+// template parameter (clang does not match a template with a defaulted
+// second parameter to `template <int> class` before C++20's P0522 is on).
+template <int N>
+using DormandPrince853Double = DormandPrince853<N, double>;
 template <int N>
 using DormandPrince853LongDouble = DormandPrince853<N, long double>;
 

@@ -228,7 +228,9 @@ std::string ResearchSession::couplingProblem(const haptics::DeviceSpec& device) 
 
 script::LoadedLevel ResearchSession::loadNextLevel() const {
   const ManifestTrial& trial = nextTrial();
-  const auto& [path, overrides] = trials_.at(static_cast<std::size_t>(done_));
+  const auto& planned = trials_.at(static_cast<std::size_t>(done_));
+  const std::string& path = planned.first;
+  const script::TrialOverrides& overrides = planned.second;  // a plain reference: clang 14 captures no structured binding
   script::LevelLoadOptions options;
   options.seed = trial.seed;
   options.adjust = [&overrides](script::LevelDef& level) { script::applyTrialOverrides(overrides, level); };
