@@ -47,6 +47,9 @@ int main(int argc, char** argv) {
     return 2;
   }
   const fs::path dir = argv[1];
+  // Made afresh every run: the replay logger never overwrites a log, and a
+  // seed left from an older build's format would test nothing.
+  fs::remove_all(dir);
 
   // A replay log: 20 ticks and an engage command.
   {
