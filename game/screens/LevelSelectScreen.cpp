@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <tuple>
 
 #include "engine/script/LevelLoader.h"
 #include "game/scores/ScoreStore.h"
@@ -33,14 +34,28 @@ std::vector<LevelEntry> scanLevels(const std::string& dir) {
     }
     out.push_back(std::move(e));
   }
-  std::sort(out.begin(), out.end(), [](const LevelEntry& a, const LevelEntry& b) { return a.path < b.path; });
+  // A new player meets the tutorials first, in their order; then the rest
+  // from the easiest; a broken file last (its error is still shown).
+  const auto rank = [](const LevelEntry& e) {
+    const bool tutorial = std::filesystem::path(e.path).filename().string().rfind("tutorial", 0) == 0;
+    return std::tuple(!e.error.empty(), !tutorial, e.difficulty, e.path);
+  };
+  std::sort(out.begin(), out.end(), [&](const LevelEntry& a, const LevelEntry& b) { return rank(a) < rank(b); });
   return out;
+}
+
+int firstToPlay(const std::vector<LevelEntry>& entries) {
+  for (std::size_t i = 0; i < entries.size(); ++i)
+    if (entries[i].error.empty() && !entries[i].best.bestTime) return static_cast<int>(i);
+  return 0;
 }
 
 void LevelSelectScreen::enter() {
   entries_ = scanLevels(host_.levelsDir());
   for (LevelEntry& e : entries_)
     if (e.error.empty()) e.best = host_.scores().best(e.name);
+  if (!entered_) selected_ = firstToPlay(entries_);  // later visits keep the player's choice
+  entered_ = true;
   selected_ = std::clamp(selected_, 0, std::max(0, static_cast<int>(entries_.size()) - 1));
 }
 

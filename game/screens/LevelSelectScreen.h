@@ -22,8 +22,12 @@ struct LevelEntry {
   LevelBest best;
 };
 
-// The levels in `dir` (not its subdirectories: levels/scenarios holds `sim` scenarios).
+// The levels in `dir` (not its subdirectories: levels/scenarios holds `sim`
+// scenarios): the tutorials first (files named tutorial*, in name order),
+// then the others from the lowest difficulty, broken files last.
 std::vector<LevelEntry> scanLevels(const std::string& dir);
+// The first level that loads and has not been won yet (0 when all have).
+int firstToPlay(const std::vector<LevelEntry>& entries);
 
 class LevelSelectScreen final : public Screen {
  public:
@@ -40,6 +44,7 @@ class LevelSelectScreen final : public Screen {
   void play(bool watch = false);  // watch: the autopilot plays, the player may take over
   std::vector<LevelEntry> entries_;
   int selected_ = 0;
+  bool entered_ = false;  // the first visit selects firstToPlay
 };
 
 }  // namespace hemiroll::game

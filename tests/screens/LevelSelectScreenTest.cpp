@@ -38,6 +38,28 @@ TEST(LevelSelectScreenTest, AMissingDirectoryIsAnEmptyList) {
   EXPECT_TRUE(scanLevels("/no/such/levels/dir").empty());
 }
 
+// A new player meets the tutorials first, in order; then the rest from the easiest.
+TEST(LevelSelectScreenTest, TheTutorialsComeFirstThenTheEasiest) {
+  const std::vector<LevelEntry> entries = scanLevels(HEMIROLL_SOURCE_DIR "/levels");
+  ASSERT_GE(entries.size(), 6u);
+  for (int i = 0; i < 4; ++i)
+    EXPECT_EQ(std::filesystem::path(entries[static_cast<std::size_t>(i)].path).filename().string().substr(0, 12),
+              "tutorial_0" + std::to_string(i + 1) + "_")
+        << entries[static_cast<std::size_t>(i)].path;
+  for (std::size_t i = 5; i < entries.size(); ++i) EXPECT_LE(entries[i - 1].difficulty, entries[i].difficulty);
+}
+
+TEST(LevelSelectScreenTest, TheFirstLevelNotYetWonIsSelected) {
+  std::vector<LevelEntry> entries(4);
+  entries[0].best.bestTime = 12.0;        // won
+  entries[1].error = "x.lua:1: broken";   // cannot be played
+  EXPECT_EQ(firstToPlay(entries), 2);
+  entries[2].best.bestTime = 3.0;
+  entries[3].best.bestTime = 4.0;
+  EXPECT_EQ(firstToPlay(entries), 0);     // all won: the top
+  EXPECT_EQ(firstToPlay({}), 0);
+}
+
 TEST(LevelSelectScreenTest, TheShippedLevelsAllLoad) {
   for (const LevelEntry& e : scanLevels(HEMIROLL_SOURCE_DIR "/levels")) EXPECT_TRUE(e.error.empty()) << e.error;
 }
