@@ -181,6 +181,7 @@ void Renderer::drawFloorLayer(const RenderScene& s) {
   lineScratch_.clear();
   appendZoneOutlines(s, lineScratch_);
   appendTargetOutlines(s, def_.floorExtent, lineScratch_);
+  appendTargetPointers(s, lineScratch_);  // with the outlines: drawn over the hemisphere too (x-ray)
   outlineVertices_ = std::min(lineScratch_.size(), lines_.capacity());
   if (s.trace) appendTraceLines(*s.trace, s.time, lineScratch_);
   lines_.update(lineScratch_.data(), lineScratch_.size());

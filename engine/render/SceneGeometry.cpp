@@ -55,6 +55,26 @@ void appendTargetOutlines(const RenderScene& scene, double extent, std::vector<V
   }
 }
 
+void appendTargetPointers(const RenderScene& scene, std::vector<Vertex>& out) {
+  constexpr double kFree = 1.0;  // [m]: a band this wide is a free component (RenderSceneBuilder's 1e3)
+  const double fromX = scene.centre[0], fromY = scene.centre[1];
+  for (const TargetMarker& t : scene.targets) {
+    if (t.inside) continue;
+    const double toX = t.halfWidth[0] < kFree ? t.position[0] : fromX;
+    const double toY = t.halfWidth[1] < kFree ? t.position[1] : fromY;
+    const double dx = toX - fromX, dy = toY - fromY, length = std::hypot(dx, dy);
+    if (!(length > 1e-3) || !std::isfinite(length)) continue;  // within a millimetre: the band says the rest
+    const double ux = dx / length, uy = dy / length;
+    const double head = std::min(0.3 * length, 0.006);  // [m]
+    const double c = std::cos(0.45), s = std::sin(0.45);  // the head's half angle, about 26 degrees
+    out.insert(out.end(), {flat(fromX, fromY, 0, kTargetLine), flat(toX, toY, 0, kTargetLine),
+                           flat(toX, toY, 0, kTargetLine),
+                           flat(toX - head * (c * ux - s * uy), toY - head * (s * ux + c * uy), 0, kTargetLine),
+                           flat(toX, toY, 0, kTargetLine),
+                           flat(toX - head * (c * ux + s * uy), toY - head * (-s * ux + c * uy), 0, kTargetLine)});
+  }
+}
+
 void appendZoneFills(const RenderScene& scene, std::vector<Vertex>& out) {
   for (const ZoneMarker& z : scene.forbidden) {
     if (!z.circle) {

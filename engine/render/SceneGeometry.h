@@ -30,6 +30,10 @@ void appendTargetFills(const RenderScene& scene, double extent, std::vector<Vert
 void appendZoneFills(const RenderScene& scene, std::vector<Vertex>& out);
 // GL_LINES pairs.
 void appendTargetOutlines(const RenderScene& scene, double extent, std::vector<Vertex>& out);
+// Which way to go: an arrow on the floor from the contact point (under the
+// sphere centre) to each target it is not yet inside, along the judged
+// components only (a free component is not a direction to go).
+void appendTargetPointers(const RenderScene& scene, std::vector<Vertex>& out);
 void appendZoneOutlines(const RenderScene& scene, std::vector<Vertex>& out);
 void appendTraceLines(const ContactTrace& trace, double now, std::vector<Vertex>& out);
 // A helix of `turns` turns and radius `coilRadius` from a to b [m].

@@ -25,6 +25,39 @@ TEST(SceneGeometryTest, TargetBandIsTheJudgedBoxClippedToTheFloor) {
   EXPECT_EQ(v[6].color[3], kTargetFillInside.a);
 }
 
+// The pointer runs from the contact point (under the centre) to the target,
+// ends in a head of two strokes, leaves out a free component, and is gone
+// once the contact point is inside.
+TEST(SceneGeometryTest, APointerRunsFromTheContactPointToTheTarget) {
+  RenderScene s;
+  s.centre = {0.01, 0.02, 0.04};
+  s.targets.push_back({{-0.03, -0.01}, {0.004, 0.004}, false});
+  std::vector<Vertex> v;
+  appendTargetPointers(s, v);
+  ASSERT_EQ(v.size(), 6u);
+  EXPECT_FLOAT_EQ(v[0].position[0], 0.01f);
+  EXPECT_FLOAT_EQ(v[0].position[1], 0.02f);
+  EXPECT_FLOAT_EQ(v[1].position[0], -0.03f);
+  EXPECT_FLOAT_EQ(v[1].position[1], -0.01f);
+  // Both head strokes start at the tip and point back towards the contact point.
+  for (int k : {3, 5}) {
+    const double bx = v[k].position[0] - v[k - 1].position[0], by = v[k].position[1] - v[k - 1].position[1];
+    EXPECT_GT(bx * 0.04 + by * 0.03, 0.0);  // along (0.04, 0.03), from the tip towards the start
+    EXPECT_NEAR(std::hypot(bx, by), 0.006, 1e-6);  // min(0.3 * 5 cm, 6 mm)
+  }
+  // x free: the pointer goes along y only.
+  s.targets[0].halfWidth[0] = 1e3;
+  v.clear();
+  appendTargetPointers(s, v);
+  ASSERT_EQ(v.size(), 6u);
+  EXPECT_FLOAT_EQ(v[1].position[0], 0.01f);
+  // Inside: nothing.
+  s.targets[0].inside = true;
+  v.clear();
+  appendTargetPointers(s, v);
+  EXPECT_TRUE(v.empty());
+}
+
 TEST(SceneGeometryTest, TraceSegmentsFadeWithAge) {
   ContactTrace trace({.capacity = 8, .minSpacing = 0.0, .fadeTime = 10.0});
   for (int i = 0; i < 5; ++i) trace.push(0.01 * i, 0.0, 2.0 * i);
