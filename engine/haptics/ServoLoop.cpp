@@ -257,7 +257,7 @@ void ServoLoop::publish(const physics::CouplingForces& forces, double distance, 
   s.maxLateness = maxLateness_;
   s.missedTicks = missed_.load(std::memory_order_relaxed);
   snapshots_.write(s);
-  plannerSnapshots_.write(s);
+  if (plannerReads_.load(std::memory_order_relaxed)) plannerSnapshots_.write(s);
   if (def_.recordRing != nullptr && s.tick % static_cast<std::uint64_t>(def_.recordEvery) == 0 &&
       !def_.recordRing->push(recordRowOf(s)))
     recordDropped_.store(recordDropped_.load(std::memory_order_relaxed) + 1, std::memory_order_relaxed);

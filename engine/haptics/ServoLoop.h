@@ -126,7 +126,12 @@ class ServoLoop {
   bool latest(ServoSnapshot& out) { return snapshots_.read(out); }
   // The same snapshots for a second consumer thread (a planner beside the
   // renderer: the autopilot watching or hinting in the window).
-  bool latestForPlanner(ServoSnapshot& out) { return plannerSnapshots_.read(out); }
+  // The tick writes this channel only once a planner has asked (a plain
+  // trial has none, and a snapshot is a few hundred bytes a tick).
+  bool latestForPlanner(ServoSnapshot& out) {
+    plannerReads_.store(true, std::memory_order_relaxed);
+    return plannerSnapshots_.read(out);
+  }
 
   const TimingHistogram& lateness() const { return lateness_; }
   const TimingHistogram& wakePeriod() const { return period_; }
@@ -172,6 +177,7 @@ class ServoLoop {
   SpscRing<ServoCommand, kCommandCapacity> commands_;
   TripleBuffer<ServoSnapshot> snapshots_;
   TripleBuffer<ServoSnapshot> plannerSnapshots_;
+  std::atomic<bool> plannerReads_{false};
   TripleBuffer<GuideSample> guides_;
   TimingHistogram lateness_, period_;
   std::atomic<std::uint64_t> ticks_{0}, missed_{0}, wakeups_{0};

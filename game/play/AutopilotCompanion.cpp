@@ -78,23 +78,10 @@ void AutopilotCompanion::run() {
 void AutopilotCompanion::step() {
   if (gaveUp_ || !loop_.latestForPlanner(snapshot_) || snapshot_.tick == lastTick_) return;
   lastTick_ = snapshot_.tick;
-  script::BotObservation task;
-  if (tasks_.read(task)) {  // keep the kinematics, take the task's part
-    hasTask_ = true;
-    obs_.target = task.target;
-    obs_.tolerance = task.tolerance;
-    obs_.targetSet = task.targetSet;
-    obs_.omegaNormSet = task.omegaNormSet;
-    obs_.omegaNormTarget = task.omegaNormTarget;
-    obs_.omegaNormTolerance = task.omegaNormTolerance;
-    obs_.zones = task.zones;
-    obs_.zoneCount = task.zoneCount;
-    obs_.timeLimit = task.timeLimit;
-    obs_.holdTime = task.holdTime;
-    obs_.held = task.held;
-    obs_.stage = task.stage;
-  }
-  if (!hasTask_) return;  // no plan without the goal: the first frame publishes it
+  // The task's part as the UI last published it (the latest, new or not),
+  // then this tick's kinematics over it. No plan before the first frame
+  // has published the goal.
+  if (!tasks_.read(obs_)) return;
   observer_.fillKinematics(snapshot_.time, physics::forceStateOf(snapshot_.state), snapshot_, obs_);
   const haptics::GuideSample plan = guideSampleOf(autopilot_, obs_);
   if (!plan.valid) {

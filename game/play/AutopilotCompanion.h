@@ -73,7 +73,6 @@ class AutopilotCompanion {
   haptics::ServoSnapshot snapshot_;
   std::uint64_t lastTick_ = 0;
   bool gaveUp_ = false;
-  bool hasTask_ = false;
 
   std::atomic<bool> driving_{true}, stopRequested_{false};
   std::atomic<std::uint64_t> planCount_{0};

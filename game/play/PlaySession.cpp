@@ -44,7 +44,7 @@ PlaySession::PlaySession(script::LoadedLevel& level, const PlaySessionDef& def)
   }
   loop_ = std::make_unique<haptics::ServoLoop>(loopDef_, takeover_ ? static_cast<haptics::HapticDevice&>(*takeover_)
                                                                    : *device_);
-  if (def.watchAutopilot || def.hints || def.guidance.active())
+  if (def.watchAutopilot || def.guidance.active())
     companion_ = std::make_unique<AutopilotCompanion>(level.def, *loop_, loopDef_.mapping, autopilotHand_.get(),
                                                       def.guidance.active());
   initial_ = physics::forceStateOf(loopDef_.initialState);

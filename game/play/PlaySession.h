@@ -58,12 +58,10 @@ struct PlaySessionDef {
   haptics::RecordRing* recordRing = nullptr;
   int recordEvery = 10;
   // The autopilot beside the player (AutopilotCompanion, on its own thread):
-  // watchAutopilot: it holds the proxy until takeOver(); hints: its plan is
-  // offered to the UI from the start (hint(); enableHints() starts it
-  // later); guidance: its plan pulls the player's device
-  // (haptic guidance, Guidance.h; felt only on a device with force output).
+  // watchAutopilot: it holds the proxy until takeOver(); guidance: its plan
+  // pulls the player's device (Guidance.h; felt only on a device with force
+  // output). Either way, and after enableHints(), hint() offers its plan.
   bool watchAutopilot = false;
-  bool hints = false;
   haptics::GuidanceDef guidance;
 };
 

@@ -431,3 +431,25 @@ TEST(ServoLoopRealtimeTest, TicksAndKeepsConsistentStatistics) {
 
 }  // namespace
 }  // namespace hemiroll::haptics
+
+namespace hemiroll::haptics {
+namespace {
+
+// The planner's channel carries the same snapshots as the renderer's, from
+// the first tick after a planner first asked (before, the tick skips it).
+TEST(ServoLoopTest, ThePlannersChannelStartsWhenAPlannerAsks) {
+  ScriptedDevice device(circling);
+  ServoLoop loop(quickDef(), device);
+  loop.runHeadless(5);
+  ServoSnapshot forPlanner, forRenderer;
+  EXPECT_FALSE(loop.latestForPlanner(forPlanner));  // asked now: nothing written yet
+  loop.runHeadless(3);
+  ASSERT_TRUE(loop.latestForPlanner(forPlanner));
+  ASSERT_TRUE(loop.latest(forRenderer));
+  EXPECT_EQ(forPlanner.tick, 8u);
+  EXPECT_EQ(forPlanner.tick, forRenderer.tick);
+  EXPECT_EQ(forPlanner.state, forRenderer.state);
+}
+
+}  // namespace
+}  // namespace hemiroll::haptics
