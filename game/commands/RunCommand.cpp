@@ -101,8 +101,9 @@ int runRunCommand(const std::vector<std::string>& args) {
   TrialResult result;
   try {
     if (options.recordDir) {
-      recording = std::make_unique<TrialRecording>(recordingDef(options), level.def,
-                                                   trialLoopDef(level.def));
+      haptics::ServoLoopDef loop = trialLoopDef(level.def);
+      loop.guidance = settings.guidance;  // into the sidecar
+      recording = std::make_unique<TrialRecording>(recordingDef(options), level.def, loop);
       recording->attach(settings);
     }
     result = HeadlessTrial(level, *bot, settings).run();

@@ -9,6 +9,7 @@
 #include "engine/haptics/ServoClock.h"
 #include "engine/physics/StateKinematics.h"
 #include "engine/script/ScriptError.h"
+#include "game/trial/AutopilotBot.h"
 #include "game/trial/HandoffBotDevice.h"
 #include "game/trial/ObservationBuilder.h"
 #include "game/trial/TrialJudge.h"
@@ -33,6 +34,7 @@ TrialResult runRealtimeTrial(script::LoadedLevel& level, script::BotPolicy& bot,
   loopDef.requestRealtime = true;
   loopDef.recordRing = ring.get();
   loopDef.recordEvery = 1;
+  loopDef.guidance = settings.guidance;
   HandoffBotDevice device(botDeviceSpec(), loopDef.mapping);
   haptics::ServoLoop loop(loopDef, device);
   TrialJudge judging(level, settings.recordRing, settings.recordEvery);
@@ -43,6 +45,20 @@ TrialResult runRealtimeTrial(script::LoadedLevel& level, script::BotPolicy& bot,
   haptics::ServoSnapshot snapshot;
   snapshot.state = loopDef.initialState;
   script::BotObservation obs;
+  // Guidance: the autopilot answers the same observations (HeadlessTrial.h),
+  // planning on its own thread as a real-time autopilot bot does.
+  std::unique_ptr<AutopilotBot> guide;
+  if (settings.guidance.active()) {
+    AutopilotBotOptions options;
+    options.plannerThread = true;
+    guide = std::make_unique<AutopilotBot>(options);
+    try {
+      guide->init(botLevelInfo(def, def.source), static_cast<std::int64_t>(settings.seed));
+    } catch (const script::ScriptError& e) {
+      guide.reset();
+      judge.finish(TrialOutcome::Failure, std::string("guidance: ") + e.what(), 0.0);  // on_fail at start
+    }
+  }
   double botTime = 0.0;  // simulation time of the last observation the bot answered
 
   // One bot call on the latest snapshot; false when the bot failed (the
@@ -59,6 +75,7 @@ TrialResult runRealtimeTrial(script::LoadedLevel& level, script::BotPolicy& bot,
         device.publish(time, vec(a.position), vec(a.velocity));
       else
         device.publish(time, vec(a.position));
+      if (guide) loop.publishGuide(guideSampleOf(*guide, obs));
     } catch (const script::ScriptError& e) {
       judging.fail(std::string("bot error: ") + e.what());
       return false;

@@ -6,11 +6,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <regex>
 #include <string>
 #include <vector>
 
+#include "engine/record/RecordingReader.h"
 #include "tests/support/ProcessRunner.h"
 #include "tests/support/TempDirectory.h"
 
@@ -64,6 +66,24 @@ const char* kLinePattern =
 std::string onlyLine(const std::string& out) {
   EXPECT_EQ(std::count(out.begin(), out.end(), '\n'), 1) << out;
   return out.substr(0, out.find('\n'));
+}
+
+// `run --guidance` guides the passive hand to the target, and the recording
+// says so: the sidecar names the guidance and the rows carry its force.
+TEST(RunCommand, GuidanceWinsForThePassiveHandAndIsRecorded) {
+  TempDirectory dir;
+  const ProcessResult r = hemiroll({"run", kSource + "/levels/tutorial_02_roll_a_short_distance.lua", "--bot",
+                                    "passive-hand", "--guidance", "autopilot", "--guidance-stiffness", "300", "--record",
+                                    dir.path().string()});
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  EXPECT_THAT(r.out, ::testing::HasSubstr("\"outcome\":\"success\""));
+  const std::filesystem::path csv = dir.path() / "tutorial_02_roll_a_short_distance_passive-hand_seed0.csv";
+  const record::Recording rec = record::RecordingReader::load(csv);
+  EXPECT_EQ(rec.meta.guidance.kind, haptics::GuidanceKind::Autopilot);
+  EXPECT_EQ(rec.meta.guidance.stiffness, 300.0);
+  double largest = 0.0;
+  for (const haptics::RecordRow& row : rec.rows) largest = std::max(largest, std::abs(row.guidanceForce[0]));
+  EXPECT_GT(largest, 0.01);
 }
 
 TEST(RunCommand, SuccessPrintsOneJsonLineAndExitsZero) {
