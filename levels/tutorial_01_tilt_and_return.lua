@@ -9,10 +9,11 @@ local told_to_return = false  -- level state lives in locals of this file
 
 return {
   name = "01 Tilt and return",
-  description = "Move the mass point about 1.5 cm towards +x: the hemisphere tilts and rolls a " ..
-    "little that way (u_o near -0.08 rad). Hold the tilt for half a second, then bring the " ..
-    "mass point back to the centre and let the hemisphere settle upright and still for 1 s. " ..
-    "Technique: move slowly; the spring between your hand and the mass point does the rest.",
+  description = "Take hold, then move the mouse slowly to the right, about 1.5 cm of the mass " ..
+    "point: the hemisphere leans about 5 degrees that way, towards the red mark on its face, " ..
+    "and rolls a little. The tilt gauge in the top left shows the lean. Hold it for half a " ..
+    "second, then bring the mass point back to the middle and let the hemisphere stand upright " ..
+    "and still for 1 s. Move slowly: the spring between your hand and the mass point does the rest.",
   author = "hemiroll",
   difficulty = 1,
   version = "1",
@@ -47,12 +48,12 @@ return {
     rate = 10,
     on_start = function(state)
       told_to_return = false
-      hemiroll.message("Tilt the hemisphere towards +x", 4)
+      hemiroll.message("Lean the hemisphere to the right: about 5 degrees on the tilt gauge", 4)
     end,
     on_update = function(state)
       if state.stage == 2 and not told_to_return then
         told_to_return = true
-        hemiroll.message("Good. Now bring it back upright and still", 4)
+        hemiroll.message("Good. Now the mass point back to the middle: upright and still", 4)
       end
     end,
     on_success = function(state) hemiroll.message("Well done!", 3) end,

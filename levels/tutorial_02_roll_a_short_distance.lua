@@ -10,9 +10,10 @@
 
 return {
   name = "02 Roll a short distance",
-  description = "Roll the contact point 4 mm along +x and keep the hemisphere still there for 2 s. " ..
-    "Technique: move the mass point slowly about 2 cm towards +x and wait; the hemisphere " ..
-    "rolls until it balances. Adjust a little at a time.",
+  description = "Roll the hemisphere 4 mm to the right, onto the target ring on the floor (the " ..
+    "green arrow points to it), and keep it still there for 2 s. Move the mass point slowly " ..
+    "about 2 cm to the right and wait: the hemisphere leans, rolls until it balances, and " ..
+    "stops. Then adjust a little at a time; the HUD says what is still off and by how much.",
   author = "hemiroll",
   difficulty = 1,
   version = "1",
@@ -39,6 +40,6 @@ return {
   scene = { contact_trace = true, plots = { "u_a", "x_p" }, record_rate = 100 },
   callbacks = {
     rate = 10,
-    on_start = function(state) hemiroll.message("Roll the contact point 4 mm towards +x", 4) end,
+    on_start = function(state) hemiroll.message("Roll 4 mm to the right, onto the ring, and stay still", 4) end,
   },
 }

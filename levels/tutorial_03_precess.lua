@@ -15,10 +15,11 @@ local last_stage = nil  -- level state lives in locals of this file
 
 return {
   name = "03 Precess",
-  description = "Tilt the hemisphere (mass point about 1.8 cm off centre) and carry the mass point " ..
-    "counter-clockwise round the centre: the contact point passes four gates on a 3.5 mm circle " ..
-    "(+x, +y, -x, -y). Then bring it back upright and still: it has turned about the vertical. " ..
-    "Technique: a steady circle, about 8 s per turn.",
+  description = "Lean the hemisphere (mass point about 1.8 cm off the middle), then carry the " ..
+    "mass point round the middle, anticlockwise, like stirring a pot: the lean goes round with it " ..
+    "and the contact point runs through four gates on a small circle, right, ahead, left and " ..
+    "behind (the green arrow points to the next). Then bring it upright and still: it will have " ..
+    "turned about the vertical. A steady circle, about 8 s per turn.",
   author = "hemiroll",
   difficulty = 2,
   version = "1",
@@ -52,7 +53,10 @@ return {
   scene = { contact_trace = true, plots = { "u_a", "v_a", "psi" }, record_rate = 100 },
   callbacks = {
     rate = 10,
-    on_start = function(state) last_stage = nil end,
+    on_start = function(state)
+      last_stage = nil
+      hemiroll.message("Lean it, then stir the mass point round, anticlockwise, 8 s a turn", 5)
+    end,
     on_update = function(state)
       if state.stage ~= last_stage then
         if last_stage then hemiroll.message("Gate " .. last_stage .. " passed", 2) end

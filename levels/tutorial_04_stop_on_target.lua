@@ -10,9 +10,11 @@ local pi = math.pi
 
 return {
   name = "04 Stop on target",
-  description = "Bring the contact point 1 cm along +x and stop there, nearly upright and at rest, " ..
-    "mass point near the centre. Technique: tilt towards the target, circle the mass point so " ..
-    "the contact point spirals over, then calm everything down. The paper's task, gentler.",
+  description = "Bring the hemisphere 1 cm to the right, onto the target ring, and stop there " ..
+    "nearly upright and at rest, mass point near the middle. A straight push only leans it: lean " ..
+    "it towards the target, then stir the mass point round (tutorial 3) so that the contact point " ..
+    "spirals over, then calm everything down. Stuck? H shows the autopilot's next move. The " ..
+    "paper's task, gentler.",
   author = "hemiroll",
   difficulty = 3,
   version = "1",

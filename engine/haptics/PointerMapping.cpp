@@ -42,6 +42,11 @@ void PointerMapping::moveTo(double x, double y) {
   clampToReach();
 }
 
+void PointerMapping::setHeight(double z) {
+  if (!std::isfinite(z)) return;
+  height_ = std::clamp(z, def_.minHeight, def_.maxHeight);
+}
+
 void PointerMapping::clampToReach() {
   const double r = std::hypot(x_, y_);
   if (r > def_.reach) {

@@ -43,6 +43,8 @@ class PointerMapping {
   void wheel(double notches);
   // Back to a horizontal position [m] (clamped to reach), e.g. the start.
   void moveTo(double x, double y);
+  // To a height [m] (clamped), e.g. the mass point's when taking hold.
+  void setHeight(double z);
 
   Vec3 position() const { return Vec3(x_, y_, height_); }
   double height() const { return height_; }

@@ -66,6 +66,7 @@ void TaskJudge::reset() {
   wasInside_ = false;
   allInside_ = false;
   zoneHit_ = -1;
+  holdBreak_ = {};
   loadComponents();
 }
 
@@ -101,6 +102,18 @@ void TaskJudge::end(TrialOutcome outcome, const char* reason, double time) {
   outcome_ = outcome;
   reason_ = reason;
   finishTime_ = time;
+}
+
+void TaskJudge::recordHoldBreak(double time) {
+  const ComponentStatus* furthest = nullptr;
+  for (const ComponentStatus& c : components_)
+    if (!c.inside && (!furthest || c.normalizedMargin() < furthest->normalizedMargin())) furthest = &c;
+  if (!furthest) return;
+  holdBreak_.happened = true;
+  holdBreak_.variable = furthest->variable;
+  holdBreak_.time = time;
+  holdBreak_.excess = -furthest->margin;
+  holdBreak_.heldFor = held_;
 }
 
 void TaskJudge::evaluateStage(const physics::ForceDrivenState& state) {
@@ -153,6 +166,7 @@ TrialOutcome TaskJudge::judge(const JudgeInput& input) {
   while (currentStage() != nullptr) {
     evaluateStage(x);
     if (!allInside_) {
+      if (wasInside_) recordHoldBreak(t);
       wasInside_ = false;
       held_ = 0.0;
       break;
@@ -174,6 +188,7 @@ TrialOutcome TaskJudge::judge(const JudgeInput& input) {
     ++stage_;
     wasInside_ = false;
     held_ = 0.0;
+    holdBreak_ = {};
     loadComponents();
   }
 

@@ -73,6 +73,17 @@ struct ComponentStatus {
   double normalizedMargin() const { return margin / tolerance; }
 };
 
+// The last time every component was inside and one went out again (the hold
+// timer reset): which, when, and how far out. What a player needs to know
+// when every row looks green but the hold never completes.
+struct HoldBreak {
+  bool happened = false;
+  TaskVariable variable = TaskVariable::x_p;  // the component furthest out on that tick
+  double time = 0.0;                          // [s] the tick it went out
+  double excess = 0.0;                        // |error| - tolerance on that tick [unit of the variable], > 0
+  double heldFor = 0.0;                       // [s] the hold it broke
+};
+
 class TaskJudge {
  public:
   // Copies the task. Reserves room for later setTarget additions up to one
@@ -103,6 +114,8 @@ class TaskJudge {
   // Smallest normalizedMargin() over the components (+inf when there are none).
   double worstNormalizedMargin() const { return worstNormalized_; }
   int forbiddenZoneHit() const { return zoneHit_; }  // index into task.forbidden; -1 = none
+  // The last hold the current stage lost (happened == false: none yet).
+  const HoldBreak& lastHoldBreak() const { return holdBreak_; }
 
   // The current stage's targets by state slot (omega_norm is not a slot and
   // is left out), for HUDs and bots: set[i] says whether slot i is judged.
@@ -126,6 +139,7 @@ class TaskJudge {
 
  private:
   void evaluateStage(const physics::ForceDrivenState& state);
+  void recordHoldBreak(double time);
   void end(TrialOutcome outcome, const char* reason, double time);
 
   void loadComponents();  // components_ from the current stage, within their reserved capacity
@@ -146,6 +160,7 @@ class TaskJudge {
   bool allInside_ = false;
   double worstNormalized_ = 0.0;
   int zoneHit_ = -1;
+  HoldBreak holdBreak_;
 };
 
 }  // namespace hemiroll::script

@@ -12,7 +12,8 @@ constexpr KeyActionInfo kActions[kKeyActionCount] = {
     {"take_hold", "take hold", "Space"},  {"let_go", "let go", "Backspace"},
     {"camera", "next camera", "Tab"},     {"orbit_left", "orbit left", "Left"},
     {"orbit_right", "orbit right", "Right"}, {"orbit_up", "orbit up", "Up"},
-    {"orbit_down", "orbit down", "Down"}, {"hint", "autopilot hint", "H"}};
+    {"orbit_down", "orbit down", "Down"}, {"hint", "autopilot hint", "H"},
+    {"hud_table", "every component in the HUD", "I"}};
 }  // namespace
 
 const KeyActionInfo& keyActionInfo(KeyAction action) { return kActions[static_cast<int>(action)]; }

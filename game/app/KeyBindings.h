@@ -11,8 +11,10 @@
 
 namespace hemiroll::game {
 
-enum class KeyAction : std::uint8_t { TakeHold, LetGo, CycleCamera, OrbitLeft, OrbitRight, OrbitUp, OrbitDown, Hint };
-inline constexpr int kKeyActionCount = 8;
+enum class KeyAction : std::uint8_t {
+  TakeHold, LetGo, CycleCamera, OrbitLeft, OrbitRight, OrbitUp, OrbitDown, Hint, HudTable
+};
+inline constexpr int kKeyActionCount = 9;
 
 struct KeyActionInfo {
   const char* id;          // the key under "keys" in settings.json

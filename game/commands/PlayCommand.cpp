@@ -108,6 +108,7 @@ int tour(App& app, const PlayOptions& o) {
 
 std::string playUsage() {
   return "usage: hemiroll play [LEVEL.lua] [--levels DIR] [--size WxH] [--no-vsync] [--autoplay SECONDS]\n"
+         "                     [--watch] [--tour DIR]\n"
          "Opens the game window on the title screen (or straight into LEVEL).\n"
          "  --levels DIR        the level select lists DIR/*.lua (default: levels)\n"
          "  --size WxH          window size in pixels (default 1280x720)\n"

@@ -20,7 +20,7 @@ void HintCompass::show(double right, double up) {
   up_ = shown_ ? up : 0.0;
 }
 
-void HintCompass::draw() const {
+void HintCompass::draw(WindowRects* rects) const {
   if (!shown_) return;
   const ImVec2 size = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos(ImVec2(size.x / 2, size.y - 10), ImGuiCond_Always, ImVec2(0.5f, 1));
@@ -54,6 +54,7 @@ void HintCompass::draw() const {
   else
     ImGui::Text("on its line");
   ImGui::EndGroup();
+  if (rects) rects->noteCurrentWindow("hint");
   ImGui::End();
 }
 

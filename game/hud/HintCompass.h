@@ -8,6 +8,8 @@
 
 #include <string>
 
+#include "game/hud/WindowRects.h"
+
 namespace hemiroll::game {
 
 class HintCompass {
@@ -21,7 +23,9 @@ class HintCompass {
   double right() const { return right_; }
   double up() const { return up_; }
 
-  void draw() const;  // inside an ImGui frame
+  // Inside an ImGui frame; notes its window in `rects` (the HUD's, for
+  // layout checks) when given.
+  void draw(WindowRects* rects = nullptr) const;
 
  private:
   bool shown_ = false;

@@ -3,10 +3,13 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include "engine/physics/StateLayout.h"
+#include "game/hud/HintCompass.h"
 
 namespace hemiroll::game {
 
@@ -16,24 +19,31 @@ const ImVec4 kGreen(0.35f, 0.85f, 0.4f, 1.0f);
 const ImVec4 kRed(0.95f, 0.4f, 0.35f, 1.0f);
 const ImVec4 kAmber(0.95f, 0.75f, 0.3f, 1.0f);
 const ImVec4 kGhostBlue(0.55f, 0.75f, 1.0f, 1.0f);  // the ghost's own colour
+constexpr double kDegrees = 180.0 / std::numbers::pi;
 
-double wrapAngle(double a) {
-  a = std::remainder(a, 2.0 * std::numbers::pi);
-  return a;
-}
+constexpr ImGuiWindowFlags kPanel =
+    ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoFocusOnAppearing |
+    ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoInputs;
+
+double wrapAngle(double a) { return std::remainder(a, 2.0 * std::numbers::pi); }
+
+// One decimal in the player's unit, two for bands narrower than one unit
+// (a 0.5° tilt band), so that a number never reads as its band's edge.
+int decimalsFor(double toleranceInUnit) { return toleranceInUnit < 1.0 ? 2 : 1; }
 
 }  // namespace
 
-PlayHud::PlayHud() : plot_(600), faceX_(400), faceY_(400) {}
+PlayHud::PlayHud() : faceX_(400), faceY_(400) { setPlots({}, physics::HemisphereParams{}); }
 
 void PlayHud::reset() {
   readout_ = {};
-  plot_.clear();
+  for (ScrollingPlot& p : plots_) p.clear();
   faceX_.clear();
   faceY_.clear();
   lastTime_ = -1.0;
   componentCount_ = 0;
   score_.reset();
+  prompt_.clear();
   messageUntil_.fill(0.0);
 }
 
@@ -44,6 +54,18 @@ void PlayHud::setLabels(std::string level, std::string device, std::string metho
   device_ = std::move(device);
   method_ = std::move(method);
   mousePlayer_ = mousePlayer;
+}
+
+void PlayHud::setPlots(const std::vector<std::string>& names, const physics::HemisphereParams& params) {
+  channels_.clear();
+  for (const std::string& name : names)
+    if (const std::optional<HudChannel> c = HudChannel::fromName(name); c && channels_.size() < kMaxPlots)
+      channels_.push_back(*c);
+  // A level without plots: where the contact point is, the task of most.
+  if (channels_.empty())
+    for (const char* name : {"u_a", "v_a"}) channels_.push_back(*HudChannel::fromName(name));
+  plots_.assign(channels_.size(), ScrollingPlot(600));
+  dynamics_.emplace(params);
 }
 
 void PlayHud::addMessage(const std::string& text, double until) {
@@ -68,11 +90,14 @@ void PlayHud::update(const haptics::ServoSnapshot& s, const script::TaskJudge& j
   r.timeLimit = judge.task().timeLimit;
   r.holdTime = judge.holdTime();
   r.requiredHold = judge.requiredHold();
+  r.holdBreak = judge.lastHoldBreak();
+  r.allInside = judge.allInside();
   r.engagement = s.engagement;
   r.rampScale = s.rampScale;
   r.latenessMs = s.maxLateness * 1e3;
   r.missedTicks = s.missedTicks;
   r.loopWarning = s.missedTicks > 0 || s.lateness > kLateWarning;
+  r.tilt = tiltOf(s);
 
   const auto comps = judge.components();
   componentCount_ = static_cast<int>(std::min(comps.size(), components_.size()));
@@ -97,78 +122,210 @@ void PlayHud::update(const haptics::ServoSnapshot& s, const script::TaskJudge& j
   if (s.time != lastTime_) {
     lastPsi_ = psi;
     lastTime_ = s.time;
-    plot_.push(static_cast<float>(s.state[static_cast<std::size_t>(kChannels[static_cast<std::size_t>(channel_)])]));
+    for (std::size_t i = 0; i < channels_.size(); ++i)
+      plots_[i].push(static_cast<float>(channels_[i].value(s, *dynamics_) * channels_[i].unit().scale));
     faceX_.push(static_cast<float>(s.state[slot::x_p]));
     faceY_.push(static_cast<float>(s.state[slot::y_p]));
   }
 }
 
+void PlayHud::componentLine(const script::ComponentStatus& c, std::span<char> out) {
+  const PlayerUnit u = playerUnitOf(c.variable);
+  const int d = decimalsFor(c.tolerance * u.scale);
+  std::snprintf(out.data(), out.size(), "%s off by %+.*f %s (band ±%.*f %s)", u.label, d, c.error * u.scale, u.unit,
+                d, c.tolerance * u.scale, u.unit);
+}
+
+std::string PlayHud::componentLine(const script::ComponentStatus& c) {
+  std::array<char, 128> line{};
+  componentLine(c, line);
+  return line.data();
+}
+
+void PlayHud::holdBreakLine(const script::HoldBreak& b, std::span<char> out) {
+  const PlayerUnit u = playerUnitOf(b.variable);
+  const int d = b.excess * u.scale < 1.0 ? 2 : 1;
+  std::snprintf(out.data(), out.size(), "%s wobbled out by %.*f %s after %.1f s", u.label, d, b.excess * u.scale,
+                u.unit, b.heldFor);
+}
+
+std::string PlayHud::holdBreakLine(const script::HoldBreak& b) {
+  std::array<char, 128> line{};
+  holdBreakLine(b, line);
+  return line.data();
+}
+
 void PlayHud::draw(double fps) {
-  const HudReadout& r = readout_;
+  fps_ = fps;
+  rects_.clear();
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_Always);
   ImGui::SetNextWindowBgAlpha(0.7f);
-  ImGui::Begin("hud", nullptr,
-               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoFocusOnAppearing |
-                   ImGuiWindowFlags_NoNav);
-  ImGui::Text("%s", level_.c_str());
-  ImGui::Text("time %6.1f / %.0f s", r.time, r.timeLimit);
-  if (r.distanceToTarget >= 0.0) ImGui::Text("to target %.1f mm", r.distanceToTarget * 1e3);
-  ImGui::Text("precession %+.2f rad/s", r.precessionRate);
-  if (r.requiredHold > 0.0) ImGui::Text("hold %.1f / %.1f s", r.holdTime, r.requiredHold);
-  if (score_) ImGui::Text("score so far %.1f", *score_);
-  for (int i = 0; i < componentCount_; ++i) {
-    const script::ComponentStatus& c = components_[static_cast<std::size_t>(i)];
-    ImGui::TextColored(c.inside ? kGreen : kRed, "%-6s %s margin %+.3g (tol %.3g)", script::taskVariableName(c.variable),
-                       c.inside ? "in " : "out", c.margin, c.tolerance);
-  }
+  ImGui::Begin("hud", nullptr, kPanel);
+  drawStatus();
+  drawComponents();
+  drawSettleMeter();
+  drawTiltGauge();
   ImGui::Separator();
-  ImGui::Text("%s, %s", device_.c_str(), method_.c_str());
-  switch (r.engagement) {
+  switch (readout_.engagement) {
     case haptics::Engagement::Disengaged: ImGui::TextColored(kAmber, "%s", takeHoldHint_.c_str()); break;
     case haptics::Engagement::Armed: ImGui::TextColored(kAmber, "bring the proxy onto the mass point"); break;
-    case haptics::Engagement::Engaged: ImGui::Text("engaged, force %3.0f%%", r.rampScale * 100.0); break;
-    case haptics::Engagement::RampingOut: ImGui::Text("letting go %3.0f%%", r.rampScale * 100.0); break;
+    case haptics::Engagement::Engaged: ImGui::Text("holding, force %3.0f%%", readout_.rampScale * 100.0); break;
+    case haptics::Engagement::RampingOut: ImGui::Text("letting go %3.0f%%", readout_.rampScale * 100.0); break;
   }
-  if (mousePlayer_) ImGui::TextDisabled("a mouse pushes no force back: the arrow shows it");
   if (!ghost_.empty()) ImGui::TextColored(kGhostBlue, "%s", ghost_.c_str());
   if (!autopilot_.empty()) ImGui::TextColored(ImVec4(0.3f, 0.95f, 0.55f, 1.0f), "%s", autopilot_.c_str());
-  if (r.loopWarning)
-    ImGui::TextColored(kAmber, "servo loop late: worst %.2f ms, %llu missed ticks", r.latenessMs, r.missedTicks);
-  ImGui::Text("%.0f fps", fps);
+  if (readout_.loopWarning)
+    ImGui::TextColored(kAmber, "servo loop late: worst %.2f ms, %llu missed ticks", readout_.latenessMs,
+                       readout_.missedTicks);
+  if (fullTable_) {
+    ImGui::Text("%s, %s", device_.c_str(), method_.c_str());
+    if (mousePlayer_) ImGui::TextDisabled("a mouse pushes no force back: the arrow shows it");
+    ImGui::Text("precession %+.0f °/s", readout_.precessionRate * kDegrees);
+    ImGui::Text("%.0f fps", fps_);
+  }
+  ImGui::TextDisabled("%s: %s", tableKey_.c_str(), fullTable_ ? "less" : "every component");
+  rects_.noteCurrentWindow("hud");
+  const float hudRight = ImGui::GetWindowPos().x + ImGui::GetWindowSize().x;
   ImGui::End();
 
-  // The level's messages, top centre, oldest first.
-  bool anyMessage = false;
-  for (std::size_t i = 0; i < kMessages; ++i) anyMessage = anyMessage || messageUntil_[i] > r.time;
-  if (anyMessage) {
-    ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x / 2, 10), ImGuiCond_Always, ImVec2(0.5f, 0));
-    ImGui::SetNextWindowBgAlpha(0.7f);
-    ImGui::Begin("messages", nullptr,
-                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoNav);
-    for (std::size_t k = 0; k < kMessages; ++k) {
-      const std::size_t i = (nextMessage_ + k) % kMessages;
-      if (messageUntil_[i] > r.time) ImGui::TextUnformatted(messages_[i].c_str());
-    }
-    ImGui::End();
-  }
+  drawMessages(hudRight + 10.0f);
+  drawPrompt();
+  drawPlots();
+}
 
-  // Plots, bottom right.
+void PlayHud::drawStatus() {
+  const HudReadout& r = readout_;
+  ImGui::Text("%s", level_.c_str());
+  ImGui::Text("time %5.1f / %.0f s", r.time, r.timeLimit);
+  if (r.distanceToTarget >= 0.0) ImGui::Text("to target %.1f mm", r.distanceToTarget * 1e3);
+  if (r.requiredHold > 0.0 && fullTable_) ImGui::Text("hold %.1f / %.1f s", r.holdTime, r.requiredHold);
+  if (score_) ImGui::Text("score so far %.1f", *score_);
+}
+
+// Compact: how many are in, and each one out with how far. Full: every row.
+void PlayHud::drawComponents() {
+  if (componentCount_ == 0) return;
+  const HudReadout& r = readout_;
+  ImGui::TextColored(r.allInside ? kGreen : kAmber, "in tolerance: %d of %d", r.componentsInside, r.components);
+  for (int i = 0; i < componentCount_; ++i) {
+    const script::ComponentStatus& c = components_[static_cast<std::size_t>(i)];
+    if (!fullTable_ && c.inside) continue;
+    const PlayerUnit u = playerUnitOf(c.variable);
+    const int d = decimalsFor(c.tolerance * u.scale);
+    ImGui::TextColored(c.inside ? kGreen : kRed, "  %-13s off %+7.*f %-4s (band ±%.*f)", u.label, d,
+                       c.error * u.scale, u.unit, d, c.tolerance * u.scale);
+  }
+}
+
+// While every component is inside the hold fills up; once one wobbles out
+// the meter says which and by how much, so a player knows what to steady.
+void PlayHud::drawSettleMeter() {
+  const HudReadout& r = readout_;
+  if (r.requiredHold <= 0.0 || componentCount_ == 0) return;
+  if (r.allInside) {
+    char label[48];
+    std::snprintf(label, sizeof label, "hold still %.1f / %.1f s", r.holdTime, r.requiredHold);
+    ImGui::PushStyleColor(ImGuiCol_PlotHistogram, kGreen);
+    ImGui::ProgressBar(static_cast<float>(std::clamp(r.holdTime / r.requiredHold, 0.0, 1.0)), ImVec2(260, 0), label);
+    ImGui::PopStyleColor();
+  } else if (r.holdBreak.happened && r.time - r.holdBreak.time < kHoldBreakShown) {
+    std::array<char, 128> line{};
+    holdBreakLine(r.holdBreak, line);
+    ImGui::TextColored(kAmber, "hold lost: %s", line.data());
+  }
+}
+
+// A bubble level seen from above: the dot leans the way the face goes
+// downhill (where the mass point would slide), in screen directions; rings
+// every 5 degrees, the edge at 15.
+void PlayHud::drawTiltGauge() {
+  constexpr float kSide = 56.0f;
+  constexpr double kEdge = 15.0;  // [degrees] at the rim
+  const Tilt& t = readout_.tilt;
+  const ImVec2 o = ImGui::GetCursorScreenPos();
+  ImGui::Dummy(ImVec2(kSide, kSide));
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  const ImVec2 c(o.x + kSide / 2, o.y + kSide / 2);
+  const float radius = kSide / 2 - 2;
+  for (int ring = 1; ring <= 3; ++ring)
+    dl->AddCircle(c, radius * static_cast<float>(ring) / 3.0f, IM_COL32(150, 150, 150, ring == 3 ? 255 : 110), 32);
+  double right = 0.0, up = 0.0;
+  toScreenDirections(t.downhillX, t.downhillY, screenYaw_, right, up);
+  const double degrees = t.angle * kDegrees;
+  const float reach = radius * static_cast<float>(std::min(1.0, degrees / kEdge));
+  const ImVec2 dot(c.x + reach * static_cast<float>(right), c.y - reach * static_cast<float>(up));
+  dl->AddLine(c, dot, IM_COL32(120, 200, 255, 255), 2.0f);
+  dl->AddCircleFilled(dot, 4.0f, IM_COL32(120, 200, 255, 255));
+  ImGui::SameLine();
+  ImGui::BeginGroup();
+  ImGui::Text("tilt %.1f °", degrees);
+  ImGui::TextDisabled("the dot: the low side");
+  ImGui::EndGroup();
+}
+
+// Right of the HUD, wrapped to the room left, so that a long message never
+// covers the HUD or runs off the window.
+void PlayHud::drawMessages(float left) {
+  bool anyMessage = false;
+  for (std::size_t i = 0; i < kMessages; ++i) anyMessage = anyMessage || messageUntil_[i] > readout_.time;
+  if (!anyMessage) return;
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  const float width = std::max(120.0f, std::min(520.0f, display.x - left - 10.0f));
+  ImGui::SetNextWindowPos(ImVec2(left, 10), ImGuiCond_Always);
+  ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(width, display.y / 3));
+  ImGui::SetNextWindowBgAlpha(0.7f);
+  ImGui::Begin("messages", nullptr, kPanel);
+  ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + width - 2 * ImGui::GetStyle().WindowPadding.x);
+  for (std::size_t k = 0; k < kMessages; ++k) {
+    const std::size_t i = (nextMessage_ + k) % kMessages;
+    if (messageUntil_[i] > readout_.time) ImGui::TextUnformatted(messages_[i].c_str());
+  }
+  ImGui::PopTextWrapPos();
+  rects_.noteCurrentWindow("messages");
+  ImGui::End();
+}
+
+void PlayHud::drawPrompt() {
+  if (prompt_.empty()) return;
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(display.x / 2, display.y * 0.62f), ImGuiCond_Always, ImVec2(0.5f, 0));
+  ImGui::SetNextWindowBgAlpha(0.8f);
+  ImGui::Begin("prompt", nullptr, kPanel);
+  ImGui::SetWindowFontScale(1.5f);
+  ImGui::TextColored(kAmber, "%s", prompt_.c_str());
+  rects_.noteCurrentWindow("prompt");
+  ImGui::End();
+}
+
+void PlayHud::drawPlots() {
   const ImVec2 size = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos(ImVec2(size.x - 10, size.y - 10), ImGuiCond_Always, ImVec2(1, 1));
   ImGui::SetNextWindowBgAlpha(0.7f);
-  ImGui::Begin("plots", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoNav);
-  static constexpr const char* kNames[] = {"contact x u_a [m]", "contact y v_a [m]", "tilt u_o [rad]",
-                                           "tilt v_o [rad]",    "heading psi [rad]", "mass point x_p [m]"};
-  int channel = channel_;
-  ImGui::SetNextItemWidth(200);
-  if (ImGui::Combo("channel", &channel, kNames, IM_ARRAYSIZE(kNames))) setChannel(channel);
-  ImGui::PlotLines("##channel", &ScrollingPlot::getter, &plot_, static_cast<int>(plot_.size()), 0, nullptr, FLT_MAX,
-                   FLT_MAX, ImVec2(360, 90));
+  ImGui::Begin("plots", nullptr, kPanel);
+  for (std::size_t i = 0; i < channels_.size(); ++i) {
+    const PlayerUnit& u = channels_[i].unit();
+    const ScrollingPlot& p = plots_[i];
+    float lo = p.size() ? p.min() : 0.0f, hi = p.size() ? p.max() : 0.0f;
+    // A flat trace still gets an axis: a unit either side of its value.
+    if (hi - lo < 1e-3f) {
+      lo -= 1.0f;
+      hi += 1.0f;
+    }
+    ImGui::Text("%s [%s]  now %+.1f", u.label, u.unit, p.size() ? p.at(p.size() - 1) : 0.0f);
+    ImGui::BeginGroup();
+    ImGui::TextDisabled("%+7.1f", hi);
+    ImGui::Dummy(ImVec2(0, 18));
+    ImGui::TextDisabled("%+7.1f", lo);
+    ImGui::EndGroup();
+    ImGui::SameLine();
+    ImGui::PlotLines(i == 0 ? "##plot0" : i == 1 ? "##plot1" : "##plot2", &ScrollingPlot::getter,
+                     const_cast<ScrollingPlot*>(&p), static_cast<int>(p.size()), 0, nullptr, lo, hi, ImVec2(300, 58));
+  }
   // The mass point on the face (where the rose of the paper's Sec. 5
   // appears): the last samples as a path inside the face's circle.
-  const float side = 120.0f;
+  const float side = 100.0f;
   const ImVec2 o = ImGui::GetCursorScreenPos();
-  ImGui::InvisibleButton("face", ImVec2(side, side));
+  ImGui::Dummy(ImVec2(side, side));
   ImDrawList* dl = ImGui::GetWindowDrawList();
   const ImVec2 c(o.x + side / 2, o.y + side / 2);
   const float k = (side / 2 - 4) / static_cast<float>(faceRadius_);
@@ -177,7 +334,8 @@ void PlayHud::draw(double fps) {
     dl->AddLine(ImVec2(c.x + k * faceX_.at(i - 1), c.y - k * faceY_.at(i - 1)),
                 ImVec2(c.x + k * faceX_.at(i), c.y - k * faceY_.at(i)), IM_COL32(90, 200, 255, 255));
   ImGui::SameLine();
-  ImGui::TextDisabled("mass point\non the face");
+  ImGui::TextDisabled("mass point on the face\n(radius %.0f mm)", faceRadius_ * 1e3);
+  rects_.noteCurrentWindow("plots");
   ImGui::End();
 }
 

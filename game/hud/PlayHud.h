@@ -1,22 +1,33 @@
 #pragma once
-// The play screen's HUD (Dear ImGui): time and limit, distance to target,
-// per-component tolerance indicators (green inside, with the margin),
-// precession rate, score so far, device and force method, a loop-timing
-// warning from the snapshot, the force-arrow note for mouse players, a
-// scrolling plot of one selectable state channel (the paper's Fig. 5: contact
-// x by default) and a small plot of the mass point on the face.
-//
+// The play screen's HUD (Dear ImGui), in a player's words and units:
+//  - top left: the level, the clock, the distance to the target, what is out
+//    of tolerance and by how much (compact; the full table of every judged
+//    component one key away), the settle meter (the hold filling up while
+//    every component is inside, or which component broke the last hold and
+//    by how much), a tilt gauge, the engagement, the ghost's and the
+//    autopilot's lines, a loop-timing warning;
+//  - beside it, top: the level's messages, never over the HUD;
+//  - upper middle: a prompt when the player must act (take hold to start,
+//    take hold again after letting go);
+//  - bottom right: the level's `scene.plots` (contact x and y when it names
+//    none) with their axis values, and the mass point on the face.
 // update() computes a plain HudReadout (tested without a window); draw()
-// shows it. Ring buffers are fixed: no allocation per frame once warm.
+// shows it and notes where each window went (rects(), for layout tests).
+// Ring buffers are fixed once a level is set: no allocation per frame.
 
 #include <array>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "engine/haptics/ServoSnapshot.h"
+#include "engine/physics/HemisphereParams.h"
+#include "engine/physics/RollingDynamics.h"
 #include "engine/script/TaskJudge.h"
+#include "game/hud/HudChannel.h"
 #include "game/hud/ScrollingPlot.h"
+#include "game/hud/WindowRects.h"
 
 namespace hemiroll::game {
 
@@ -24,8 +35,11 @@ struct HudReadout {
   double time = 0.0, timeLimit = 0.0;  // [s]
   double distanceToTarget = -1.0;      // contact point to its target [m]; < 0: no contact target
   int componentsInside = 0, components = 0;
+  bool allInside = false;
   double precessionRate = 0.0;         // d psi / dt [rad/s]
   double holdTime = 0.0, requiredHold = 0.0;  // [s]
+  script::HoldBreak holdBreak;         // the last hold lost in this stage
+  Tilt tilt;
   bool loopWarning = false;            // late ticks or missed ticks seen
   double latenessMs = 0.0;             // the snapshot's worst lateness so far [ms]
   unsigned long long missedTicks = 0;
@@ -35,9 +49,9 @@ struct HudReadout {
 
 class PlayHud {
  public:
-  // Channels the big plot can show: 12-state slot indices.
-  static constexpr std::array<int, 6> kChannels = {7, 8, 9, 10, 11, 0};  // u_a, v_a, u_o, v_o, psi, x_p
   static constexpr double kLateWarning = 0.0005;  // [s]: a tick later than half a period is worth showing
+  static constexpr double kHoldBreakShown = 3.0;  // [s] a lost hold stays explained
+  static constexpr std::size_t kMaxPlots = 3;
 
   PlayHud();
   void reset();
@@ -47,10 +61,27 @@ class PlayHud {
 
   // Text the HUD names; set when a session starts.
   void setLabels(std::string level, std::string device, std::string method, bool mousePlayer, double faceRadius);
+  // The level's plot channels (scene.plots: names LevelLoader accepted; the
+  // first kMaxPlots) and its model (for the energy channel).
+  void setPlots(const std::vector<std::string>& channels, const physics::HemisphereParams& params);
   // The key that takes hold, by name, for the hint while disengaged.
   void setTakeHoldKey(const std::string& name) { takeHoldHint_ = "click or " + name + " to take hold"; }
   const std::string& takeHoldHint() const { return takeHoldHint_; }
+  // The key that shows the full table, by name (the compact HUD says it).
+  void setTableKey(const std::string& name) { tableKey_ = name; }
+  // The heading of screen right [rad], so that the tilt gauge leans the way
+  // the screen shows.
+  void setScreenYaw(double radians) { screenYaw_ = radians; }
+  void toggleTable() { fullTable_ = !fullTable_; }
+  bool fullTable() const { return fullTable_; }
+  // A call to act, drawn large in the upper middle ("" = none).
+  void setPrompt(std::string text) { prompt_ = std::move(text); }
+  const std::string& prompt() const { return prompt_; }
   void draw(double fps);
+  // The windows drawn by the last draw(), by name.
+  std::span<const WindowRect> rects() const { return rects_.rects(); }
+  // For the windows drawn over the HUD's frame by others (the hint compass).
+  WindowRects& windowRects() { return rects_; }
 
   // The ghost's line ("" = none): whose run it is, and how it is going.
   void setGhost(std::string line) { ghost_ = std::move(line); }
@@ -69,25 +100,48 @@ class PlayHud {
   // The messages shown at simulated time `now`, oldest first (tests).
   std::vector<std::string> messages(double now) const;
 
-  int channel() const { return channel_; }
-  void setChannel(int index) { channel_ = index; plot_.clear(); }
-  const ScrollingPlot& plot() const { return plot_; }
+  std::size_t plotCount() const { return channels_.size(); }
+  const HudChannel& plotChannel(std::size_t i) const { return channels_[i]; }
+  const ScrollingPlot& plot(std::size_t i) const { return plots_[i]; }
+
+  // One judged component in the player's unit, e.g. "contact x off by
+  // +12.3 mm (band ±1.0 mm)"; written into `out` (no allocation) or returned.
+  static void componentLine(const script::ComponentStatus& c, std::span<char> out);
+  static std::string componentLine(const script::ComponentStatus& c);
+  // Why the last hold was lost, e.g. "tilt v wobbled out by 0.40 ° after 0.6 s".
+  static void holdBreakLine(const script::HoldBreak& b, std::span<char> out);
+  static std::string holdBreakLine(const script::HoldBreak& b);
 
  private:
+  void drawStatus();
+  void drawComponents();
+  void drawSettleMeter();
+  void drawTiltGauge();
+  void drawMessages(float left);
+  void drawPrompt();
+  void drawPlots();
+
   HudReadout readout_;
   std::array<script::ComponentStatus, 16> components_{};
   int componentCount_ = 0;
-  ScrollingPlot plot_, faceX_, faceY_;
-  int channel_ = 0;
+  std::vector<HudChannel> channels_;
+  std::vector<ScrollingPlot> plots_;
+  ScrollingPlot faceX_, faceY_;
+  std::optional<physics::RollingDynamics> dynamics_;
   double lastPsi_ = 0.0, lastTime_ = -1.0;
-  std::string level_, device_, method_, ghost_, autopilot_;
+  std::string level_, device_, method_, ghost_, autopilot_, prompt_;
   std::string takeHoldHint_ = "click or Space to take hold";
+  std::string tableKey_ = "I";
   bool mousePlayer_ = true;
+  bool fullTable_ = false;
+  double screenYaw_ = 0.0;
   std::optional<double> score_;
+  double fps_ = 0.0;
   std::array<std::string, kMessages> messages_{};
   std::array<double, kMessages> messageUntil_{};
   std::size_t nextMessage_ = 0;
   double faceRadius_ = 0.04;  // R [m]: the face plot's circle
+  WindowRects rects_;
 };
 
 }  // namespace hemiroll::game

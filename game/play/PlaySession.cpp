@@ -23,6 +23,7 @@ PlaySession::PlaySession(script::LoadedLevel& level, const PlaySessionDef& def)
     if (!choice.device) throw std::runtime_error(def.device + ": " + choice.error);
     device_ = std::move(choice.device);
   }
+  clockStartsOnTakeHold_ = def.clockStartsOnTakeHold;
   loopDef_.requestRealtime = def.requestRealtime;
   loopDef_.recordRing = ring_.get();
   loopDef_.recordEvery = 1;  // the judge sees every tick
@@ -82,23 +83,26 @@ bool PlaySession::startLoopWhenReady() {
     return false;
   }
   waitingFor_.clear();
+  if (!judgeStarted_) {
+    judgeStarted_ = true;
+    judging_.start(initial_);
+  }
+  if (judging_.finished()) return true;   // on_start ended it
+  if (holdsClock() && !takenHold_) return false;
   startedAt_ = std::chrono::steady_clock::now();
-  judging_.start(initial_);
   if (capture_) capture_->start();
-  if (!judging_.finished()) {
-    if (autopilotHolds()) {
-      // The autopilot's hand rests on the mass point until its first plan
-      // lands (a few ms on its own thread; without this pose the loop would
-      // read a device with nothing to say), and takes hold at once.
-      autopilotHand_->publish(loopDef_.startTime, physics::massPointPosition(initial_, level_.def.params.radius),
-                              haptics::Vec3::Zero());
-      post(haptics::ServoCommandKind::Engage);
-    }
-    loop_->start();
-    if (companion_) {
-      companion_->publishTask(judging_.judge());  // the goal before the first plan
-      companion_->start();
-    }
+  if (autopilotHolds()) {
+    // The autopilot's hand rests on the mass point until its first plan
+    // lands (a few ms on its own thread; without this pose the loop would
+    // read a device with nothing to say), and takes hold at once.
+    autopilotHand_->publish(loopDef_.startTime, physics::massPointPosition(initial_, level_.def.params.radius),
+                            haptics::Vec3::Zero());
+    post(haptics::ServoCommandKind::Engage);
+  }
+  loop_->start();
+  if (companion_) {
+    companion_->publishTask(judging_.judge());  // the goal before the first plan
+    companion_->start();
   }
   return true;
 }
@@ -174,7 +178,28 @@ void PlaySession::post(haptics::ServoCommandKind kind) {
   loop_->post(c);  // a full ring (64 commands) drops it; the player clicks again
 }
 
-void PlaySession::click() { post(haptics::ServoCommandKind::Engage); }
+void PlaySession::click() {
+  if (stopped_ || autopilotHolds()) return;
+  putProxyOnMassPoint();
+  post(haptics::ServoCommandKind::Engage);
+  takenHold_ = true;
+  if (started_) startLoopWhenReady();
+}
+
+// Only while nothing is held (or the loop waits for the proxy): moving a
+// coupled proxy would be a jump in the force.
+void PlaySession::putProxyOnMassPoint() {
+  if (!mouse_) return;
+  if (snapshot_.engagement != haptics::Engagement::Disengaged && snapshot_.engagement != haptics::Engagement::Armed)
+    return;
+  const physics::Vec3 p =
+      physics::massPointPosition(physics::forceStateOf(snapshot_.state), level_.def.params.radius);
+  const haptics::Vec3 device = (haptics::Vec3(p.x(), p.y(), p.z()) - loopDef_.mapping.offset) / loopDef_.mapping.scale;
+  if (!device.allFinite()) return;
+  mapping_.moveTo(device.x(), device.y());
+  mapping_.setHeight(device.z());
+  sendPointer(/*jump=*/true);
+}
 void PlaySession::release() { post(haptics::ServoCommandKind::Disengage); }
 
 void PlaySession::pause() {
@@ -206,6 +231,7 @@ bool PlaySession::frame() {
   if (!judging_.finished() && loop_->recordDropped() > 0)
     judging_.fail("the judge fell behind the servo loop (ticks dropped)");
   loop_->latest(snapshot_);
+  everEngaged_ = everEngaged_ || snapshot_.engagement == haptics::Engagement::Engaged;
   handOverWhenLetGo();
   if (judging_.finished()) finish();
   return !judging_.finished();

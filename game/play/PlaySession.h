@@ -24,6 +24,13 @@
 // client's first state) holds the start: the loop starts, and the trial's
 // clock with it, at the first frame() that finds the device ready, and
 // waitingFor() says what it waits for meanwhile.
+//
+// Taking hold (a person's trial): the clock starts when the player first
+// takes hold, not while they read the level's text (awaitingTakeHold()
+// until then; the level's on_start has run, the physics stands still). With
+// the mouse, taking hold always works: the proxy is put on the mass point
+// first (wherever the pointer wandered), so that it engages at once and the
+// force ramps in; a force device's handle must be brought there by hand.
 
 #include <chrono>
 #include <filesystem>
@@ -63,6 +70,9 @@ struct PlaySessionDef {
   // output). Either way, and after enableHints(), hint() offers its plan.
   bool watchAutopilot = false;
   haptics::GuidanceDef guidance;
+  // The physics and the clock wait for the player's first take-hold
+  // (ignored while the autopilot holds: it takes hold at once).
+  bool clockStartsOnTakeHold = true;
 };
 
 class PlaySession {
@@ -77,6 +87,11 @@ class PlaySession {
   void start();  // on_start, then the servo thread (once the device is ready)
   // "" once the loop runs, else what the start waits for (a sentence).
   const std::string& waitingFor() const { return waitingFor_; }
+  // The device is ready and the trial waits for the player's first take-hold.
+  bool awaitingTakeHold() const { return judgeStarted_ && !takenHold_ && holdsClock() && !judging_.finished(); }
+  // The player has held the proxy and let go since (the trial goes on:
+  // taking hold again is how to carry on).
+  bool letGo() const { return everEngaged_ && snapshot_.engagement == haptics::Engagement::Disengaged; }
   const std::string& deviceName() const { return deviceName_; }
   const haptics::HapticDevice& device() const { return *device_; }
   // UI thread, mouse only (ignored for other devices): the pointer moved by
@@ -85,7 +100,10 @@ class PlaySession {
   // The heading of screen right [rad] (render::screenRightHeading of the camera).
   void setScreenYaw(double radians) { mapping_.setScreenYaw(radians); }
   void wheel(double notches);
-  void click();        // arm the engagement (the loop engages near the mass point)
+  // Take hold: arm the engagement (the loop engages near the mass point);
+  // the mouse's proxy is put on the mass point first. The first take-hold
+  // starts the clock.
+  void click();
   void release();      // disengage: the force ramps out
   void pause();        // physics stops, force zero at once
   void resume();       // also clears a latched safety fault
@@ -138,6 +156,8 @@ class PlaySession {
   void sendPointer(bool jump);
   void handOverWhenLetGo();
   bool startLoopWhenReady();
+  bool holdsClock() const { return clockStartsOnTakeHold_ && !takeover_; }
+  void putProxyOnMassPoint();
 
   script::LoadedLevel& level_;
   haptics::ServoLoopDef loopDef_;
@@ -160,6 +180,10 @@ class PlaySession {
   physics::ForceDrivenState initial_;
   std::string waitingFor_;
   bool paused_ = false, stopped_ = false, started_ = false;
+  bool clockStartsOnTakeHold_ = true;
+  bool judgeStarted_ = false;  // on_start has run (the device was ready)
+  bool takenHold_ = false;     // the player has taken hold at least once
+  bool everEngaged_ = false;   // a snapshot has shown the proxy engaged
   bool handoverPending_ = false;  // a force device's takeover waits for the autopilot to let go
   std::uint64_t faultClearedBy_ = 0;  // the tick by which a ClearFault has been applied
   std::chrono::steady_clock::time_point startedAt_;

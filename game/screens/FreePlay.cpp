@@ -24,12 +24,13 @@ physics::CouplingDef FreePlay::coupling(const script::LevelDef& level) const {
   return couplingFor(host_.settings(), level.coupling);
 }
 
-void FreePlay::finished(PlaySession& session, TrialResult result, const script::LevelDef& level) {
+void FreePlay::finished(PlaySession& session, TrialResult result, const script::LevelDef& level,
+                        TrialEnding ending) {
   std::string replayNote = session.replayError();
   if (host_.settings().overrideCoupling) replayNote = "no replay: the force method was overridden in the settings";
   host_.screens().replace(
       std::make_unique<ResultsScreen>(host_, levelPath_, level.name, std::move(result), session.replayFile(), replayNote,
-                                      session.assisted()));
+                                      session.assisted(), std::move(ending)));
 }
 
 void FreePlay::leftWithoutTrial(const std::string& /*error*/) { host_.screens().pop(); }

@@ -21,7 +21,8 @@ class FreePlay final : public PlayMode {
   std::string title(const script::LevelDef& level) const override { return level.name; }
   bool ghostAllowed() const override { return true; }
   bool restartAllowed() const override { return true; }
-  void finished(PlaySession& session, TrialResult result, const script::LevelDef& level) override;
+  void finished(PlaySession& session, TrialResult result, const script::LevelDef& level,
+                TrialEnding ending) override;
   void leftWithoutTrial(const std::string& error) override;
 
  private:

@@ -13,6 +13,7 @@
 #include "game/screens/ScreenHost.h"
 #include "game/screens/ScreenLayout.h"
 #include "game/screens/ScreenStack.h"
+#include "game/screens/TrialEnding.h"
 
 namespace hemiroll::game {
 
@@ -29,6 +30,7 @@ std::vector<LevelEntry> scanLevels(const std::string& dir) {
       e.name = level.def.name;
       e.description = level.def.description;
       e.difficulty = level.def.difficulty;
+      e.scoring = level.def.scoring;
     } catch (const std::exception& error) {
       e.error = error.what();
     }
@@ -105,8 +107,11 @@ void LevelSelectScreen::paint() {
     ImGui::PopID();
   }
   if (selected_ < static_cast<int>(entries_.size()) && entries_[static_cast<std::size_t>(selected_)].error.empty()) {
+    const LevelEntry& e = entries_[static_cast<std::size_t>(selected_)];
     ImGui::Separator();
-    ImGui::TextWrapped("%s", entries_[static_cast<std::size_t>(selected_)].description.c_str());
+    ImGui::TextWrapped("%s", e.description.c_str());
+    if (const std::string medals = medalThresholds(e.scoring); !medals.empty())
+      ImGui::TextDisabled("medals: %s", medals.c_str());
   }
   ImGui::Separator();
   if (ImGui::Button("Play  (Enter)")) play();

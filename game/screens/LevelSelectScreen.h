@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/script/LevelDef.h"
 #include "game/scores/ScoreStore.h"
 #include "game/screens/Screen.h"
 
@@ -19,6 +20,7 @@ struct LevelEntry {
   std::string description;
   int difficulty = 0;
   std::string error;        // "" = loads
+  script::ScoringDef scoring;  // the medal thresholds the card shows
   LevelBest best;
 };
 

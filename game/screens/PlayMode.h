@@ -12,6 +12,7 @@
 #include "engine/physics/ForceCoupling.h"
 #include "engine/script/LevelLoader.h"
 #include "game/play/PlaySession.h"
+#include "game/screens/TrialEnding.h"
 #include "game/trial/TrialJudge.h"
 
 namespace hemiroll::game {
@@ -34,9 +35,11 @@ class PlayMode {
   virtual std::string title(const script::LevelDef& level) const = 0;
   virtual bool ghostAllowed() const = 0;
   virtual bool restartAllowed() const = 0;
-  // The judge ended the trial (`session` finished, its result in `result`):
-  // the mode changes the screen stack.
-  virtual void finished(PlaySession& session, TrialResult result, const script::LevelDef& level) = 0;
+  // The judge ended the trial (`session` finished, its result in `result`,
+  // the last frame and what decided it in `ending`): the mode changes the
+  // screen stack.
+  virtual void finished(PlaySession& session, TrialResult result, const script::LevelDef& level,
+                        TrialEnding ending) = 0;
   // The trial could not start (`error`) and the player left.
   virtual void leftWithoutTrial(const std::string& error) = 0;
 };

@@ -53,6 +53,8 @@ void PlayScreen::begin() {
                  coupling.visualOnly ? "visual only" : physics::forceMethodName(coupling.method), mouse,
                  level_.def.params.radius);
   hud_.setTakeHoldKey(host_.settings().keys.keyName(KeyAction::TakeHold));
+  hud_.setTableKey(host_.settings().keys.keyName(KeyAction::HudTable));
+  hud_.setPlots(level_.def.scene.plots, level_.def.params);
   trace_.clear();
   lastEngagement_ = haptics::Engagement::Disengaged;
   for (const std::string& note : host_.renderer().setProps(propsOf(level_.def))) hud_.addMessage("scene: " + note, 10.0);
@@ -61,6 +63,7 @@ void PlayScreen::begin() {
 
 void PlayScreen::loadGhost() {
   ghost_.reset();
+  ghostTime_.reset();
   scene_.ghost.shown = false;
   hud_.setGhost("");
   if (!host_.settings().ghost || !mode_->ghostAllowed()) return;
@@ -69,6 +72,7 @@ void PlayScreen::loadGhost() {
   if (!std::filesystem::exists(file, ec)) return;
   try {
     ghost_ = std::make_unique<ReplayPlayer>(level_.def, mode_->levelPath(), file);
+    ghostTime_ = ghostTime(file);
   } catch (const std::exception& e) {
     hud_.setGhost(std::string("no ghost: ") + e.what());
   }
@@ -157,6 +161,9 @@ void PlayScreen::keyAction(KeyAction action, bool repeat) {
       showHint_ = !showHint_;
       if (showHint_) session_->enableHints();
       break;
+    case KeyAction::HudTable:
+      if (!repeat) hud_.toggleTable();
+      break;
     case KeyAction::LetGo:
       if (!repeat) session_->release();
       break;
@@ -190,6 +197,7 @@ void PlayScreen::update(double dt) {
   const haptics::ServoSnapshot& s = session_->snapshot();
   hud_.update(s, session_->judging().judge());
   buildScene(s);
+  hud_.setPrompt(prompt());
   playSounds(s);
   if (safetyStop()) return;
   if (session_->finished()) endTrial();
@@ -223,6 +231,7 @@ void PlayScreen::buildScene(const haptics::ServoSnapshot& s) {
   scene_.camera.yaw = host_.settings().orbitYaw;
   scene_.camera.pitch = host_.settings().orbitPitch;
   session_->setScreenYaw(render::screenRightHeading(scene_.camera));
+  hud_.setScreenYaw(render::screenRightHeading(scene_.camera));
   showAutopilot();
 }
 
@@ -258,14 +267,29 @@ void PlayScreen::showAutopilot() {
     hud_.setAutopilot("");
 }
 
+// What the player must do now, if anything: take hold to start (the clock
+// waits), or take hold again after letting go, before the mass point slides
+// off the face.
+std::string PlayScreen::prompt() const {
+  if (session_->autopilotHolds() || session_->finished() || !session_->waitingFor().empty()) return "";
+  const std::string key = host_.settings().keys.keyName(KeyAction::TakeHold);
+  if (session_->awaitingTakeHold()) return "Click or press " + key + " to take hold\nthe clock starts then";
+  if (session_->letGo()) return "You let go: click or press " + key + "\nto take hold again";
+  return "";
+}
+
 void PlayScreen::followGhost(const haptics::ServoSnapshot& s) {
   if (!ghost_) return;
   // In step by simulated time, which stands still while paused.
   ghost_->playTo(static_cast<std::uint64_t>(std::llround(s.time / ghost_->period())));
   fillGhost(level_.def, ghost_->snapshot(), scene_.ghost);
-  const double best = static_cast<double>(ghost_->ticksTotal()) * ghost_->period();
+  // The judged time kept with the ghost: the results screen's number. (The
+  // log runs a few ticks past the judge's end; an older ghost without its
+  // time is timed by its length.)
+  const double best = ghostTime_.value_or(static_cast<double>(ghost_->ticksTotal()) * ghost_->period());
+  const bool finished = ghostTime_ ? s.time >= *ghostTime_ : ghost_->done();
   char line[96];
-  std::snprintf(line, sizeof line, ghost_->done() ? "ghost: your best finished at %.2f s" : "ghost: your best, %.2f s",
+  std::snprintf(line, sizeof line, finished ? "ghost: your best finished at %.2f s" : "ghost: your best, %.2f s",
                 best);
   hud_.setGhost(line);
 }
@@ -299,7 +323,11 @@ void PlayScreen::endTrial() {
   host_.audio().setProximity(0.0);
   TrialResult result = session_->finish();
   host_.audio().play(result.outcome == script::TrialOutcome::Success ? Cue::Success : Cue::Failure);
-  mode_->finished(*session_, std::move(result), level_.def);
+  // The last frame stays on screen behind the results, with what decided it.
+  TrialEnding ending = TrialEnding::of(scene_, scene_.trace);
+  ending.decidedBy = explainEnding(result, session_->judging().judge().task());
+  ending.scoring = level_.def.scoring;
+  mode_->finished(*session_, std::move(result), level_.def, std::move(ending));
 }
 
 // Leaving a trial that could not start; a session hears why.
@@ -317,7 +345,7 @@ void PlayScreen::paint() {
   const platform::PixelSize d = host_.window().drawableSize();
   host_.renderer().render(scene_, d.width, d.height);
   hud_.draw(host_.fps());
-  compass_.draw();
+  compass_.draw(&hud_.windowRects());
   if (!session_->waitingFor().empty()) {
     beginCentredPanel("waiting for the device", 640);
     ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1), "Waiting for the %s", session_->deviceName().c_str());

@@ -4,18 +4,23 @@
 // RenderSceneBuilder and engine/render, with the PlayHud over it.
 // Mouse: the proxy starts on the mass point and moves by the mouse's strokes
 // (captured pointer, the proxy drawn as the cursor: PointerMapping.h says
-// why), left click = take hold (engages near the mass point), right click =
-// let go, wheel = proxy height; the arrow keys turn the orbit camera. With the ghost on (settings), the player's
+// why); left click or the take-hold key = take hold (the proxy is put on the
+// mass point and the force ramps in), right click = let go, wheel = proxy
+// height; the arrow keys turn the orbit camera. The clock starts when the
+// player first takes hold (PlaySession); a prompt says so, and says to take
+// hold again after letting go. With the ghost on (settings), the player's
 // best run of the level (its replay) is played in step with this one, by
-// simulated time, and drawn translucent beside it. Keys: Escape pauses
-// (as does the window losing focus), Tab changes the camera. When the judge
-// ends the trial the results screen takes this one's place.
+// simulated time, and drawn translucent beside it. Keys: Escape pauses (as
+// does the window losing focus), Tab changes the camera, I shows every
+// judged component. When the judge ends the trial the results screen takes
+// this one's place.
 //
 // What kind of trial it is (free play, a research session's trial) is a
 // PlayMode given to it (PlayMode.h): loading, titles, ghost and restart
 // rules and what follows the end are the mode's.
 
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "engine/render/ContactTrace.h"
@@ -73,6 +78,7 @@ class PlayScreen final : public Screen {
   void showAutopilot();
   void playSounds(const haptics::ServoSnapshot& s);
   bool safetyStop();
+  std::string prompt() const;
   void endTrial();
   void back();
   void pause();
@@ -82,6 +88,7 @@ class PlayScreen final : public Screen {
   script::LoadedLevel level_;
   std::unique_ptr<PlaySession> session_;
   std::unique_ptr<ReplayPlayer> ghost_;
+  std::optional<double> ghostTime_;  // [s] the ghost's judged time, when kept with it
   PlayHud hud_;
   HintCompass compass_;  // the autopilot's hint in screen directions
   render::RenderScene scene_;

@@ -2,9 +2,13 @@
 
 #include <imgui.h>
 
+#include <algorithm>
+#include <cmath>
 #include <ctime>
 
+#include "engine/platform/Window.h"
 #include "engine/record/DataDirectory.h"
+#include "engine/render/Renderer.h"
 #include "engine/record/FileNames.h"
 #include "game/app/Settings.h"
 #include "game/scores/ScoreStore.h"
@@ -18,14 +22,15 @@
 namespace hemiroll::game {
 
 ResultsScreen::ResultsScreen(ScreenHost& host, std::string levelPath, std::string levelName, TrialResult result,
-                             std::filesystem::path replay, std::string replayNote, bool assisted)
+                             std::filesystem::path replay, std::string replayNote, bool assisted, TrialEnding ending)
     : Screen(host),
       levelPath_(std::move(levelPath)),
       levelName_(std::move(levelName)),
       result_(std::move(result)),
       replay_(std::move(replay)),
       replayNote_(std::move(replayNote)),
-      assisted_(assisted) {
+      assisted_(assisted),
+      ending_(std::move(ending)) {
   const std::string& player = host_.settings().participant;
   if (assisted_) {  // the autopilot's run is not the player's: no score, no best
     before_ = host_.scores().personalBest(levelName_, player);
@@ -44,7 +49,7 @@ ResultsScreen::ResultsScreen(ScreenHost& host, std::string levelPath, std::strin
   entry.medal = script::medalName(result_.medal);
   stored_ = host_.scores().add(entry);
   if (newBest_ && !replay_.empty()) {
-    const std::string error = keepAsGhost(replay_, ghostFile(record::dataDirectory(), levelName_, player));
+    const std::string error = keepAsGhost(replay_, ghostFile(record::dataDirectory(), levelName_, player), result_.time);
     replayNote_ = error.empty() ? "kept as your ghost: race it next time" : error;
   }
 }
@@ -57,7 +62,7 @@ ResultsScreen::~ResultsScreen() {
 void ResultsScreen::raceThisLine() {
   if (replay_.empty()) return;
   const std::string error =
-      keepAsGhost(replay_, ghostFile(record::dataDirectory(), levelName_, host_.settings().participant));
+      keepAsGhost(replay_, ghostFile(record::dataDirectory(), levelName_, host_.settings().participant), result_.time);
   replayNote_ = error.empty() ? "kept as your ghost: race the autopilot's line next time" : error;
 }
 
@@ -94,24 +99,87 @@ void ResultsScreen::input(const platform::InputEvent& e) {
   else if (e.key == platform::Key::Escape) host_.screens().pop();
 }
 
+namespace {
+
+const ImVec4 kGreenText(0.4f, 0.9f, 0.45f, 1), kRedText(1, 0.5f, 0.4f, 1), kGoldText(0.95f, 0.8f, 0.35f, 1);
+
+ImVec4 medalColour(script::Medal m) {
+  switch (m) {
+    case script::Medal::Gold: return ImVec4(1.0f, 0.84f, 0.2f, 1);
+    case script::Medal::Silver: return ImVec4(0.82f, 0.84f, 0.88f, 1);
+    case script::Medal::Bronze: return ImVec4(0.85f, 0.55f, 0.3f, 1);
+    case script::Medal::None: break;
+  }
+  return ImVec4(0.7f, 0.7f, 0.7f, 1);
+}
+
+// Confetti over the scene for the first seconds of a success: pieces fall
+// from above the window on fixed pseudo-random paths (an index hash: the
+// same picture every time, and nothing to allocate).
+void drawConfetti(double seconds) {
+  constexpr double kLasts = 3.0;  // [s]
+  if (seconds > kLasts) return;
+  const ImVec2 d = ImGui::GetIO().DisplaySize;
+  ImDrawList* dl = ImGui::GetForegroundDrawList();
+  const ImU32 colours[] = {IM_COL32(255, 214, 51, 255), IM_COL32(90, 200, 255, 255), IM_COL32(110, 230, 120, 255),
+                           IM_COL32(255, 120, 160, 255)};
+  const auto alpha = static_cast<float>(1.0 - seconds / kLasts);
+  for (unsigned i = 0; i < 90; ++i) {
+    const unsigned h = (i * 2654435761u) ^ (i >> 3);
+    const float x0 = static_cast<float>(h % 1000) / 1000.0f * d.x;
+    const float speed = 0.35f + static_cast<float>((h >> 10) % 100) / 160.0f;  // screen heights per second
+    const float y = (-0.1f + speed * static_cast<float>(seconds)) * d.y - static_cast<float>((h >> 17) % 200);
+    const float x = x0 + 20.0f * std::sin(static_cast<float>(seconds) * 4.0f + static_cast<float>(i));
+    ImU32 c = colours[i % 4];
+    c = (c & 0x00FFFFFFu) | (static_cast<ImU32>(alpha * 255.0f) << 24);
+    dl->AddRectFilled(ImVec2(x, y), ImVec2(x + 7, y + 4), c);
+  }
+}
+
+}  // namespace
+
 void ResultsScreen::paint() {
-  beginCentredPanel("results", 560);
+  // The trial's last frame stays in view, and the panel stands to its right.
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  if (ending_.hasScene) {
+    const platform::PixelSize px = host_.window().drawableSize();
+    host_.renderer().render(ending_.scene, px.width, px.height);
+  }
   const bool success = result_.outcome == script::TrialOutcome::Success;
+  // Narrow enough to leave the hemisphere (the middle of the window) clear at 1280 px.
+  const float width = std::min(ending_.hasScene ? 460.0f : 560.0f, display.x - 20.0f);
+  if (ending_.hasScene) {
+    ImGui::SetNextWindowPos(ImVec2(display.x - 10, display.y / 2), ImGuiCond_Always, ImVec2(1.0f, 0.5f));
+    ImGui::SetNextWindowSize(ImVec2(width, 0), ImGuiCond_Always);
+    ImGui::SetNextWindowBgAlpha(0.85f);
+    ImGui::Begin("results", nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings);
+  } else {
+    beginCentredPanel("results", width);
+  }
   ImGui::SetWindowFontScale(1.8f);
-  ImGui::TextColored(success ? ImVec4(0.4f, 0.9f, 0.45f, 1) : ImVec4(1, 0.5f, 0.4f, 1), "%s",
-                     success ? "Success" : "Not this time");
+  if (success && result_.medal != script::Medal::None)
+    ImGui::TextColored(medalColour(result_.medal), "Success: %s medal", script::medalName(result_.medal));
+  else
+    ImGui::TextColored(success ? kGreenText : kRedText, "%s", success ? "Success" : "Not this time");
   ImGui::SetWindowFontScale(1.0f);
-  ImGui::Text("%s: %s", levelName_.c_str(), result_.reason.c_str());
+  ImGui::TextWrapped("%s", levelName_.c_str());
   ImGui::Text("time %.2f s", result_.time);
+  if (ending_.decidedBy.empty()) ImGui::TextWrapped("%s", result_.reason.c_str());
+  ImGui::PushTextWrapPos(0.0f);
+  for (const std::string& line : ending_.decidedBy) ImGui::TextDisabled("%s", line.c_str());
+  ImGui::PopTextWrapPos();
   if (result_.score)
     ImGui::Text("score %.1f   medal %s", *result_.score, script::medalName(result_.medal));
   else if (!result_.scoreError.empty())
-    ImGui::TextColored(ImVec4(1, 0.5f, 0.4f, 1), "no score: %s", result_.scoreError.c_str());
+    ImGui::TextColored(kRedText, "no score: %s", result_.scoreError.c_str());
+  if (const std::string medals = medalThresholds(ending_.scoring); !medals.empty())
+    ImGui::TextDisabled("medals: %s", medals.c_str());
   if (!result_.endCallbackError.empty())
-    ImGui::TextColored(ImVec4(1, 0.5f, 0.4f, 1), "the level's end callback failed: %s", result_.endCallbackError.c_str());
-  if (newBest_) ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1), "new personal best");
+    ImGui::TextColored(kRedText, "the level's end callback failed: %s", result_.endCallbackError.c_str());
+  if (newBest_) ImGui::TextColored(kGoldText, "new personal best");
   if (before_.bestTime) ImGui::Text("personal best before: %.2f s", *before_.bestTime);
-  if (!stored_) ImGui::TextDisabled("(this trial could not be stored in %s)", host_.scores().file().c_str());
+  if (!stored_ && !assisted_) ImGui::TextDisabled("(this trial could not be stored in %s)", host_.scores().file().c_str());
   const ImVec2 button(-1, 0);
   if (!replay_.empty()) {
     if (!replaySaved_ && ImGui::Button("Save replay  (S)", button)) saveReplay();
@@ -120,10 +188,16 @@ void ResultsScreen::paint() {
   if (assisted_ && result_.outcome == script::TrialOutcome::Success && !replay_.empty() &&
       ImGui::Button("Race this line  (G)", button))
     raceThisLine();
-  if (!replayNote_.empty()) ImGui::TextDisabled("%s", replayNote_.c_str());
+  // A saved file's path can be longer than the panel: wrapped, not clipped.
+  if (!replayNote_.empty()) {
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextDisabled("%s", replayNote_.c_str());
+    ImGui::PopTextWrapPos();
+  }
   if (ImGui::Button("Play again  (Enter)", button)) again();
   if (ImGui::Button("Levels  (Esc)", button)) host_.screens().pop();
   ImGui::End();
+  if (success && !assisted_) drawConfetti(shownFor_);
 }
 
 }  // namespace hemiroll::game

@@ -1,6 +1,8 @@
 #pragma once
-// The end of a trial: outcome and reason, time, score, medal, the personal
-// best before this trial, and whether it is a new one. The trial is stored
+// The end of a trial: outcome and reason, time and what decided it, score,
+// medal and the level's medal thresholds, the personal best before this
+// trial, and whether it is a new one; drawn beside the trial's last frame
+// (its final pose and contact trace), with confetti for a success. The trial is stored
 // in the scores database when the screen is made. The trial's replay log
 // can be kept (S: moved to <data directory>/replays/<level>-<time>.hrr) or
 // watched (W); an unsaved one is deleted when the screen goes. Enter plays
@@ -12,24 +14,28 @@
 #include "game/trial/HeadlessTrial.h"
 #include "game/scores/ScoreStore.h"
 #include "game/screens/Screen.h"
+#include "game/screens/TrialEnding.h"
 
 namespace hemiroll::game {
 
 class ResultsScreen final : public Screen {
  public:
   ResultsScreen(ScreenHost& host, std::string levelPath, std::string levelName, TrialResult result,
-                std::filesystem::path replay = {}, std::string replayNote = {}, bool assisted = false);
+                std::filesystem::path replay = {}, std::string replayNote = {}, bool assisted = false,
+                TrialEnding ending = {});
   ~ResultsScreen() override;
   // The autopilot's run (or the part before the player took over): kept as the ghost to race.
   void raceThisLine();
   const char* name() const override { return "results"; }
   void input(const platform::InputEvent& e) override;
+  void update(double dt) override { shownFor_ += dt; }
   void paint() override;
 
   const TrialResult& result() const { return result_; }
   const std::filesystem::path& replay() const { return replay_; }
   bool replaySaved() const { return replaySaved_; }
   bool newBest() const { return newBest_; }
+  const TrialEnding& ending() const { return ending_; }
 
  private:
   void again();
@@ -44,6 +50,8 @@ class ResultsScreen final : public Screen {
   bool newBest_ = false;
   bool stored_ = false;
   bool assisted_ = false;  // the autopilot played: not in the scores, offered as a ghost
+  TrialEnding ending_;
+  double shownFor_ = 0.0;  // [s] since the screen came up: the celebration's clock
 };
 
 }  // namespace hemiroll::game

@@ -43,7 +43,8 @@ std::string SessionTrialPlay::title(const script::LevelDef& level) const {
          ": " + level.name;
 }
 
-void SessionTrialPlay::finished(PlaySession& session, TrialResult result, const script::LevelDef& /*level*/) {
+void SessionTrialPlay::finished(PlaySession& session, TrialResult result, const script::LevelDef& /*level*/,
+                                TrialEnding /*ending*/) {
   SessionTrialEnd recorded;
   recorded.recorded = true;
   recorded.result = std::move(result);

@@ -35,7 +35,8 @@ class SessionTrialPlay final : public PlayMode {
   std::string title(const script::LevelDef& level) const override;
   bool ghostAllowed() const override { return false; }
   bool restartAllowed() const override { return false; }
-  void finished(PlaySession& session, TrialResult result, const script::LevelDef& level) override;
+  void finished(PlaySession& session, TrialResult result, const script::LevelDef& level,
+                TrialEnding ending) override;
   void leftWithoutTrial(const std::string& error) override;
 
  private:

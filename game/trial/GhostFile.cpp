@@ -1,5 +1,9 @@
 #include "game/trial/GhostFile.h"
 
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+
 #include "engine/record/FileNames.h"
 
 namespace hemiroll::game {
@@ -16,7 +20,7 @@ std::filesystem::path ghostFile(const std::filesystem::path& dataDir, const std:
   return dataDir / "ghosts" / fileStem(player) / (fileStem(levelName) + ".hrr");
 }
 
-std::string keepAsGhost(const std::filesystem::path& replay, const std::filesystem::path& ghost) {
+std::string keepAsGhost(const std::filesystem::path& replay, const std::filesystem::path& ghost, double time) {
   std::error_code ec;
   std::filesystem::create_directories(ghost.parent_path(), ec);
   const std::filesystem::path temp = ghost.string() + ".new";
@@ -27,7 +31,19 @@ std::string keepAsGhost(const std::filesystem::path& replay, const std::filesyst
     std::filesystem::remove(temp, ec);
     return "the best run could not be kept as the ghost " + ghost.string() + ": " + why;
   }
+  std::ofstream out(ghost.string() + ".time", std::ios::trunc);
+  char text[40];
+  std::snprintf(text, sizeof text, "%.17g\n", time);
+  out << text;
+  if (!out) return "the ghost's time could not be written beside " + ghost.string();
   return "";
+}
+
+std::optional<double> ghostTime(const std::filesystem::path& ghost) {
+  std::ifstream in(ghost.string() + ".time");
+  double time = 0.0;
+  if (!(in >> time) || !std::isfinite(time) || time < 0.0) return std::nullopt;
+  return time;
 }
 
 }  // namespace hemiroll::game

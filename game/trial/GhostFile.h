@@ -5,6 +5,7 @@
 // of the level is refused when loaded (ReplayPlayer), not raced.
 
 #include <filesystem>
+#include <optional>
 #include <string>
 
 namespace hemiroll::game {
@@ -13,7 +14,12 @@ std::filesystem::path ghostFile(const std::filesystem::path& dataDir, const std:
                                 const std::string& player);
 
 // Copies `replay` over the ghost, atomically (a copy beside it, then a
-// rename). "" when kept, else a sentence naming the file.
-std::string keepAsGhost(const std::filesystem::path& replay, const std::filesystem::path& ghost);
+// rename), with the run's judged time [s] beside it (<ghost>.time: the log
+// runs on a few ticks past the judge's end, until the screen stops the
+// loop). "" when kept, else a sentence naming the file.
+std::string keepAsGhost(const std::filesystem::path& replay, const std::filesystem::path& ghost, double time);
+
+// The judged time kept with a ghost; nullopt when there is none or it is unreadable.
+std::optional<double> ghostTime(const std::filesystem::path& ghost);
 
 }  // namespace hemiroll::game

@@ -68,6 +68,12 @@ TEST(PointerMappingTest, WheelStepsTheHeightWithinItsRange) {
   EXPECT_EQ(m.height(), -0.02);
   m.wheel(std::nan(""));
   EXPECT_EQ(m.height(), -0.02);
+  m.setHeight(0.011);  // taking hold puts the proxy at the mass point's height
+  EXPECT_EQ(m.height(), 0.011);
+  m.setHeight(1.0);
+  EXPECT_EQ(m.height(), 0.03);
+  m.setHeight(std::nan(""));
+  EXPECT_EQ(m.height(), 0.03);
 }
 
 TEST(PointerMappingTest, FarStrokesStayWithinReachInTheirDirection) {

@@ -236,6 +236,28 @@ TEST_F(RendererTest, TheGhostIsDrawnTranslucentWhereItsPoseSays) {
   EXPECT_EQ(test::compareImages(without, bad).differingFraction, 0.0);
 }
 
+// Every replayed attempt starts with the ghost where the player's hemisphere
+// is, and a tick apart they differ by less than a micrometre: the ghost must
+// then be hidden by it, pixel for pixel, not speckle through where the
+// nearly equal depths pass and fail the test by rounding.
+TEST_F(RendererTest, AGhostInThePlayersPoseNeverSpecklesThroughIt) {
+  for (const CameraMode mode : {CameraMode::Follow, CameraMode::Orbit, CameraMode::Top}) {
+    RenderScene s = uprightAt(0.01, -0.01);
+    s.orientation = orientation(0.3, 0.2, 0.5);
+    s.massPoint = {0.01, 0.005};
+    s.camera.mode = mode;
+    const Image without = draw(s);
+    s.ghost.shown = true;
+    s.ghost.centre = {s.centre[0] + 3e-7, s.centre[1] - 2e-7, s.centre[2] + 1e-7};
+    s.ghost.orientation = orientation(0.3 + 1e-6, 0.2, 0.5);
+    s.ghost.massPoint = s.massPoint;
+    const Image with = draw(s);
+    const test::ImageDifference d = test::compareImages(without, with);
+    EXPECT_EQ(d.differingFraction, 0.0) << "camera " << int(mode) << ": max channel difference "
+                                        << d.maxChannelDifference;
+  }
+}
+
 TEST_F(RendererTest, MissingAssetsFallBackToBuiltInsThatDrawTheSame) {
   RendererDef def;
   def.assetsDir = "/nonexistent-hemiroll-assets";

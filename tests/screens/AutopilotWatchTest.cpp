@@ -108,6 +108,8 @@ TEST_F(AutopilotWatchTest, TheHintShowsThePlanAndMovesNothing) {
   ASSERT_NE(play, nullptr);
   ASSERT_NE(play->session(), nullptr) << play->error();
   EXPECT_FALSE(play->session()->assisted());
+  // The autopilot plans from the running trial: it runs from the take-hold.
+  app.inject(platform::keyDownEvent("Space"));
   app.inject(platform::keyDownEvent("H"));
   haptics::GuideSample plan;
   bool planned = false;
@@ -120,12 +122,12 @@ TEST_F(AutopilotWatchTest, TheHintShowsThePlanAndMovesNothing) {
   EXPECT_THAT(play->hud().autopilot(), HasSubstr("green = the autopilot's next move"));
   app.frame();
   EXPECT_TRUE(play->compass().shown());
-  // The player never took hold: the proxy stays on the mass point's start
-  // however the plan moves.
+  // The player holds the proxy and makes no strokes: it stays put however
+  // the plan moves.
   const haptics::Vec3 before = play->session()->pointerScene();
   for (int i = 0; i < 30; ++i) app.frame();
   EXPECT_EQ(play->session()->pointerScene(), before);
-  EXPECT_EQ(play->session()->snapshot().engagement, haptics::Engagement::Disengaged);
+  EXPECT_FALSE(play->session()->assisted());
   app.inject(platform::keyDownEvent("H"));  // off again
   app.frame();
   EXPECT_EQ(play->hud().autopilot(), "");

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "engine/physics/Energy.h"
 #include "engine/physics/StateKinematics.h"
 #include "engine/script/LevelLoader.h"
 
@@ -45,7 +46,7 @@ TEST(PlayHudTest, ReadsTimeDistanceAndComponentsFromTheJudge) {
   EXPECT_EQ(r.components, static_cast<int>(f.judge.components().size()));
   EXPECT_EQ(r.componentsInside, inside);
   EXPECT_FALSE(r.loopWarning);
-  EXPECT_EQ(hud.plot().size(), 1u);
+  EXPECT_EQ(hud.plot(0).size(), 1u);
 }
 
 TEST(PlayHudTest, WarnsAboutMissedOrLateTicks) {
@@ -87,9 +88,85 @@ TEST(PlayHudTest, AFrameWithoutANewTickAddsNoPlotSample) {
   f.judgeAt(0.2);
   hud.update(f.snapshot, f.judge);
   hud.update(f.snapshot, f.judge);  // paused: the same snapshot time
-  EXPECT_EQ(hud.plot().size(), 1u);
-  hud.setChannel(2);
-  EXPECT_EQ(hud.plot().size(), 0u);  // a new channel starts a new trace
+  EXPECT_EQ(hud.plot(0).size(), 1u);
+}
+
+// scene.plots decides the plots (at most three), each in its player unit;
+// a level without plots gets the contact point's x and y.
+TEST(PlayHudTest, PlotsAreTheLevelsChannelsInPlayerUnits) {
+  Fixture f;
+  PlayHud hud;
+  EXPECT_EQ(hud.plotCount(), 2u);
+  EXPECT_STREQ(hud.plotChannel(0).unit().label, "contact x");
+  EXPECT_STREQ(hud.plotChannel(1).unit().label, "contact y");
+
+  hud.setPlots({"u_o", "x_p", "energy", "force_norm"}, f.level.def.params);
+  ASSERT_EQ(hud.plotCount(), PlayHud::kMaxPlots);
+  EXPECT_STREQ(hud.plotChannel(0).unit().unit, "°");
+  EXPECT_STREQ(hud.plotChannel(1).unit().unit, "mm");
+  EXPECT_STREQ(hud.plotChannel(2).unit().label, "energy");
+  f.snapshot.state.fill(0.0);
+  f.snapshot.state[physics::force_slot::u_o] = -0.08;
+  f.snapshot.state[physics::force_slot::x_p] = 0.015;
+  f.judgeAt(0.1);
+  hud.update(f.snapshot, f.judge);
+  EXPECT_FLOAT_EQ(hud.plot(0).at(0), static_cast<float>(-0.08 * 180.0 / M_PI));
+  EXPECT_FLOAT_EQ(hud.plot(1).at(0), 15.0f);
+  const double energy =
+      physics::mechanicalEnergy(physics::RollingDynamics(f.level.def.params), physics::forceStateOf(f.snapshot.state))
+          .total();
+  EXPECT_FLOAT_EQ(hud.plot(2).at(0), static_cast<float>(energy * 1e3));
+}
+
+TEST(PlayHudTest, ComponentsAndLostHoldsReadInPlayerUnits) {
+  script::ComponentStatus c;
+  c.variable = script::TaskVariable::u_a;
+  c.error = 0.0123;
+  c.tolerance = 0.001;
+  EXPECT_EQ(PlayHud::componentLine(c), "contact x off by +12.3 mm (band ±1.0 mm)");
+  c.variable = script::TaskVariable::u_o;  // a band under a degree gets two decimals
+  c.error = -0.02;
+  c.tolerance = 0.01;
+  EXPECT_EQ(PlayHud::componentLine(c), "tilt u off by -1.15 ° (band ±0.57 °)");
+  script::HoldBreak b;
+  b.happened = true;
+  b.variable = script::TaskVariable::xd_p;
+  b.excess = 0.0042;
+  b.heldFor = 0.6;
+  EXPECT_EQ(PlayHud::holdBreakLine(b), "mass point speed x wobbled out by 4.2 mm/s after 0.6 s");
+}
+
+// The settle meter's readout: the judge's hold and its last break; the tilt
+// gauge's: the face normal's angle and the way it leans.
+TEST(PlayHudTest, ReadsTheHoldItsLastBreakAndTheTilt) {
+  script::LoadedLevel level = script::LevelLoader().loadFile(HEMIROLL_SOURCE_DIR "/levels/tutorial_01_tilt_and_return.lua");
+  script::TaskJudge judge(level.def.task);
+  haptics::ServoSnapshot s;
+  s.state[physics::force_slot::u_o] = -0.08;  // the first stage's target: leaning towards +x
+  auto judgeAt = [&](double t) {
+    s.time = t;
+    script::JudgeInput in;
+    in.time = t;
+    in.state = physics::forceStateOf(s.state);
+    judge.judge(in);
+  };
+  PlayHud hud;
+  judgeAt(0.1);
+  judgeAt(0.3);
+  hud.update(s, judge);
+  EXPECT_TRUE(hud.readout().allInside);
+  EXPECT_NEAR(hud.readout().holdTime, 0.2, 1e-12);
+  EXPECT_NEAR(hud.readout().tilt.angle, 0.08, 1e-12);
+  EXPECT_NEAR(hud.readout().tilt.downhillX, 1.0, 1e-12);
+  EXPECT_NEAR(hud.readout().tilt.downhillY, 0.0, 1e-12);
+  s.state[physics::force_slot::u_o] = 0.0;  // out of the band by 0.05 rad
+  judgeAt(0.35);
+  hud.update(s, judge);
+  EXPECT_FALSE(hud.readout().allInside);
+  ASSERT_TRUE(hud.readout().holdBreak.happened);
+  EXPECT_EQ(hud.readout().holdBreak.variable, script::TaskVariable::u_o);
+  EXPECT_NEAR(hud.readout().holdBreak.excess, 0.05, 1e-12);
+  EXPECT_EQ(hud.readout().tilt.angle, 0.0);
 }
 
 TEST(PlayHudTest, MessagesKeepTheNewestFewAndResetClearsThem) {

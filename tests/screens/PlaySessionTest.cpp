@@ -128,17 +128,53 @@ TEST(PlaySessionTest, GuidanceFollowsTheAutopilotsPlanOnItsOwnThread) {
   FAIL() << "the servo loop was starved in three attempts";
 }
 
-TEST(PlaySessionTest, APointerFarFromTheMassPointDoesNotEngage) {
+// Taking hold always works with the mouse: wherever the pointer wandered
+// before (here 5 cm off and 1 cm up), the proxy is put on the mass point and
+// engages. The clock waits for it: nothing runs before the take-hold.
+TEST(PlaySessionTest, TakingHoldPutsTheProxyOnTheMassPointAndStartsTheClock) {
   script::LoadedLevel level = script::LevelLoader().loadFile(HEMIROLL_SOURCE_DIR "/levels/tutorial_01_tilt_and_return.lua");
   PlaySessionDef def;
+  def.requestRealtime = false;
   PlaySession session(level, def);
+  const physics::Vec3 massPoint =
+      physics::massPointPosition(physics::forceStateOf(session.snapshot().state), level.def.params.radius);
   session.start();
   session.pointerMotion(200, 0);  // 5 cm off at 0.25 mm/px
-  session.click();
-  std::this_thread::sleep_for(300ms);
+  session.wheel(5);
+  std::this_thread::sleep_for(100ms);
   session.frame();
-  EXPECT_EQ(session.snapshot().engagement, haptics::Engagement::Armed);
-  EXPECT_GT(session.snapshot().proxyDistance, 0.04);
+  EXPECT_TRUE(session.awaitingTakeHold());
+  EXPECT_EQ(session.snapshot().time, 0.0);  // the clock has not started
+  EXPECT_EQ(session.judging().judgedTicks(), 0);
+  EXPECT_GT((session.pointerScene() - massPoint).norm(), 0.04);
+
+  session.click();
+  EXPECT_FALSE(session.awaitingTakeHold());
+  EXPECT_LT((session.pointerScene() - massPoint).norm(), 1e-12);
+  bool engaged = false;
+  for (int i = 0; i < 40 && !engaged; ++i) {
+    std::this_thread::sleep_for(10ms);
+    session.frame();
+    engaged = session.snapshot().engagement == haptics::Engagement::Engaged;
+  }
+  EXPECT_TRUE(engaged);
+  EXPECT_GT(session.snapshot().time, 0.0);
+  EXPECT_FALSE(session.letGo());
+
+  // Letting go is recoverable: the session says so, and the next take-hold
+  // puts the proxy back on the mass point (wherever that is by now).
+  session.release();
+  for (int i = 0; i < 100 && !session.letGo(); ++i) {
+    std::this_thread::sleep_for(10ms);
+    session.frame();
+  }
+  ASSERT_TRUE(session.letGo());
+  session.pointerMotion(-150, 80);
+  session.click();
+  const physics::Vec3 now =
+      physics::massPointPosition(physics::forceStateOf(session.snapshot().state), level.def.params.radius);
+  EXPECT_LT((session.pointerScene() - now).norm(), 1e-12);
+  session.finish();
 }
 
 // The proxy is where the strokes put it: it starts on the mass point, moves
@@ -168,10 +204,12 @@ TEST(PlaySessionTest, TheProxyMovesByTheStrokesAndStaysPutBetweenThem) {
   EXPECT_NEAR(moved.x(), scale * metresPerStroke, 1e-12);
   EXPECT_NEAR(moved.y(), scale * metresPerStroke, 1e-12);
 
-  const haptics::Vec3 before = session.pointerScene();
   session.start();
-  std::this_thread::sleep_for(100ms);  // the loop runs; no strokes
+  session.click();  // the proxy goes back onto the mass point; the loop runs
+  const haptics::Vec3 before = session.pointerScene();
+  std::this_thread::sleep_for(100ms);  // no strokes
   session.frame();
+  EXPECT_GT(session.snapshot().time, 0.0);
   EXPECT_EQ(session.pointerScene(), before);
   session.finish();
 }

@@ -87,6 +87,41 @@ TEST(TaskJudge, HoldTimerRunsWhileInsideAndRestartsWhenLeft) {
   EXPECT_EQ(judge.finishTime(), 1.0);
 }
 
+// The settle meter's source: which component broke the hold, when, by how
+// much, and after how long a hold; none before the first hold.
+TEST(TaskJudge, ABrokenHoldNamesTheComponentFurthestOut) {
+  TaskDef task;
+  StageDef stage;
+  stage.targets.push_back({TaskVariable::u_a, 0.0, 0.001});
+  stage.targets.push_back({TaskVariable::u_o, 0.0, 0.01});
+  stage.hold = 1.0;
+  task.stages.push_back(stage);
+  TaskJudge judge(task);
+  ForceDrivenState x = ForceDrivenState::Zero();
+  x[slot::u_a] = 0.003;  // out before ever inside: no hold broken
+  judge.judge(at(0.0, x));
+  EXPECT_FALSE(judge.lastHoldBreak().happened);
+  x[slot::u_a] = 0.0;
+  judge.judge(at(0.1, x));
+  judge.judge(at(0.4, x));
+  // Both out: u_a by 0.5 of its band, u_o by twice its band: u_o is named.
+  x[slot::u_a] = 0.0015;
+  x[slot::u_o] = -0.03;
+  judge.judge(at(0.5, x));
+  const HoldBreak& b = judge.lastHoldBreak();
+  ASSERT_TRUE(b.happened);
+  EXPECT_EQ(b.variable, TaskVariable::u_o);
+  EXPECT_EQ(b.time, 0.5);
+  EXPECT_NEAR(b.excess, 0.02, 1e-15);
+  EXPECT_NEAR(b.heldFor, 0.3, 1e-15);  // the hold as of the last inside tick
+  // Staying out is not a second break.
+  x[slot::u_o] = 0.0;
+  judge.judge(at(0.6, x));
+  EXPECT_EQ(judge.lastHoldBreak().time, 0.5);
+  judge.reset();
+  EXPECT_FALSE(judge.lastHoldBreak().happened);
+}
+
 TEST(TaskJudge, HoldSurvivesTheRoundingOfSummedSteps) {
   // 500 steps of 1 ms summed in double land a hair below 0.5: still held.
   TaskJudge judge(oneTarget(TaskVariable::x_p, 0.0, 0.001, 0.5));
