@@ -10,8 +10,9 @@ local told_to_return = false  -- level state lives in locals of this file
 return {
   name = "01 Tilt and return",
   description = "Take hold, then move the mouse slowly to the right, about 1.5 cm of the mass " ..
-    "point: the hemisphere leans about 5 degrees that way, towards the red mark on its face, " ..
-    "and rolls a little. The tilt gauge in the top left shows the lean. Hold it for half a " ..
+    "point: the hemisphere leans about 5 degrees that way (the way the red stripe on its face " ..
+    "points at the start) and rolls a little. The tilt gauge in the top left shows the lean. " ..
+    "Hold it for half a " ..
     "second, then bring the mass point back to the middle and let the hemisphere stand upright " ..
     "and still for 1 s. Move slowly: the spring between your hand and the mass point does the rest.",
   author = "hemiroll",

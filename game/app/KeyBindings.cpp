@@ -13,7 +13,7 @@ constexpr KeyActionInfo kActions[kKeyActionCount] = {
     {"camera", "next camera", "Tab"},     {"orbit_left", "orbit left", "Left"},
     {"orbit_right", "orbit right", "Right"}, {"orbit_up", "orbit up", "Up"},
     {"orbit_down", "orbit down", "Down"}, {"hint", "autopilot hint", "H"},
-    {"hud_table", "every component in the HUD", "I"}};
+    {"hud_table", "HUD table", "I"}};
 }  // namespace
 
 const KeyActionInfo& keyActionInfo(KeyAction action) { return kActions[static_cast<int>(action)]; }

@@ -4,6 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <numbers>
 
 namespace hemiroll::game {
@@ -30,7 +34,36 @@ constexpr CueShape kShapes[] = {
 
 }  // namespace
 
-Audio::Audio(const AudioDef& def) : sampleRate_(def.sampleRate), volume_(std::clamp(def.volume, 0.0, 1.0)) {
+SoundOutputs SoundOutputs::probe() {
+  SoundOutputs o;
+  const char* driver = std::getenv("SDL_AUDIODRIVER");
+  o.driverChosen = driver != nullptr && *driver != '\0';
+  std::error_code ec;
+  const char* runtime = std::getenv("XDG_RUNTIME_DIR");
+  o.soundServer = std::getenv("PULSE_SERVER") != nullptr || std::filesystem::exists("/run/pulse/native", ec) ||
+                  (runtime && (std::filesystem::exists(std::filesystem::path(runtime) / "pulse" / "native", ec) ||
+                               std::filesystem::exists(std::filesystem::path(runtime) / "pipewire-0", ec)));
+  std::ifstream cards("/proc/asound/cards");
+  if (cards) {
+    o.cardListRead = true;
+    o.cardList.assign(std::istreambuf_iterator<char>(cards), std::istreambuf_iterator<char>());
+  }
+  return o;
+}
+
+std::string noSoundReason(const SoundOutputs& o) {
+  if (o.driverChosen || o.soundServer) return "";
+  const bool noCards = !o.cardListRead || o.cardList.find_first_not_of(" \t\r\n") == std::string::npos ||
+                       o.cardList.find("no soundcards") != std::string::npos;
+  return noCards ? "no sound: this machine has no sound card and no sound server; the game plays on silently" : "";
+}
+
+Audio::Audio(const AudioDef& def, const SoundOutputs& outputs)
+    : sampleRate_(def.sampleRate), volume_(std::clamp(def.volume, 0.0, 1.0)) {
+  if (const std::string why = noSoundReason(outputs); !why.empty()) {
+    note_ = why;
+    return;
+  }
   if (SDL_InitSubSystem(SDL_INIT_AUDIO) != 0) {
     note_ = std::string("no sound: SDL audio did not start (") + SDL_GetError() + "); the game plays on silently";
     return;

@@ -17,6 +17,19 @@ namespace hemiroll::game {
 
 enum class Cue : std::uint8_t { Success, Failure, Engage, Disengage };
 
+// What the machine offers for sound, looked at before SDL is asked: on a
+// machine without a sound card SDL's ALSA backend lets the ALSA library
+// print a dozen errors of its own to the terminal.
+struct SoundOutputs {
+  bool driverChosen = false;     // SDL_AUDIODRIVER is set: SDL is asked as told
+  bool soundServer = false;      // a PulseAudio or PipeWire socket, or PULSE_SERVER
+  bool cardListRead = false;     // /proc/asound/cards could be read
+  std::string cardList;          // its text
+  static SoundOutputs probe();   // this machine, now
+};
+// Why there can be no sound, in a player's words ("" when SDL should be asked).
+std::string noSoundReason(const SoundOutputs& outputs);
+
 struct AudioDef {
   double volume = 0.6;       // [0, 1]
   int sampleRate = 48000;    // [Hz]
@@ -24,7 +37,7 @@ struct AudioDef {
 
 class Audio {
  public:
-  explicit Audio(const AudioDef& def = {});
+  explicit Audio(const AudioDef& def = {}, const SoundOutputs& outputs = SoundOutputs::probe());
   ~Audio();
   Audio(const Audio&) = delete;
   Audio& operator=(const Audio&) = delete;

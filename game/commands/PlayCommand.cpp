@@ -162,6 +162,9 @@ int runPlayCommand(const std::vector<std::string>& args) {
     def.vsync = o.vsync;
     def.levelsDir = o.levelsDir;
     App app(def);
+    // What the game starts without (no sound card, missing assets), once,
+    // in our words; the title screen shows the same.
+    for (const std::string& note : app.notes()) std::cerr << kPrefix << note << "\n";
     if (!o.tourDir.empty()) return tour(app, o);
     if (o.autoplay > 0.0) return autoplay(app, o);
     if (!o.level.empty())

@@ -60,13 +60,13 @@ std::string resultLine(const RunOptions& o, const TrialResult& r) {
   JsonLine line;
   line.add("level", o.levelPath).add("bot", o.botPath);
   line.add("outcome", script::trialOutcomeName(r.outcome)).add("reason", r.reason);
-  line.add("time", r.time);
+  line.add("time", r.time, 6);  // the tick's time to the microsecond, not the sum's rounding
   if (r.score)
     line.add("score", *r.score);  // a non-finite score is written as null too
   else
     line.addNull("score");
   line.add("medal", script::medalName(r.medal));
-  line.add("ticks", r.ticks).add("wall_time", r.wallTime);
+  line.add("ticks", r.ticks).add("wall_time", r.wallTime, 6);
   return line.str();
 }
 

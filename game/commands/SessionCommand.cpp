@@ -35,12 +35,12 @@ std::string trialLine(const ManifestTrial& t, const TrialResult& r) {
   line.add("repetition", static_cast<long long>(t.repetition)).add("condition", t.conditionLabel);
   line.add("level", t.levelFile).add("method", t.method);
   line.add("kr_N_per_m", t.stiffness).add("kv_N_s_per_m", t.damping).add("alpha", t.alpha);
-  line.add("outcome", script::trialOutcomeName(r.outcome)).add("reason", r.reason).add("time_s", r.time);
+  line.add("outcome", script::trialOutcomeName(r.outcome)).add("reason", r.reason).add("time_s", r.time, 6);
   if (r.score)
     line.add("score", *r.score);  // non-finite: null
   else
     line.addNull("score");
-  line.add("medal", script::medalName(r.medal)).add("ticks", r.ticks).add("wall_time_s", r.wallTime);
+  line.add("medal", script::medalName(r.medal)).add("ticks", r.ticks).add("wall_time_s", r.wallTime, 6);
   return line.str();
 }
 

@@ -210,10 +210,9 @@ void PlayHud::drawComponents() {
   for (int i = 0; i < componentCount_; ++i) {
     const script::ComponentStatus& c = components_[static_cast<std::size_t>(i)];
     if (!fullTable_ && c.inside) continue;
-    const PlayerUnit u = playerUnitOf(c.variable);
-    const int d = decimalsFor(c.tolerance * u.scale);
-    ImGui::TextColored(c.inside ? kGreen : kRed, "  %-13s off %+7.*f %-4s (band ±%.*f)", u.label, d,
-                       c.error * u.scale, u.unit, d, c.tolerance * u.scale);
+    std::array<char, 128> line{};
+    componentLine(c, line);
+    ImGui::TextColored(c.inside ? kGreen : kRed, "  %s", line.data());
   }
 }
 

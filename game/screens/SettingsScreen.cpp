@@ -49,8 +49,14 @@ void SettingsScreen::paintKeys() {
   ImGui::TextWrapped("mouse: left click takes hold, right click lets go, the wheel sets the proxy's height; "
                      "Esc pauses (and cannot be changed)");
   ImGui::PopStyleColor();
-  // Two actions a row, each its name and a button with its key.
-  constexpr float kColumn = 300.0f, kButtonAt = 120.0f, kButtonWidth = 160.0f;
+  // Two actions a row, each its name and a button with its key; the
+  // buttons stand right of the longest name at this font scale.
+  float longest = 0.0f;
+  for (int i = 0; i < kKeyActionCount; ++i)
+    longest = std::max(longest, ImGui::CalcTextSize(keyActionInfo(static_cast<KeyAction>(i)).label).x);
+  const float kButtonAt = longest + ImGui::GetStyle().ItemSpacing.x * 2;
+  const float kButtonWidth = std::max(100.0f, (ImGui::GetContentRegionAvail().x - 2 * kButtonAt) / 2 - 16.0f);
+  const float kColumn = kButtonAt + kButtonWidth + 16.0f;
   for (int i = 0; i < kKeyActionCount; ++i) {
     const auto action = static_cast<KeyAction>(i);
     const float left = (i % 2) * kColumn;
@@ -131,7 +137,11 @@ void SettingsScreen::paint() {
     s.volume = volume;
     host_.audio().setVolume(volume);
   }
-  if (!host_.audio().available()) ImGui::TextDisabled("%s", host_.audio().note().c_str());
+  if (!host_.audio().available()) {
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextDisabled("%s", host_.audio().note().c_str());
+    ImGui::PopTextWrapPos();
+  }
 
   ImGui::Separator();
   ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1), "Graphics");

@@ -1,5 +1,7 @@
 #include "game/trial/JsonLine.h"
 
+#include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 
@@ -32,8 +34,21 @@ std::string JsonLine::quote(std::string_view text) {
 std::string JsonLine::number(double value) {
   if (!std::isfinite(value)) return "null";
   char text[40];
-  std::snprintf(text, sizeof text, "%.17g", value);
-  return text;
+  const std::to_chars_result r = std::to_chars(text, text + sizeof text, value);
+  return std::string(text, r.ptr);
+}
+
+std::string JsonLine::number(double value, int decimals) {
+  if (!std::isfinite(value)) return "null";
+  char text[64];
+  std::snprintf(text, sizeof text, "%.*f", std::clamp(decimals, 0, 17), value);
+  std::string out = text;
+  if (out.find('.') != std::string::npos) {
+    out.erase(out.find_last_not_of('0') + 1);
+    if (out.back() == '.') out.pop_back();
+  }
+  if (out == "-0") out = "0";
+  return out;
 }
 
 void JsonLine::key(std::string_view name) {
@@ -51,6 +66,12 @@ JsonLine& JsonLine::add(std::string_view name, std::string_view value) {
 JsonLine& JsonLine::add(std::string_view name, double value) {
   key(name);
   text_ += number(value);
+  return *this;
+}
+
+JsonLine& JsonLine::add(std::string_view name, double value, int decimals) {
+  key(name);
+  text_ += number(value, decimals);
   return *this;
 }
 

@@ -39,6 +39,23 @@ TEST(JsonLine, NumbersReadBackExactly) {
     const std::string text = JsonLine::number(v);
     EXPECT_EQ(std::strtod(text.c_str(), nullptr), v) << text;
   }
+  EXPECT_EQ(JsonLine::number(0.1), "0.1");  // the shortest such form
+  EXPECT_EQ(JsonLine::number(0.25), "0.25");
+}
+
+// A time summed tick by tick reads as the tick's time, not the sum's rounding.
+TEST(JsonLine, RoundedNumbersDropTrailingZeros) {
+  double t = 0.0;
+  for (int i = 0; i < 9358; ++i) t += 0.001;
+  ASSERT_NE(JsonLine::number(t), "9.358");
+  EXPECT_EQ(JsonLine::number(t, 6), "9.358");
+  EXPECT_EQ(JsonLine::number(60.0, 6), "60");
+  EXPECT_EQ(JsonLine::number(-1e-9, 6), "0");
+  EXPECT_EQ(JsonLine::number(0.1234567, 3), "0.123");
+  EXPECT_EQ(JsonLine::number(std::numeric_limits<double>::quiet_NaN(), 6), "null");
+  JsonLine line;
+  line.add("time", t, 6);
+  EXPECT_EQ(line.str(), R"({"time":9.358})");
 }
 
 }  // namespace

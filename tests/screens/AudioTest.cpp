@@ -29,6 +29,31 @@ int zeroCrossings(const std::vector<float>& v) {
   return n;
 }
 
+// No card and no sound server: SDL is not asked (its ALSA backend would
+// print the ALSA library's errors to the terminal); the note says why in
+// one sentence. A chosen driver, a server or a card: SDL is asked.
+TEST_F(AudioTest, NoSoundCardIsSaidOnceInOurWordsWithoutAskingSdl) {
+  SoundOutputs none;
+  none.cardListRead = true;
+  none.cardList = "--- no soundcards ---\n";
+  EXPECT_NE(noSoundReason(none).find("no sound card"), std::string::npos);
+  SoundOutputs unreadable;  // no /proc/asound at all (a container)
+  EXPECT_NE(noSoundReason(unreadable), "");
+  Audio silent(AudioDef{}, none);
+  EXPECT_FALSE(silent.available());
+  EXPECT_EQ(silent.note(), noSoundReason(none));
+
+  SoundOutputs card = none;
+  card.cardList = " 0 [PCH            ]: HDA-Intel - HDA Intel PCH\n";
+  EXPECT_EQ(noSoundReason(card), "");
+  SoundOutputs server = none;
+  server.soundServer = true;
+  EXPECT_EQ(noSoundReason(server), "");
+  SoundOutputs chosen = none;
+  chosen.driverChosen = true;
+  EXPECT_EQ(noSoundReason(chosen), "");
+}
+
 TEST_F(AudioTest, AMissingDriverMeansSilenceWithANoteNeverAFailure) {
   Audio audio;
   EXPECT_FALSE(audio.available());
