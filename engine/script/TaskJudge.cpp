@@ -104,6 +104,10 @@ void TaskJudge::end(TrialOutcome outcome, const char* reason, double time) {
   finishTime_ = time;
 }
 
+void TaskJudge::preview(const physics::ForceDrivenState& state) {
+  if (!finished() && currentStage() != nullptr) evaluateStage(state);
+}
+
 void TaskJudge::recordHoldBreak(double time) {
   const ComponentStatus* furthest = nullptr;
   for (const ComponentStatus& c : components_)

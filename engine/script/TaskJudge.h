@@ -95,6 +95,10 @@ class TaskJudge {
 
   // Judges one tick (see the order above) and returns the outcome.
   TrialOutcome judge(const JudgeInput& input);
+  // The current stage's components for `state` (errors, margins, in/out),
+  // judging nothing: no tick, no hold, no outcome. What a HUD shows before
+  // the first tick (a trial waiting for the player to take hold).
+  void preview(const physics::ForceDrivenState& state);
 
   TrialOutcome outcome() const { return outcome_; }
   bool finished() const { return outcome_ != TrialOutcome::Running; }

@@ -94,6 +94,15 @@ std::vector<ScreenTourStop> runScreenTour(App& app, const ScreenTourDef& def) {
     app.frame();
   }
   stop(app, stops, "hint");
+
+  // Playing again: the trial waits for the take-hold, and says so.
+  app.inject(platform::keyDownEvent("Escape"));
+  settle(app);
+  app.inject(platform::keyDownEvent("Q"));
+  settle(app);
+  app.inject(platform::keyDownEvent("Return"));
+  settle(app, 4);
+  stop(app, stops, "start");
   return stops;
 }
 

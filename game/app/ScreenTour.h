@@ -19,7 +19,8 @@ struct ScreenTourDef {
   std::string level;        // path of the level to pick, as the level select lists it
   double playSeconds = 2.0; // [s] of wall time played by the scripted mouse
   // After results: back to the level select, watch the autopilot ("watch"),
-  // take over with the hint on ("hint").
+  // take over with the hint on ("hint"), quit and play again: the trial
+  // waiting for the take-hold ("start").
   bool autopilot = true;
 };
 

@@ -117,8 +117,8 @@ std::string playUsage() {
          "                      and the servo loop's timing are printed\n"
          "  --watch             the autopilot plays LEVEL (click or the take-hold key takes over);\n"
          "                      with --autoplay, the autopilot plays instead of the scripted mouse\n"
-         "  --tour DIR          title, settings, level select (LEVEL picked), play, pause, results as\n"
-         "                      PNGs in DIR (--autoplay sets the seconds played)\n";
+         "  --tour DIR          title, settings, level select (LEVEL picked), play, pause, results,\n"
+         "                      watch, hint and start as PNGs in DIR (--autoplay sets the seconds played)\n";
 }
 
 std::string playNoDisplayMessage(const std::string& why) {

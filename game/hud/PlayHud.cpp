@@ -185,12 +185,12 @@ void PlayHud::draw(double fps) {
   }
   ImGui::TextDisabled("%s: %s", tableKey_.c_str(), fullTable_ ? "less" : "every component");
   rects_.noteCurrentWindow("hud");
-  const float hudRight = ImGui::GetWindowPos().x + ImGui::GetWindowSize().x;
+  const WindowRect hud = rects_.rects().back();
   ImGui::End();
 
-  drawMessages(hudRight + 10.0f);
-  drawPrompt();
-  drawPlots();
+  const WindowRect messages = drawMessages(hud.x + hud.width + 10.0f);
+  const WindowRect plots = drawPlots();
+  drawPrompt(hud, messages, plots);
 }
 
 void PlayHud::drawStatus() {
@@ -202,18 +202,28 @@ void PlayHud::drawStatus() {
   if (score_) ImGui::Text("score so far %.1f", *score_);
 }
 
-// Compact: how many are in, and each one out with how far. Full: every row.
+// Compact: how many are in, and the few furthest out with how far (the
+// paper's task judges eleven at once). Full: every row.
 void PlayHud::drawComponents() {
   if (componentCount_ == 0) return;
   const HudReadout& r = readout_;
   ImGui::TextColored(r.allInside ? kGreen : kAmber, "in tolerance: %d of %d", r.componentsInside, r.components);
-  for (int i = 0; i < componentCount_; ++i) {
-    const script::ComponentStatus& c = components_[static_cast<std::size_t>(i)];
-    if (!fullTable_ && c.inside) continue;
+  std::array<int, 16> order{};
+  for (int i = 0; i < componentCount_; ++i) order[static_cast<std::size_t>(i)] = i;
+  const auto margin = [&](int i) { return components_[static_cast<std::size_t>(i)].normalizedMargin(); };
+  if (!fullTable_)
+    std::stable_sort(order.begin(), order.begin() + componentCount_, [&](int a, int b) { return margin(a) < margin(b); });
+  int shown = 0;
+  for (int k = 0; k < componentCount_; ++k) {
+    const script::ComponentStatus& c = components_[static_cast<std::size_t>(order[static_cast<std::size_t>(k)])];
+    if (!fullTable_ && (c.inside || shown == kCompactRows)) continue;
     std::array<char, 128> line{};
     componentLine(c, line);
     ImGui::TextColored(c.inside ? kGreen : kRed, "  %s", line.data());
+    ++shown;
   }
+  const int out = r.components - r.componentsInside;
+  if (!fullTable_ && out > shown) ImGui::TextColored(kRed, "  and %d more out", out - shown);
 }
 
 // While every component is inside the hold fills up; once one wobbles out
@@ -264,10 +274,10 @@ void PlayHud::drawTiltGauge() {
 
 // Right of the HUD, wrapped to the room left, so that a long message never
 // covers the HUD or runs off the window.
-void PlayHud::drawMessages(float left) {
+WindowRect PlayHud::drawMessages(float left) {
   bool anyMessage = false;
   for (std::size_t i = 0; i < kMessages; ++i) anyMessage = anyMessage || messageUntil_[i] > readout_.time;
-  if (!anyMessage) return;
+  if (!anyMessage) return WindowRect{"messages", left, 0, 0, 0};
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   const float width = std::max(120.0f, std::min(520.0f, display.x - left - 10.0f));
   ImGui::SetNextWindowPos(ImVec2(left, 10), ImGuiCond_Always);
@@ -281,22 +291,36 @@ void PlayHud::drawMessages(float left) {
   }
   ImGui::PopTextWrapPos();
   rects_.noteCurrentWindow("messages");
+  const WindowRect messages = rects_.rects().back();
   ImGui::End();
+  return messages;
 }
 
-void PlayHud::drawPrompt() {
+// Its size is the last frame's (an auto-sized window's).
+// (Below the hemisphere it covered the paper's target.)
+void PlayHud::drawPrompt(const WindowRect& hud, const WindowRect& messages, const WindowRect& plots) {
   if (prompt_.empty()) return;
   const ImVec2 display = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowPos(ImVec2(display.x / 2, display.y * 0.62f), ImGuiCond_Always, ImVec2(0.5f, 0));
+  // Beside the HUD, under the level's messages: the top of the window shows
+  // sky and far floor, where it hides neither the hemisphere nor the
+  // targets round it. Under the HUD, at the left, when it does not fit.
+  WindowRect at{"prompt", hud.x + hud.width + 10.0f, messages.y + messages.height + 10.0f, promptSize_.x,
+                promptSize_.y};
+  if (at.x + at.width > display.x - 10.0f || at.overlaps(plots)) {
+    at.x = 10.0f;
+    at.y = hud.y + hud.height + 10.0f;
+  }
+  ImGui::SetNextWindowPos(ImVec2(at.x, at.y), ImGuiCond_Always);
   ImGui::SetNextWindowBgAlpha(0.8f);
   ImGui::Begin("prompt", nullptr, kPanel);
-  ImGui::SetWindowFontScale(1.5f);
+  ImGui::SetWindowFontScale(1.3f);
   ImGui::TextColored(kAmber, "%s", prompt_.c_str());
   rects_.noteCurrentWindow("prompt");
+  promptSize_ = {ImGui::GetWindowSize().x, ImGui::GetWindowSize().y};
   ImGui::End();
 }
 
-void PlayHud::drawPlots() {
+WindowRect PlayHud::drawPlots() {
   const ImVec2 size = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos(ImVec2(size.x - 10, size.y - 10), ImGuiCond_Always, ImVec2(1, 1));
   ImGui::SetNextWindowBgAlpha(0.7f);
@@ -335,7 +359,9 @@ void PlayHud::drawPlots() {
   ImGui::SameLine();
   ImGui::TextDisabled("mass point on the face\n(radius %.0f mm)", faceRadius_ * 1e3);
   rects_.noteCurrentWindow("plots");
+  const WindowRect plots = rects_.rects().back();
   ImGui::End();
+  return plots;
 }
 
 }  // namespace hemiroll::game

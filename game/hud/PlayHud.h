@@ -7,8 +7,8 @@
 //    by how much), a tilt gauge, the engagement, the ghost's and the
 //    autopilot's lines, a loop-timing warning;
 //  - beside it, top: the level's messages, never over the HUD;
-//  - upper middle: a prompt when the player must act (take hold to start,
-//    take hold again after letting go);
+//  - under the messages: a prompt when the player must act (take hold to
+//    start, take hold again after letting go);
 //  - bottom right: the level's `scene.plots` (contact x and y when it names
 //    none) with their axis values, and the mass point on the face.
 // update() computes a plain HudReadout (tested without a window); draw()
@@ -52,6 +52,7 @@ class PlayHud {
   static constexpr double kLateWarning = 0.0005;  // [s]: a tick later than half a period is worth showing
   static constexpr double kHoldBreakShown = 3.0;  // [s] a lost hold stays explained
   static constexpr std::size_t kMaxPlots = 3;
+  static constexpr int kCompactRows = 4;          // out-of-band rows the compact HUD lists
 
   PlayHud();
   void reset();
@@ -117,9 +118,9 @@ class PlayHud {
   void drawComponents();
   void drawSettleMeter();
   void drawTiltGauge();
-  void drawMessages(float left);
-  void drawPrompt();
-  void drawPlots();
+  WindowRect drawMessages(float left);  // none drawn: an empty rect at the top
+  void drawPrompt(const WindowRect& hud, const WindowRect& messages, const WindowRect& plots);
+  WindowRect drawPlots();
 
   HudReadout readout_;
   std::array<script::ComponentStatus, 16> components_{};
@@ -137,6 +138,7 @@ class PlayHud {
   double screenYaw_ = 0.0;
   std::optional<double> score_;
   double fps_ = 0.0;
+  struct { float x = 0, y = 0; } promptSize_;  // [px] as last drawn
   std::array<std::string, kMessages> messages_{};
   std::array<double, kMessages> messageUntil_{};
   std::size_t nextMessage_ = 0;

@@ -173,8 +173,11 @@ void ResultsScreen::paint() {
     ImGui::Text("score %.1f   medal %s", *result_.score, script::medalName(result_.medal));
   else if (!result_.scoreError.empty())
     ImGui::TextColored(kRedText, "no score: %s", result_.scoreError.c_str());
-  if (const std::string medals = medalThresholds(ending_.scoring); !medals.empty())
+  if (const std::string medals = medalThresholds(ending_.scoring); !medals.empty()) {
+    ImGui::PushTextWrapPos(0.0f);
     ImGui::TextDisabled("medals: %s", medals.c_str());
+    ImGui::PopTextWrapPos();
+  }
   if (!result_.endCallbackError.empty())
     ImGui::TextColored(kRedText, "the level's end callback failed: %s", result_.endCallbackError.c_str());
   if (newBest_) ImGui::TextColored(kGoldText, "new personal best");
@@ -196,6 +199,8 @@ void ResultsScreen::paint() {
   }
   if (ImGui::Button("Play again  (Enter)", button)) again();
   if (ImGui::Button("Levels  (Esc)", button)) host_.screens().pop();
+  const ImVec2 at = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+  panelRect_ = WindowRect{"results", at.x, at.y, size.x, size.y};
   ImGui::End();
   if (success && !assisted_) drawConfetti(shownFor_);
 }

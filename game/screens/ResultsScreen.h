@@ -13,6 +13,7 @@
 
 #include "game/trial/HeadlessTrial.h"
 #include "game/scores/ScoreStore.h"
+#include "game/hud/WindowRects.h"
 #include "game/screens/Screen.h"
 #include "game/screens/TrialEnding.h"
 
@@ -36,6 +37,8 @@ class ResultsScreen final : public Screen {
   bool replaySaved() const { return replaySaved_; }
   bool newBest() const { return newBest_; }
   const TrialEnding& ending() const { return ending_; }
+  // Where the panel was drawn in the last frame (layout tests).
+  const WindowRect& panelRect() const { return panelRect_; }
 
  private:
   void again();
@@ -51,6 +54,7 @@ class ResultsScreen final : public Screen {
   bool stored_ = false;
   bool assisted_ = false;  // the autopilot played: not in the scores, offered as a ghost
   TrialEnding ending_;
+  WindowRect panelRect_;
   double shownFor_ = 0.0;  // [s] since the screen came up: the celebration's clock
 };
 

@@ -1,5 +1,6 @@
 #include "game/screens/TrialEnding.h"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "game/hud/PlayHud.h"
@@ -43,12 +44,19 @@ std::vector<std::string> explainEnding(const TrialResult& result, const script::
     std::snprintf(line, sizeof line, "%d of %d stages passed", s.stagesPassed, s.stageCount);
     lines.emplace_back(line);
   }
-  bool heading = false;
-  for (const script::ComponentStatus& c : s.finalComponents) {
-    if (c.inside) continue;
-    if (!heading) lines.emplace_back("out of its band at the end:");
-    heading = true;
-    lines.push_back("  " + PlayHud::componentLine(c));
+  // The furthest out first, as few as the compact HUD shows.
+  std::vector<script::ComponentStatus> out;
+  for (const script::ComponentStatus& c : s.finalComponents)
+    if (!c.inside) out.push_back(c);
+  std::stable_sort(out.begin(), out.end(), [](const auto& a, const auto& b) {
+    return a.normalizedMargin() < b.normalizedMargin();
+  });
+  if (!out.empty()) lines.emplace_back("furthest out of its band at the end:");
+  for (std::size_t i = 0; i < out.size() && i < static_cast<std::size_t>(PlayHud::kCompactRows); ++i)
+    lines.push_back("  " + PlayHud::componentLine(out[i]));
+  if (out.size() > static_cast<std::size_t>(PlayHud::kCompactRows)) {
+    std::snprintf(line, sizeof line, "  and %zu more", out.size() - static_cast<std::size_t>(PlayHud::kCompactRows));
+    lines.emplace_back(line);
   }
   return lines;
 }

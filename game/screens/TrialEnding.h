@@ -28,8 +28,8 @@ struct TrialEnding {
 
 // What decided the trial's time, a line each: for a success the hold that
 // completed it (from when, how long), for a failure the moment and the
-// reason and, when the time ran out, what was still out of its band and by
-// how much (player units, PlayHud::componentLine).
+// reason and what was still out of its band and by how much, the furthest
+// out first (player units, PlayHud::componentLine; the compact HUD's few).
 std::vector<std::string> explainEnding(const TrialResult& result, const script::TaskDef& task);
 
 // "bronze 500, silver 800, gold 900 points", "" without medals.

@@ -23,6 +23,7 @@ TrialJudge::TrialJudge(script::LoadedLevel& level, haptics::RecordRing* forward,
 
 void TrialJudge::start(const physics::ForceDrivenState& initial) {
   view_.state = initial;
+  judge_.preview(initial);  // the components as they start, before any tick
   level_.script->start(view_, judge_);
   if (judge_.finished()) level_.script->update(view_, judge_);  // on_fail for a trial failed at once
 }

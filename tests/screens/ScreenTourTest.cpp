@@ -127,9 +127,12 @@ TEST(ScreenTourTest, TheAutopilotIsWatchedThenTakenOverWithTheHint) {
   tour.level = HEMIROLL_SOURCE_DIR "/levels/tutorial_04_stop_on_target.lua";
   tour.playSeconds = 1.0;
   const std::vector<ScreenTourStop> stops = runScreenTour(app, tour);
-  ASSERT_EQ(stops.size(), 8u);
   EXPECT_EQ(stops[6].screen, "watch");
   EXPECT_EQ(stops[7].screen, "hint");
+  ASSERT_EQ(stops.size(), 9u);
+  EXPECT_EQ(stops[8].screen, "start");
+  // The take-hold prompt in amber (0.95, 0.75, 0.3), large, below the hemisphere.
+  EXPECT_GT(countColour(stops[8].image, 242, 191, 77), 200);
   // The autopilot's HUD line is green (0.3, 0.95, 0.55): one line of ImGui's
   // built-in font at 1x has about 80 solid glyph-core pixels of it (measured:
   // 80 for the hint's line), half that leaves room for the rasteriser; the
@@ -137,10 +140,13 @@ TEST(ScreenTourTest, TheAutopilotIsWatchedThenTakenOverWithTheHint) {
   EXPECT_GT(countColour(stops[6].image, 77, 242, 140), 40);
   EXPECT_GT(countColour(stops[7].image, 77, 242, 140), 40);
   EXPECT_EQ(countColour(stops[3].image, 77, 242, 140), 0);
+  // The last stop is a fresh trial of the player's own (the takeover itself:
+  // AutopilotWatchTest), its clock waiting for the take-hold.
   auto* play = dynamic_cast<PlayScreen*>(app.screens().top());
   ASSERT_NE(play, nullptr);
-  EXPECT_FALSE(play->session()->autopilotHolds());  // taken over
-  EXPECT_TRUE(play->session()->assisted());
+  EXPECT_TRUE(play->session()->awaitingTakeHold());
+  EXPECT_FALSE(play->session()->assisted());
+  EXPECT_EQ(play->session()->snapshot().time, 0.0);
 }
 
 }  // namespace

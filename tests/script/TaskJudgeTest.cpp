@@ -122,6 +122,20 @@ TEST(TaskJudge, ABrokenHoldNamesTheComponentFurthestOut) {
   EXPECT_FALSE(judge.lastHoldBreak().happened);
 }
 
+TEST(TaskJudge, APreviewShowsTheComponentsAndJudgesNothing) {
+  TaskJudge judge(oneTarget(TaskVariable::u_a, 0.01, 0.001, 0.5));
+  judge.preview(with(slot::u_a, 0.0125));
+  ASSERT_EQ(judge.components().size(), 1u);
+  EXPECT_DOUBLE_EQ(judge.components()[0].error, 0.0025);
+  EXPECT_FALSE(judge.allInside());
+  judge.preview(with(slot::u_a, 0.01));
+  EXPECT_TRUE(judge.allInside());
+  EXPECT_EQ(judge.holdTime(), 0.0);  // no tick judged: no hold, no outcome
+  EXPECT_EQ(judge.outcome(), TrialOutcome::Running);
+  EXPECT_EQ(judge.judge(at(0.0, with(slot::u_a, 0.01))), TrialOutcome::Running);  // the hold starts with a tick
+  EXPECT_EQ(judge.judge(at(0.5, with(slot::u_a, 0.01))), TrialOutcome::Success);
+}
+
 TEST(TaskJudge, HoldSurvivesTheRoundingOfSummedSteps) {
   // 500 steps of 1 ms summed in double land a hair below 0.5: still held.
   TaskJudge judge(oneTarget(TaskVariable::x_p, 0.0, 0.001, 0.5));
