@@ -1,6 +1,8 @@
 #include "engine/analysis/TrialAnalyzer.h"
 
 #include <algorithm>
+#include <cstdio>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -18,6 +20,17 @@ std::pair<std::size_t, std::size_t> rowsWithin(std::span<const double> time, dou
     }
   }
   return first < last ? std::pair{first, last} : std::pair{std::size_t{0}, std::size_t{0}};
+}
+
+// Why a feature was measured over the whole trial: what the steady phase
+// alone showed, without the detector's "no rose: " (the feature was found,
+// over the whole trial).
+std::string wholeTrialNote(const TimeInterval& steady, const std::string& reason) {
+  const std::size_t colon = reason.find(": ");
+  const std::string shown = reason.rfind("no ", 0) == 0 && colon != std::string::npos ? reason.substr(colon + 2) : reason;
+  char window[64];
+  std::snprintf(window, sizeof window, "%.1f-%.1f s", steady.start, steady.end);
+  return "measured over the whole trial: the steady phase (" + std::string(window) + ") alone shows " + shown;
 }
 
 }  // namespace
@@ -45,7 +58,7 @@ TrialFeatures analyzeTrial(const TrialSamples& s, const TrialAnalysisDef& def) {
     out.rose = rose(steady);
     out.roseWindow = out.phases.steady;
     if (!out.rose.found) {
-      out.roseNote = "not in the steady phase (" + out.rose.reason + "): looked for over the whole trial";
+      out.roseNote = wholeTrialNote(out.phases.steady, out.rose.reason);
       out.rose = rose(whole);
       out.roseWindow = out.phases.trial;
     }
@@ -58,7 +71,7 @@ TrialFeatures analyzeTrial(const TrialSamples& s, const TrialAnalysisDef& def) {
       if ((wholeTrial.loops.found && !out.helix.loops.found) || (wholeTrial.arc.found && !out.helix.arc.found)) {
         out.helix = std::move(wholeTrial);
         out.helixWindow = out.phases.trial;
-        out.helixNote = "not in the steady phase (" + why + "): looked for over the whole trial";
+        out.helixNote = wholeTrialNote(out.phases.steady, why);
       }
     }
   }
