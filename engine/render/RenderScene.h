@@ -82,6 +82,7 @@ struct RenderScene {
   std::vector<TargetMarker> targets;
   std::vector<ZoneMarker> forbidden;
   const ContactTrace* trace = nullptr;       // the contact point's path; null = none
+  std::vector<Vec2d> examplePath;            // a way to go the level draws on the plane [m]
   double time = 0.0;                         // now [s], for the trace's fading
 
   GhostPose ghost;                           // same radius as the hemisphere

@@ -32,6 +32,7 @@ constexpr std::size_t kXrayTraceVertices = 512;  // the trace's newest 256 segme
 constexpr std::size_t kSpringVertices = 512;  // appendSpringCoil: 8 turns x 12 segments x 2
 // Room for the trace plus the target/zone outlines and a spring coil.
 constexpr std::size_t kExtraLineVertices = 8192;
+constexpr std::size_t kExamplePathVertices = 2048;  // scene.example_path's 2000 points, dashed: 2000 vertices
 constexpr std::size_t kDecalVertices = 8192;
 
 Eigen::Vector3f toVec(const Vec3d& v) { return {float(v[0]), float(v[1]), float(v[2])}; }
@@ -128,6 +129,11 @@ void Renderer::render(const RenderScene& scene, int width, int height) {
   glDisable(GL_DEPTH_TEST);
   setUniforms(Eigen::Matrix4f::Identity(), {1, 1, 1, kXrayAlpha}, false);
   lines_.drawRange(0, outlineVertices_);
+  // The example path lies mostly under the hemisphere (a tutorial's few
+  // centimetres): shown through it at full strength, it is the lesson.
+  setUniforms(Eigen::Matrix4f::Identity(), {1, 1, 1, 1}, false);
+  lines_.drawRange(0, examplePathVertices_);
+  setUniforms(Eigen::Matrix4f::Identity(), {1, 1, 1, kXrayAlpha}, false);
   const std::size_t traceVertices = lines_.count() - outlineVertices_;
   const std::size_t recent = std::min(traceVertices, kXrayTraceVertices);
   lines_.drawRange(lines_.count() - recent, recent);
@@ -179,6 +185,10 @@ void Renderer::drawFloorLayer(const RenderScene& s) {
   drawMesh(shadow_, translateScale(contact, float(kShadowRadii * s.radius)), kWhite, false);
 
   lineScratch_.clear();
+  // The example path first: with the outlines, so it shows through the
+  // hemisphere (x-ray) where the player's contact point runs along it.
+  appendExamplePath(s, kExamplePathVertices, lineScratch_);
+  examplePathVertices_ = lineScratch_.size();
   appendZoneOutlines(s, lineScratch_);
   appendTargetOutlines(s, def_.floorExtent, lineScratch_);
   appendTargetPointers(s, lineScratch_);  // with the outlines: drawn over the hemisphere too (x-ray)

@@ -85,7 +85,8 @@ class Renderer {
   GpuMesh hemisphere_, sphere_, arrow_, shadow_, grid_, proxy_;
   GpuMesh decals_, lines_, spring_;    // dynamic
   std::vector<Vertex> decalScratch_, lineScratch_, springScratch_;
-  std::size_t outlineVertices_ = 0;    // lines_ holds the outlines first, then the trace
+  std::size_t outlineVertices_ = 0;    // lines_ holds the outlines first (the example path first of all), then the trace
+  std::size_t examplePathVertices_ = 0;
   struct PlacedProp {
     std::size_t mesh;                  // index into propMeshes_
     Eigen::Matrix4f model;

@@ -117,6 +117,12 @@ void appendTraceLines(const ContactTrace& trace, double now, std::vector<Vertex>
   }
 }
 
+void appendExamplePath(const RenderScene& scene, std::size_t maxVertices, std::vector<Vertex>& out) {
+  const auto& p = scene.examplePath;
+  for (std::size_t i = 1; i < p.size() && maxVertices >= 2; i += 2, maxVertices -= 2)
+    out.insert(out.end(), {flat(p[i - 1][0], p[i - 1][1], 0, kExamplePathColor), flat(p[i][0], p[i][1], 0, kExamplePathColor)});
+}
+
 void appendSpringCoil(const Vec3d& a, const Vec3d& b, double coilRadius, int turns, std::vector<Vertex>& out) {
   const double d[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
   const double length = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);

@@ -23,6 +23,7 @@ inline constexpr Rgba kZoneFill{0.85f, 0.10f, 0.10f, 0.30f};
 inline constexpr Rgba kZoneLine{0.70f, 0.05f, 0.05f, 1.0f};
 inline constexpr Rgba kTraceColor{0.95f, 0.45f, 0.05f, 1.0f};  // alpha from the point's age
 inline constexpr Rgba kSpringColor{0.15f, 0.35f, 0.85f, 1.0f};
+inline constexpr Rgba kExamplePathColor{0.25f, 0.80f, 1.00f, 1.0f};  // cyan, the trace's complement: never mistaken for it
 
 // Floor decals are clipped to [-extent, extent]^2 (a free component's band
 // would otherwise be infinite).
@@ -36,6 +37,9 @@ void appendTargetOutlines(const RenderScene& scene, double extent, std::vector<V
 void appendTargetPointers(const RenderScene& scene, std::vector<Vertex>& out);
 void appendZoneOutlines(const RenderScene& scene, std::vector<Vertex>& out);
 void appendTraceLines(const ContactTrace& trace, double now, std::vector<Vertex>& out);
+// A level's example path, dashed (every other segment, so that a trace
+// drawn along it stays visible), at most `maxVertices` vertices.
+void appendExamplePath(const RenderScene& scene, std::size_t maxVertices, std::vector<Vertex>& out);
 // A helix of `turns` turns and radius `coilRadius` from a to b [m].
 void appendSpringCoil(const Vec3d& a, const Vec3d& b, double coilRadius, int turns, std::vector<Vertex>& out);
 // Floor grid lines around the origin: every 10 cm (darker) within

@@ -92,6 +92,11 @@ bool SceneSanitizer::sanitize(const RenderScene& in, RenderScene& out) {
     else clean = false;
   }
   out.trace = in.trace;  // ContactTrace refuses non-finite points itself
+  out.examplePath.clear();
+  for (const Vec2d& p : in.examplePath) {
+    if (finite(p)) out.examplePath.push_back(p);
+    else clean = false;
+  }
   out.time = std::isfinite(in.time) ? in.time : out.time;
   return clean;
 }

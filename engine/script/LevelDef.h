@@ -57,6 +57,10 @@ struct SceneDef {
   bool contactTrace = true;            // draw the contact point's path on the plane
   std::vector<PropDef> props;          // scenery (docs/LEVELS.md, "scene.props")
   std::vector<std::string> plots;      // channel names (docs/LEVELS.md, "scene.plots")
+  // A way to go drawn on the plane, for a tutorial to show (docs/LEVELS.md,
+  // "scene.example_path"): points {x, y} [m], at most kMaxExamplePath.
+  std::vector<std::array<double, 2>> examplePath;
+  static constexpr int kMaxExamplePath = 2000;
   double recordRate = 100.0;           // samples per second a recording keeps [Hz], in (0, 1000]
 };
 

@@ -138,11 +138,42 @@ void readProps(const LuaTableReader& scene, std::vector<PropDef>& props) {
   }
 }
 
+void readExamplePath(const LuaTableReader& scene, std::vector<std::array<double, 2>>& path) {
+  const auto list = scene.table("example_path");
+  if (!list) return;
+  const int count = list->entryCount();
+  if (static_cast<int>(lua_rawlen(list->state(), list->index())) != count)
+    list->fail("", "expected a list of points {x, y} in metres");
+  if (count > SceneDef::kMaxExamplePath)
+    list->fail("", "at most " + std::to_string(SceneDef::kMaxExamplePath) + " points (" + std::to_string(count) +
+                       " given)");
+  for (int i = 1; i <= count; ++i) {
+    const std::string at = positionKey(i);
+    if (list->typeAt(i) != LUA_TTABLE) list->fail(at, "expected a point {x, y} in metres");
+    lua_rawgeti(list->state(), list->index(), i);
+    const LuaTableReader point(list->state(), -1, list->source(), list->fieldPath(at));
+    const int n = static_cast<int>(lua_rawlen(point.state(), point.index()));
+    std::array<double, 2> p{};
+    bool ok = n == 2 && point.entryCount() == 2;
+    for (int k = 0; ok && k < 2; ++k) {
+      lua_rawgeti(point.state(), point.index(), k + 1);
+      ok = lua_type(point.state(), -1) == LUA_TNUMBER;
+      if (ok) p[static_cast<std::size_t>(k)] = lua_tonumber(point.state(), -1);
+      lua_pop(point.state(), 1);
+      ok = ok && std::isfinite(p[static_cast<std::size_t>(k)]);
+    }
+    lua_pop(list->state(), 1);
+    if (!ok) list->fail(at, "expected a point {x, y}: two finite numbers in metres");
+    path.push_back(p);
+  }
+}
+
 void readScene(const LuaTableReader& top, SceneDef& scene) {
   const auto table = top.table("scene");
   if (!table) return;
-  rejectUnknownLevelKeys(*table, {"contact_trace", "plots", "record_rate", "props"});
+  rejectUnknownLevelKeys(*table, {"contact_trace", "plots", "record_rate", "props", "example_path"});
   readProps(*table, scene.props);
+  readExamplePath(*table, scene.examplePath);
   scene.contactTrace = readBool(*table, "contact_trace").value_or(scene.contactTrace);
   scene.recordRate = readPositive(*table, "record_rate", "Hz").value_or(scene.recordRate);
   if (scene.recordRate > 1000.0) table->fail("record_rate", "at most 1000 Hz (the servo rate)");

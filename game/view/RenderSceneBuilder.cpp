@@ -64,6 +64,8 @@ void fillFromState(const script::LevelDef& level, const physics::ForceDrivenStat
   scene.massPoint = {x[slot::x_p], x[slot::y_p]};
   fillTargets(level, x, stage, scene);
   fillZones(level, scene);
+  // assign keeps the capacity: no allocation after the first frame.
+  scene.examplePath.assign(level.scene.examplePath.begin(), level.scene.examplePath.end());
 }
 
 std::vector<render::PropDef> propsOf(const script::LevelDef& level) {

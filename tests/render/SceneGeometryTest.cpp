@@ -69,6 +69,22 @@ TEST(SceneGeometryTest, TraceSegmentsFadeWithAge) {
   for (std::size_t i = 1; i < v.size(); ++i) EXPECT_GE(v[i].color[3], v[i - 1].color[3]);
 }
 
+// Dashed: segments 0-1, 2-3, ... so that the trace stays visible along it;
+// never more vertices than the renderer's room.
+TEST(SceneGeometryTest, TheExamplePathIsDashedOnThePlane) {
+  RenderScene s;
+  for (int i = 0; i < 7; ++i) s.examplePath.push_back({0.001 * i, 0.002 * i});
+  std::vector<Vertex> v;
+  appendExamplePath(s, 1000, v);
+  ASSERT_EQ(v.size(), 6u);  // 3 dashes out of 6 segments
+  EXPECT_FLOAT_EQ(v[2].position[0], 0.002f);
+  EXPECT_FLOAT_EQ(v[3].position[1], 0.006f);
+  for (const Vertex& x : v) EXPECT_EQ(x.position[2], 0.0f);
+  v.clear();
+  appendExamplePath(s, 4, v);
+  EXPECT_EQ(v.size(), 4u);
+}
+
 TEST(SceneGeometryTest, SpringCoilJoinsBothEndsAndStaysNearTheAxis) {
   const Vec3d a{0.0, 0.0, 0.04}, b{0.03, 0.01, 0.06};
   std::vector<Vertex> v;

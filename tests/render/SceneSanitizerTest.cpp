@@ -72,7 +72,9 @@ TEST(SceneSanitizerTest, BadMarkersAreSkippedAndABadForceIsZero) {
   s.forbidden.push_back({true, {0.0, 0.0}, kNaN, {}, {}});
   s.forbidden.push_back({false, {}, 0.0, {0.1, 0.1}, {0.0, 0.2}});  // min > max
   s.camera.zoom = kNaN;
+  s.examplePath = {{0.0, 0.0}, {kNaN, 0.01}, {0.02, 0.0}};  // a bad point is left out, not drawn to the origin
   EXPECT_FALSE(sanitizer.sanitize(s, out));
+  EXPECT_EQ(out.examplePath, (std::vector<Vec2d>{{0.0, 0.0}, {0.02, 0.0}}));
   EXPECT_EQ(out.force, (Vec3d{0, 0, 0}));
   EXPECT_FALSE(out.showProxy);
   EXPECT_FALSE(out.springOn);

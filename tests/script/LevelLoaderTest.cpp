@@ -78,7 +78,8 @@ TEST(LevelLoader, ReadsEveryField) {
       medals = {bronze = 1, silver = 2, gold = 3},
       scene = {contact_trace = false, plots = {"u_a", "energy"}, record_rate = 50,
                props = {{mesh = "meshes/flag.obj", position = {0.1, -0.2, 0}, size = 0.02, yaw = 0.5,
-                         colour = {1, 0.5, 0}}, {mesh = "meshes/cone.gltf", position = {0, 0, 0}}}},
+                         colour = {1, 0.5, 0}}, {mesh = "meshes/cone.gltf", position = {0, 0, 0}}},
+               example_path = {{0, 0}, {0.005, 0.001}, {0.01, -0.002}}},
       callbacks = {rate = 25, on_update = function(s) end},
       demo_bot = "bots.rose",
     })");
@@ -124,6 +125,8 @@ TEST(LevelLoader, ReadsEveryField) {
   EXPECT_EQ(d.scene.props[0].colour, (std::array<double, 3>{1.0, 0.5, 0.0}));
   EXPECT_EQ(d.scene.props[1].size, PropDef{}.size);  // defaults
   EXPECT_EQ(d.scene.props[1].colour, PropDef{}.colour);
+  ASSERT_EQ(d.scene.examplePath.size(), 3u);
+  EXPECT_EQ(d.scene.examplePath[2], (std::array<double, 2>{0.01, -0.002}));
   EXPECT_EQ(d.callbacks.rate, 25.0);
   EXPECT_TRUE(d.callbacks.onUpdate);
   EXPECT_FALSE(d.callbacks.onStart);
@@ -226,6 +229,12 @@ INSTANTIATE_TEST_SUITE_P(
                   "lv.lua:3: scene.props[1].colour: each of {r, g, b} must be in [0, 1]"},
         ErrorCase{"return { name = 'x', scene = { props = {\n { mesh = 'meshes/flag.obj', position = {0, 0, 0}, sise = 1 } } } }",
                   "lv.lua:2: scene.props[1].sise: unknown key 'sise' (did you mean 'size'?)"},
+        ErrorCase{"return { name = 'x', scene = { example_path = {\n {0, 0}, {0.01} } } }",
+                  "lv.lua:2: scene.example_path[2]: expected a point {x, y}: two finite numbers in metres"},
+        ErrorCase{"return { name = 'x', scene = { example_path = {\n {0, 0}, {0, 0/0} } } }",
+                  "lv.lua:2: scene.example_path[2]: expected a point {x, y}: two finite numbers in metres"},
+        ErrorCase{"return { name = 'x', scene = { example_path = {\n x = {0, 0} } } }",
+                  "lv.lua:1: scene.example_path: expected a list of points {x, y} in metres"},
         ErrorCase{"return 42", "lv.lua:1: the level must return a table, got number"},
         ErrorCase{"return {\n name = 'x',\n", "lv.lua:3: unexpected symbol near <eof>"},
         ErrorCase{"local t = nil\nreturn { name = t.x }", "lv.lua:2: attempt to index a nil value"},
