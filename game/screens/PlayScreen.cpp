@@ -232,6 +232,7 @@ void PlayScreen::buildScene(const haptics::ServoSnapshot& s) {
   scene_.camera.pitch = host_.settings().orbitPitch;
   session_->setScreenYaw(render::screenRightHeading(scene_.camera));
   hud_.setScreenYaw(render::screenRightHeading(scene_.camera));
+  inset_.update(scene_, render::screenRightHeading(scene_.camera));
   showAutopilot();
 }
 
@@ -346,6 +347,7 @@ void PlayScreen::paint() {
   host_.renderer().render(scene_, d.width, d.height);
   hud_.draw(host_.fps());
   compass_.draw(&hud_.windowRects());
+  inset_.draw(&hud_.windowRects());
   if (!session_->waitingFor().empty()) {
     beginCentredPanel("waiting for the device", 640);
     ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1), "Waiting for the %s", session_->deviceName().c_str());

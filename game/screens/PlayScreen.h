@@ -27,6 +27,7 @@
 #include "engine/render/RenderScene.h"
 #include "engine/script/LevelLoader.h"
 #include "game/app/KeyBindings.h"
+#include "game/hud/FloorInset.h"
 #include "game/hud/HintCompass.h"
 #include "game/hud/PlayHud.h"
 #include "game/play/PlaySession.h"
@@ -91,6 +92,7 @@ class PlayScreen final : public Screen {
   std::optional<double> ghostTime_;  // [s] the ghost's judged time, when kept with it
   PlayHud hud_;
   HintCompass compass_;  // the autopilot's hint in screen directions
+  FloorInset inset_;     // the targets and zones round the contact point, magnified
   render::RenderScene scene_;
   render::ContactTrace trace_;
   haptics::Engagement lastEngagement_ = haptics::Engagement::Disengaged;

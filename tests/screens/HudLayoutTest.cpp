@@ -1,6 +1,7 @@
 // The play screen's layout in a real window (Xvfb + llvmpipe) at the sizes
 // players use, 1280x720 and 1920x1080: every HUD window (the HUD, the
-// level's messages, the take-hold prompt, the plots, the hint compass) lies
+// level's messages, the take-hold prompt, the plots, the hint compass, the
+// magnified floor) lies
 // inside the window and none covers another, before taking hold and while
 // playing with the hint and the full table on; and the results panel leaves
 // the middle of the window, where the hemisphere stands, clear.
@@ -71,7 +72,7 @@ TEST_P(HudLayoutTest, NothingClippedNothingOverlapping) {
   ASSERT_NE(play, nullptr);
   ASSERT_NE(play->session(), nullptr) << play->error();
   EXPECT_THAT(play->hud().prompt(), ::testing::HasSubstr("to take hold"));
-  checkLayout(play->hud(), {"hud", "messages", "prompt", "plots"});
+  checkLayout(play->hud(), {"hud", "messages", "prompt", "plots", "floor"});
 
   app.inject(platform::keyDownEvent("Space"));
   app.inject(platform::keyDownEvent("H"));
@@ -82,7 +83,7 @@ TEST_P(HudLayoutTest, NothingClippedNothingOverlapping) {
   app.frame();
   EXPECT_TRUE(play->hud().fullTable());
   EXPECT_EQ(play->hud().prompt(), "");
-  checkLayout(play->hud(), {"hud", "messages", "plots", "hint"});
+  checkLayout(play->hud(), {"hud", "messages", "plots", "hint", "floor"});
 }
 
 TEST_P(HudLayoutTest, TheResultsLeaveTheHemisphereInView) {
