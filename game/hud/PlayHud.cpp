@@ -33,6 +33,17 @@ int decimalsFor(double toleranceInUnit) { return toleranceInUnit < 1.0 ? 2 : 1; 
 
 }  // namespace
 
+// Enough decimals that the axis's two ends differ: one for a range of a unit
+// or more, up to three for a thousandth.
+int PlayHud::axisDecimals(double range) {
+  if (!(range > 0.0) || !std::isfinite(range)) return 1;
+  return std::clamp(static_cast<int>(std::ceil(-std::log10(range))) + 1, 1, 3);
+}
+
+namespace {
+
+}  // namespace
+
 PlayHud::PlayHud() : faceX_(400), faceY_(400) { setPlots({}, physics::HemisphereParams{}); }
 
 void PlayHud::reset() {
@@ -334,11 +345,12 @@ WindowRect PlayHud::drawPlots() {
       lo -= 1.0f;
       hi += 1.0f;
     }
-    ImGui::Text("%s [%s]  now %+.1f", u.label, u.unit, p.size() ? p.at(p.size() - 1) : 0.0f);
+    const int d = axisDecimals(hi - lo);
+    ImGui::Text("%s [%s]  now %+.*f", u.label, u.unit, d, p.size() ? p.at(p.size() - 1) : 0.0f);
     ImGui::BeginGroup();
-    ImGui::TextDisabled("%+7.1f", hi);
+    ImGui::TextDisabled("%+7.*f", d, hi);
     ImGui::Dummy(ImVec2(0, 18));
-    ImGui::TextDisabled("%+7.1f", lo);
+    ImGui::TextDisabled("%+7.*f", d, lo);
     ImGui::EndGroup();
     ImGui::SameLine();
     ImGui::PlotLines(i == 0 ? "##plot0" : i == 1 ? "##plot1" : "##plot2", &ScrollingPlot::getter,

@@ -112,6 +112,8 @@ class PlayHud {
   // Why the last hold was lost, e.g. "tilt v wobbled out by 0.40 ° after 0.6 s".
   static void holdBreakLine(const script::HoldBreak& b, std::span<char> out);
   static std::string holdBreakLine(const script::HoldBreak& b);
+  // Decimals for a plot axis spanning `range` (in its unit) so its ends differ.
+  static int axisDecimals(double range);
 
  private:
   void drawStatus();

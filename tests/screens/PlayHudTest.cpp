@@ -118,6 +118,17 @@ TEST(PlayHudTest, PlotsAreTheLevelsChannelsInPlayerUnits) {
   EXPECT_FLOAT_EQ(hud.plot(2).at(0), static_cast<float>(energy * 1e3));
 }
 
+// Measured in play: a contact-x plot from 0.05 to 0.1 mm read "+0.1" at both ends.
+TEST(PlayHudTest, PlotAxesGetTheDecimalsThatTellTheirEndsApart) {
+  EXPECT_EQ(PlayHud::axisDecimals(2.0), 1);
+  EXPECT_EQ(PlayHud::axisDecimals(1.0), 1);
+  EXPECT_EQ(PlayHud::axisDecimals(0.05), 3);  // 0.05 .. 0.10 reads +0.050 .. +0.100
+  EXPECT_EQ(PlayHud::axisDecimals(0.5), 2);
+  EXPECT_EQ(PlayHud::axisDecimals(1e-9), 3);
+  EXPECT_EQ(PlayHud::axisDecimals(0.0), 1);
+  EXPECT_EQ(PlayHud::axisDecimals(std::nan("")), 1);
+}
+
 TEST(PlayHudTest, ComponentsAndLostHoldsReadInPlayerUnits) {
   script::ComponentStatus c;
   c.variable = script::TaskVariable::u_a;
