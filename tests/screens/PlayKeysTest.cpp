@@ -12,6 +12,7 @@
 #include "game/app/App.h"
 #include "game/screens/PlayScreen.h"
 #include "game/screens/SettingsScreen.h"
+#include "tests/screens/support/HiddenApp.h"
 #include "tests/support/TempDirectory.h"
 
 namespace hemiroll::game {
@@ -30,12 +31,7 @@ bool frameUntil(App& app, PlayScreen& play, haptics::Engagement wanted) {
 
 TEST(PlayKeysTest, AKeyChangedInTheSettingsIsTheOneThatPlays) {
   test::TempDirectory dir;
-  AppDef def;
-  def.hidden = true;
-  def.vsync = false;
-  def.scoresFile = (dir.path() / "scores.sqlite").string();
-  def.settingsFile = (dir.path() / "settings.json").string();
-  App app(def);
+  App app(test::hiddenAppIn(dir.path()));
 
   // Settings: take hold -> H; then Escape while choosing a key cancels, not leaves.
   app.screens().push(std::make_unique<SettingsScreen>(app));
@@ -97,12 +93,7 @@ class TakeHoldTest : public ::testing::TestWithParam<bool> {};
 TEST_P(TakeHoldTest, AClickOrSpaceAfterAnyPointerMotionTakesHoldAndStartsTheClock) {
   const bool useSpace = GetParam();
   test::TempDirectory dir;
-  AppDef def;
-  def.hidden = true;
-  def.vsync = false;
-  def.scoresFile = (dir.path() / "scores.sqlite").string();
-  def.settingsFile = (dir.path() / "settings.json").string();
-  App app(def);
+  App app(test::hiddenAppIn(dir.path()));
   app.screens().push(std::make_unique<PlayScreen>(app, HEMIROLL_SOURCE_DIR "/levels/tutorial_02_roll_a_short_distance.lua"));
   app.frame();
   auto* play = dynamic_cast<PlayScreen*>(app.screens().top());
