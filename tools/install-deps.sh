@@ -2,7 +2,9 @@
 # Installs what hemiroll needs from Debian's packages, once and quietly.
 # Called by `make play`, `make test`, `make build` and `make bench`; does
 # nothing when everything is already there. `--fuzz` adds what `make fuzz`
-# needs besides: clang with its libFuzzer and sanitizer runtimes.
+# needs besides: clang with its libFuzzer and sanitizer runtimes. `--slurm`
+# adds a Slurm cluster's daemons and munge, for tools/slurm-local.sh (the
+# heavy test of `hemiroll sweep --slurm`); nothing else needs them.
 set -euo pipefail
 
 packages=(
@@ -19,6 +21,9 @@ packages=(
 )
 if [ "${1:-}" = "--fuzz" ]; then
   packages+=(clang libclang-rt-14-dev)
+fi
+if [ "${1:-}" = "--slurm" ]; then
+  packages+=(slurm-wlm munge)
 fi
 
 missing=()

@@ -16,6 +16,7 @@
 #include "game/report/Heatmap.h"
 #include "game/sweep/OrderedPool.h"
 #include "game/sweep/PhysicsFingerprint.h"
+#include "game/sweep/SlurmJob.h"
 #include "game/sweep/SweepError.h"
 #include "game/sweep/SweepMaps.h"
 #include "game/sweep/SweepMerge.h"
@@ -44,6 +45,28 @@ std::size_t writeMaps(const fs::path& dir) {
   return sheets.size();
 }
 
+// The job files for a cluster; the spec was loaded, so a broken one is
+// refused here, not by N tasks on the cluster.
+int writeSlurm(const SweepOptions& o) {
+  SlurmJobDef def;
+  std::error_code ec;
+  def.program = fs::canonical("/proc/self/exe", ec);
+  if (ec) throw SweepError(SweepError::Kind::Environment, "this program's own path cannot be read: " + ec.message());
+  def.spec = fs::absolute(o.inputs.front());
+  def.out = fs::absolute(*o.out);
+  def.tasks = o.slurmTasks;
+  def.threadsPerTask = o.threads > 0 ? o.threads : 1;
+  def.maps = o.maps;
+  const std::vector<fs::path> files = writeSlurmJob(def);
+  std::cerr << "hemiroll sweep: a Slurm job of " << def.tasks << " tasks in " << files.front().parent_path().string()
+            << "; submit it with " << files.back().string() << "\n";
+  JsonLine line;
+  line.add("submit", files.back().string()).add("array", files[0].string()).add("merge", files[1].string());
+  line.add("tasks", static_cast<long long>(def.tasks)).add("parts", (def.out / "parts").string());
+  std::cout << line.str() << "\n";
+  return kExitOk;
+}
+
 int runSweep(const SweepOptions& o) {
   SweepPartRequest request;
   try {
@@ -52,6 +75,7 @@ int runSweep(const SweepOptions& o) {
     std::cerr << "hemiroll sweep: " << e.what() << "\n";
     return kExitUsage;
   }
+  if (o.slurmTasks > 0) return writeSlurm(o);
   request.specFile = o.inputs.front();
   request.shard = o.shard;
   request.outDir = *o.out;

@@ -8,6 +8,7 @@ namespace hemiroll::game {
 
 const char* sweepUsage() {
   return "usage: hemiroll sweep SPEC.lua --out DIR [--threads N] [--shard i/N] [--maps svg|none]\n"
+         "       hemiroll sweep SPEC.lua --out DIR --slurm N [--threads T] [--maps svg|none]\n"
          "       hemiroll sweep merge DIR... --out DIR [--maps svg|none]\n"
          "       hemiroll sweep map DIR --x PARAM --y PARAM --metric NAME [--aggregate HOW] [--out FILE.svg]\n"
          "\n"
@@ -23,6 +24,10 @@ const char* sweepUsage() {
          "  --shard i/N       run: only the points whose index is i modulo N, into\n"
          "                    part-i-of-N.csv/.json (for a cluster's job array); join\n"
          "                    the parts with `hemiroll sweep merge`\n"
+         "  --slurm N         writes DIR/slurm/: a Slurm job array of N shards into\n"
+         "                    DIR/parts, T threads each, and a merge into DIR that\n"
+         "                    waits for them; submit with DIR/slurm/submit.sh, and\n"
+         "                    again after a failure (finished parts are kept)\n"
          "  --maps svg|none   run (whole sweeps), merge: draw map-<x>-<y>.svg for every\n"
          "                    pair of axes (default svg)\n"
          "  --x, --y PARAM    map: the axes (R, m_s, m_p, g, r1, r2, k, Omega)\n"
@@ -61,6 +66,7 @@ SweepOptionsResult parseSweepOptions(const std::vector<std::string>& args) {
       o.shard = *shard;
       return std::string();
     });
+    reader.option("--slurm", cli::integerIn(o.slurmTasks, 1, 10000, "a whole number of shards from 1 to 10000"));
   }
   if (run || merge) {
     reader.option("--maps", [&](const std::string& flag, const std::string& value) {
@@ -90,6 +96,8 @@ SweepOptionsResult parseSweepOptions(const std::vector<std::string>& args) {
     result.error = "missing --out DIR";
   else if (map && (!o.x || !o.y || !o.metric))
     result.error = "missing --x, --y or --metric (a map needs all three)";
+  else if (o.slurmTasks > 0 && !o.shard.whole())
+    result.error = "--slurm writes a job for every shard; --shard is for one of its tasks";
   return result;
 }
 

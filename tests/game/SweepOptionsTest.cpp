@@ -27,6 +27,10 @@ TEST(SweepOptions, Run) {
   EXPECT_EQ(plain.threads, 0);  // every core
   EXPECT_TRUE(plain.shard.whole());
   EXPECT_TRUE(plain.maps);
+  EXPECT_EQ(plain.slurmTasks, 0);  // run here
+  const SweepOptionsResult slurm = parseSweepOptions({"spec.lua", "--out", "d", "--slurm", "32", "--threads", "8"});
+  ASSERT_EQ(slurm.error, "");
+  EXPECT_EQ(slurm.options.slurmTasks, 32);
 }
 
 TEST(SweepOptions, MergeAndMap) {
@@ -57,6 +61,9 @@ TEST(SweepOptions, EachMistakeIsOneSentence) {
       {{"map", "d", "--x", "k", "--y", "Omega", "--metric", "curvature"}, "--metric needs one of paper_like"},
       {{"map", "d", "--x", "k", "--y", "Omega", "--metric", "loops", "--aggregate", "avg"}, "--aggregate needs median"},
       {{"map", "d", "--threads", "2"}, "--threads"},
+      {{"s.lua", "--out", "d", "--slurm", "0"}, "--slurm needs a whole number of shards from 1 to 10000"},
+      {{"s.lua", "--out", "d", "--slurm", "4", "--shard", "1/4"}, "--slurm writes a job for every shard"},
+      {{"merge", "a", "--out", "m", "--slurm", "2"}, "--slurm"},
   };
   for (const auto& [args, expected] : cases) {
     const SweepOptionsResult r = parseSweepOptions(args);
