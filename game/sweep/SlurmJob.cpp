@@ -5,6 +5,7 @@
 #include "engine/record/DurableFile.h"
 #include "engine/record/RecordError.h"
 #include "game/sweep/SweepError.h"
+#include "game/trial/JsonLine.h"
 
 namespace hemiroll::game {
 
@@ -22,7 +23,10 @@ std::string shellQuote(std::string_view text) {
 SlurmJobFiles slurmJobFiles(const SlurmJobDef& d) {
   const std::string program = shellQuote(d.program.string()), spec = shellQuote(d.spec.string());
   const std::string parts = shellQuote((d.out / "parts").string()), out = shellQuote(d.out.string());
-  const std::string logs = (d.out / "slurm").string();
+  // An #SBATCH line is not a shell word: its file name patterns take % as
+  // a field, so a literal one is written %%.
+  std::string logs;
+  for (const char c : (d.out / "slurm").string()) logs += c == '%' ? std::string("%%") : std::string(1, c);
   const std::string n = std::to_string(d.tasks), threads = std::to_string(d.threadsPerTask);
   SlurmJobFiles f;
   f.array = "#!/bin/bash\n"
@@ -60,6 +64,11 @@ SlurmJobFiles slurmJobFiles(const SlurmJobDef& d) {
 }
 
 std::vector<fs::path> writeSlurmJob(const SlurmJobDef& def) {
+  // A line break in a path would end an #SBATCH line and start a command.
+  for (const fs::path* p : {&def.program, &def.spec, &def.out})
+    if (p->string().find_first_of("\n\r") != std::string::npos)
+      throw SweepError(SweepError::Kind::BadInput,
+                       "a Slurm job cannot name a path with a line break in it: " + JsonLine::quote(p->string()));
   const fs::path dir = def.out / "slurm";
   const SlurmJobFiles files = slurmJobFiles(def);
   const std::vector<std::pair<fs::path, const std::string*>> out = {

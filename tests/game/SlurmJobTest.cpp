@@ -11,6 +11,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "game/sweep/SweepError.h"
 #include "tests/support/TempDirectory.h"
 
 namespace hemiroll::game {
@@ -54,6 +55,22 @@ TEST(SlurmJobTest, ShellQuotingKeepsEveryPathOneWord) {
   std::stringstream back;
   back << std::ifstream(dir.path() / "out").rdbuf();
   EXPECT_EQ(back.str(), word);
+}
+
+TEST(SlurmJobTest, PathsThatWouldBreakAnSbatchLineAreHandled) {
+  SlurmJobDef d = job();
+  d.out = "/scratch/100%/k";  // % is a field in Slurm's file name patterns
+  EXPECT_THAT(slurmJobFiles(d).array, HasSubstr("#SBATCH --output=/scratch/100%%/k/slurm/task-%a.log\n"));
+  test::TempDirectory dir;
+  d.out = dir.path() / "a\nb";  // a line break would end the #SBATCH line
+  try {
+    writeSlurmJob(d);
+    FAIL() << "no exception";
+  } catch (const SweepError& e) {
+    EXPECT_EQ(e.kind(), SweepError::Kind::BadInput);
+    EXPECT_THAT(e.what(), HasSubstr("line break"));
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "a\nb"));
 }
 
 TEST(SlurmJobTest, TheFilesAreWrittenExecutable) {
