@@ -33,3 +33,4 @@
 #include "engine/physics/StateLayout.h"
 #include "engine/physics/Stepper.h"
 #include "engine/physics/SubsteppingIntegrator.h"
+#include "engine/physics/Tsitouras54.h"
