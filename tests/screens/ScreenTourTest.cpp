@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -26,10 +27,13 @@ std::string readFile(const std::string& path) {
 
 // Pixels within `tolerance` per channel of an RGB colour. The tolerance
 // covers text anti-aliasing: only the glyphs' solid cores match.
-int countColour(const render::Image& image, int r, int g, int b, int tolerance = 12) {
+int countColour(const render::Image& image, int r, int g, int b, int tolerance = 12, int x0 = 0, int y0 = 0,
+                int x1 = -1, int y1 = -1) {
+  if (x1 < 0) x1 = image.width;
+  if (y1 < 0) y1 = image.height;
   int n = 0;
-  for (int y = 0; y < image.height; ++y)
-    for (int x = 0; x < image.width; ++x) {
+  for (int y = std::max(0, y0); y < std::min(y1, image.height); ++y)
+    for (int x = std::max(0, x0); x < std::min(x1, image.width); ++x) {
       const std::uint8_t* p = image.pixel(x, y);
       n += std::abs(p[0] - r) <= tolerance && std::abs(p[1] - g) <= tolerance && std::abs(p[2] - b) <= tolerance;
     }
@@ -131,8 +135,18 @@ TEST(ScreenTourTest, TheAutopilotIsWatchedThenTakenOverWithTheHint) {
   EXPECT_EQ(stops[7].screen, "hint");
   ASSERT_EQ(stops.size(), 9u);
   EXPECT_EQ(stops[8].screen, "start");
-  // The take-hold prompt in amber (0.95, 0.75, 0.3), large, below the hemisphere.
-  EXPECT_GT(countColour(stops[8].image, 242, 191, 77), 200);
+  // The take-hold prompt is drawn where the HUD placed it, in amber (0.95,
+  // 0.75, 0.3), at 1.3x: two lines have some 200 solid glyph-core pixels.
+  // Counted inside its window only: the HUD's own amber lines are elsewhere.
+  auto* start = dynamic_cast<PlayScreen*>(app.screens().top());
+  ASSERT_NE(start, nullptr);
+  const WindowRect* prompt = nullptr;
+  for (const WindowRect& r : start->hud().rects())
+    if (std::string(r.name) == "prompt") prompt = &r;
+  ASSERT_NE(prompt, nullptr) << "no take-hold prompt drawn";
+  EXPECT_GT(countColour(stops[8].image, 242, 191, 77, 12, int(prompt->x), int(prompt->y), int(prompt->x + prompt->width),
+                        int(prompt->y + prompt->height)),
+            100);
   // The autopilot's HUD line is green (0.3, 0.95, 0.55): one line of ImGui's
   // built-in font at 1x has about 80 solid glyph-core pixels of it (measured:
   // 80 for the hint's line), half that leaves room for the rasteriser; the
@@ -142,11 +156,9 @@ TEST(ScreenTourTest, TheAutopilotIsWatchedThenTakenOverWithTheHint) {
   EXPECT_EQ(countColour(stops[3].image, 77, 242, 140), 0);
   // The last stop is a fresh trial of the player's own (the takeover itself:
   // AutopilotWatchTest), its clock waiting for the take-hold.
-  auto* play = dynamic_cast<PlayScreen*>(app.screens().top());
-  ASSERT_NE(play, nullptr);
-  EXPECT_TRUE(play->session()->awaitingTakeHold());
-  EXPECT_FALSE(play->session()->assisted());
-  EXPECT_EQ(play->session()->snapshot().time, 0.0);
+  EXPECT_TRUE(start->session()->awaitingTakeHold());
+  EXPECT_FALSE(start->session()->assisted());
+  EXPECT_EQ(start->session()->snapshot().time, 0.0);
 }
 
 }  // namespace
