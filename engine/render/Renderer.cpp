@@ -127,13 +127,14 @@ void Renderer::render(const RenderScene& scene, int width, int height) {
   // Only the trace's recent part: the head is what hides under the body,
   // and each line costs the software rasteriser per pixel.
   glDisable(GL_DEPTH_TEST);
-  setUniforms(Eigen::Matrix4f::Identity(), {1, 1, 1, kXrayAlpha}, false);
-  lines_.drawRange(0, outlineVertices_);
   // The example path lies mostly under the hemisphere (a tutorial's few
-  // centimetres): shown through it at full strength, it is the lesson.
+  // centimetres): shown through it at full strength, it is the lesson; the
+  // outlines after it, faint.
+  const std::size_t path = std::min(examplePathVertices_, outlineVertices_);
   setUniforms(Eigen::Matrix4f::Identity(), {1, 1, 1, 1}, false);
-  lines_.drawRange(0, examplePathVertices_);
+  lines_.drawRange(0, path);
   setUniforms(Eigen::Matrix4f::Identity(), {1, 1, 1, kXrayAlpha}, false);
+  lines_.drawRange(path, outlineVertices_ - path);
   const std::size_t traceVertices = lines_.count() - outlineVertices_;
   const std::size_t recent = std::min(traceVertices, kXrayTraceVertices);
   lines_.drawRange(lines_.count() - recent, recent);

@@ -43,18 +43,25 @@ std::optional<HudChannel> HudChannel::fromName(std::string_view name) {
     if (*v == script::TaskVariable::omega_norm) return HudChannel(Source::OmegaNorm, 0, playerUnitOf(*v));
     return HudChannel(Source::StateSlot, static_cast<int>(*v), playerUnitOf(*v));
   }
-  if (name == "energy") return HudChannel(Source::Energy, 0, {"energy", "mJ", 1e3});
-  if (name == "force_norm") return HudChannel(Source::ForceNorm, 0, {"hand force", "N", 1.0});
-  static constexpr std::array<const char*, 3> kAxes = {"x", "y", "z"};
-  static constexpr std::array<const char*, 3> kProxy = {"proxy x", "proxy y", "proxy z"};
-  static constexpr std::array<const char*, 3> kForce = {"hand force x", "hand force y", "hand force z"};
-  for (int i = 0; i < 3; ++i) {
-    const std::size_t k = static_cast<std::size_t>(i);
-    if (name.size() == 7 && name.substr(0, 6) == "proxy_" && name.substr(6) == kAxes[k])
-      return HudChannel(Source::Proxy, i, {kProxy[k], "mm", 1e3});
-    if (name.size() == 7 && name.substr(0, 6) == "force_" && name.substr(6) == kAxes[k])
-      return HudChannel(Source::Force, i, {kForce[k], "N", 1.0});
-  }
+  // The channels that are not state variables: LevelLoader's names.
+  struct Named {
+    std::string_view name;
+    Source source;
+    int index;
+    PlayerUnit unit;
+  };
+  static constexpr std::array<Named, 8> kOthers = {{
+      {"energy", Source::Energy, 0, {"energy", "mJ", 1e3}},
+      {"proxy_x", Source::Proxy, 0, {"proxy x", "mm", 1e3}},
+      {"proxy_y", Source::Proxy, 1, {"proxy y", "mm", 1e3}},
+      {"proxy_z", Source::Proxy, 2, {"proxy z", "mm", 1e3}},
+      {"force_x", Source::Force, 0, {"hand force x", "N", 1.0}},
+      {"force_y", Source::Force, 1, {"hand force y", "N", 1.0}},
+      {"force_z", Source::Force, 2, {"hand force z", "N", 1.0}},
+      {"force_norm", Source::ForceNorm, 0, {"hand force", "N", 1.0}},
+  }};
+  for (const Named& n : kOthers)
+    if (n.name == name) return HudChannel(n.source, n.index, n.unit);
   return std::nullopt;
 }
 

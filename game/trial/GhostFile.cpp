@@ -1,10 +1,12 @@
 #include "game/trial/GhostFile.h"
 
 #include <cmath>
-#include <cstdio>
 #include <fstream>
 
+#include "engine/record/DurableFile.h"
 #include "engine/record/FileNames.h"
+#include "engine/record/RecordError.h"
+#include "game/trial/JsonLine.h"
 
 namespace hemiroll::game {
 
@@ -31,11 +33,11 @@ std::string keepAsGhost(const std::filesystem::path& replay, const std::filesyst
     std::filesystem::remove(temp, ec);
     return "the best run could not be kept as the ghost " + ghost.string() + ": " + why;
   }
-  std::ofstream out(ghost.string() + ".time", std::ios::trunc);
-  char text[40];
-  std::snprintf(text, sizeof text, "%.17g\n", time);
-  out << text;
-  if (!out) return "the ghost's time could not be written beside " + ghost.string();
+  try {
+    record::writeFileAtomically(ghost.string() + ".time", JsonLine::number(time) + "\n");
+  } catch (const record::RecordError& e) {
+    return std::string("the ghost's time could not be kept: ") + e.what();
+  }
   return "";
 }
 

@@ -118,6 +118,26 @@ TEST(PlayHudTest, PlotsAreTheLevelsChannelsInPlayerUnits) {
   EXPECT_FLOAT_EQ(hud.plot(2).at(0), static_cast<float>(energy * 1e3));
 }
 
+// Every channel a level may name (docs/LEVELS.md, "Plot channels") is one
+// the HUD can draw, in a unit of its own; anything else is not.
+TEST(PlayHudTest, EveryPlotChannelALevelMayNameHasAPlayerUnit) {
+  for (const char* name : {"x_p", "y_p", "xd_p", "yd_p", "w_x", "w_y", "w_z", "u_a", "v_a", "u_o", "v_o", "psi",
+                           "omega_norm", "energy", "proxy_x", "proxy_y", "proxy_z", "force_x", "force_y", "force_z",
+                           "force_norm"}) {
+    const std::optional<HudChannel> c = HudChannel::fromName(name);
+    ASSERT_TRUE(c.has_value()) << name;
+    EXPECT_GT(c->unit().scale, 0.0) << name;
+  }
+  EXPECT_FALSE(HudChannel::fromName("proxy_w").has_value());
+  EXPECT_FALSE(HudChannel::fromName("u_ca").has_value());  // a group, not a channel
+  haptics::ServoSnapshot s;
+  s.proxyPosition = {0.01, 0.02, 0.03};
+  s.handForce = {3.0, 4.0, 0.0};
+  const physics::RollingDynamics dynamics{physics::HemisphereParams{}};
+  EXPECT_EQ(HudChannel::fromName("proxy_y")->value(s, dynamics), 0.02);
+  EXPECT_EQ(HudChannel::fromName("force_norm")->value(s, dynamics), 5.0);
+}
+
 // Measured in play: a contact-x plot from 0.05 to 0.1 mm read "+0.1" at both ends.
 TEST(PlayHudTest, PlotAxesGetTheDecimalsThatTellTheirEndsApart) {
   EXPECT_EQ(PlayHud::axisDecimals(2.0), 1);
