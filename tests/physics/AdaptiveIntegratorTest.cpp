@@ -1,4 +1,4 @@
-// AdaptiveIntegrator.h with both pairs: the error at the end tracks the
+// AdaptiveIntegrator.h with the three pairs: the error at the end tracks the
 // tolerance, the dense output has the continuous extension's order, and the
 // Integrator<N>::step interface lands exactly on t + h.
 
@@ -50,6 +50,7 @@ void expectErrorTracksTolerance() {
 
 TEST(AdaptiveIntegrator, Dopri5ErrorTracksTolerance) { expectErrorTracksTolerance<DormandPrince54<2>>(); }
 TEST(AdaptiveIntegrator, Dop853ErrorTracksTolerance) { expectErrorTracksTolerance<DormandPrince853<2>>(); }
+TEST(AdaptiveIntegrator, Tsit5ErrorTracksTolerance) { expectErrorTracksTolerance<Tsitouras54<2>>(); }
 
 // Dense output: with equal steps, the largest interpolation error at the
 // quarter points of every step, against the closed form. The continuous
@@ -88,6 +89,13 @@ TEST(AdaptiveIntegrator, Dopri5DenseOutputIsFifthOrderAccurate) {
   const double p = denseOrder<DormandPrince54<2>>(30, 2);
   EXPECT_GE(p, 4.7);
   EXPECT_LE(p, 5.6);
+}
+
+// Tsit5's dense output is a cubic Hermite: local error h^4, order 4.
+TEST(AdaptiveIntegrator, Tsit5DenseOutputIsTheCubicHermitesOrder) {
+  const double p = denseOrder<Tsitouras54<2>>(30, 2);
+  EXPECT_GE(p, 3.7);
+  EXPECT_LE(p, 4.6);
 }
 
 TEST(AdaptiveIntegrator, Dop853DenseOutputIsEighthOrderAccurate) {

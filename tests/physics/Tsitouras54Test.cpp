@@ -1,9 +1,7 @@
 // engine/physics/Tsitouras54: the tableau typed from the paper against every
 // Runge-Kutta order condition (the 17 rooted trees up to order 5 for the
 // propagated weights, the 8 up to order 4 for the embedded ones), then the
-// pair at work: its error tracks the tolerance, its dense output has the
-// cubic Hermite's order, and it needs fewer evaluations than DOPRI5 for the
-// same error.
+// pair against DOPRI5.
 
 #include "engine/physics/Tsitouras54.h"
 
@@ -14,7 +12,6 @@
 #include <cstdio>
 
 #include "engine/physics/DormandPrince54.h"
-#include "tests/physics/support/ConvergenceOrder.h"
 #include "tests/physics/support/KnownSolution.h"
 
 namespace hemiroll::test {
@@ -31,17 +28,17 @@ struct Tableau {
 };
 
 Tableau tableau() {
-  using namespace tsit5;
+  using T = Tsit5Tableau;
   Tableau t;
-  t.c = {0.0, c2, c3, c4, c5, 1.0, 1.0};
-  t.a[1] = {a21};
-  t.a[2] = {a31, a32};
-  t.a[3] = {a41, a42, a43};
-  t.a[4] = {a51, a52, a53, a54};
-  t.a[5] = {a61, a62, a63, a64, a65};
-  t.a[6] = {b1, b2, b3, b4, b5, b6};
-  t.b = {b1, b2, b3, b4, b5, b6, 0.0};
-  const Vec e = {e1, e2, e3, e4, e5, e6, e7};
+  t.c = {0.0, T::c2, T::c3, T::c4, T::c5, 1.0, 1.0};
+  t.a[1] = {T::a21};
+  t.a[2] = {T::a31, T::a32};
+  t.a[3] = {T::a41, T::a42, T::a43};
+  t.a[4] = {T::a51, T::a52, T::a53, T::a54};
+  t.a[5] = {T::a61, T::a62, T::a63, T::a64, T::a65};
+  t.a[6] = {T::b1, T::b2, T::b3, T::b4, T::b5, T::b6};
+  t.b = {T::b1, T::b2, T::b3, T::b4, T::b5, T::b6, 0.0};
+  const Vec e = {T::e1, T::e2, T::e3, T::e4, T::e5, T::e6, T::e7};
   for (int i = 0; i < S; ++i) t.bHat[i] = t.b[i] - e[i];
   return t;
 }
@@ -114,10 +111,13 @@ TEST(Tsitouras54, TheTypedTableauMeetsEveryOrderCondition) {
   EXPECT_GT(worst, 1e-4);
 }
 
-TEST(Tsitouras54, ErrorTracksToleranceWithFewerEvaluationsThanDopri5) {
+// What the pair was chosen for: at each tolerance no more work than DOPRI5
+// for no more error (measured here: 3-12 % fewer evaluations for 1.3-3.7x
+// less error). That its error tracks the tolerance and its dense output's
+// order: AdaptiveIntegratorTest, with the other pairs.
+TEST(Tsitouras54, NoMoreWorkThanDopri5ForNoMoreError) {
   const KnownSolutionSystem f;
   const double T = 3.0;
-  std::vector<double> tols, errors;
   for (double tol = 1e-4; tol >= 1e-10; tol *= 0.01) {
     double e[2] = {};
     long long evaluations[2] = {};
@@ -129,55 +129,14 @@ TEST(Tsitouras54, ErrorTracksToleranceWithFewerEvaluationsThanDopri5) {
       double t = 0.0;
       StateVector<2> x = KnownSolutionSystem::exact(0.0);
       ASSERT_TRUE(m->advanceTo(f, t, x, T));
-      EXPECT_EQ(t, T);
       e[which] = (x - KnownSolutionSystem::exact(T)).cwiseAbs().maxCoeff();
       evaluations[which] = m->statistics().evaluations;
     }
     std::printf("[measured] tol %.0e: tsit5 error %.2e in %lld evaluations, dopri5 %.2e in %lld\n", tol, e[0],
                 evaluations[0], e[1], evaluations[1]);
-    // As for DOPRI5 (AdaptiveIntegratorTest): within 30x of tol, not 1000x below.
-    EXPECT_LT(e[0], 30.0 * tol);
-    // What the pair was chosen for: no more work for no more error (measured
-    // here: 3-12 % fewer evaluations for 1.3-3.7x less error).
     EXPECT_LE(evaluations[0], evaluations[1]);
     EXPECT_LE(e[0], e[1]);
-    EXPECT_GT(e[0], 1e-3 * tol);
-    tols.push_back(tol);
-    errors.push_back(e[0]);
   }
-  const double slope = observedOrder(tols, errors);
-  std::printf("[measured] tsit5: d log(error) / d log(tol) = %.2f\n", slope);
-  EXPECT_GT(slope, 0.7);
-  EXPECT_LT(slope, 1.2);
-}
-
-// Equal steps, the interpolant at the quarter points against the closed
-// form: a cubic Hermite's error is h^4, so the observed order is 4.
-TEST(Tsitouras54, DenseOutputIsTheCubicHermitesOrder) {
-  const KnownSolutionSystem f;
-  const double T = 3.0;
-  std::vector<double> steps, errors;
-  for (int n = 30; n <= 120; n *= 2) {
-    Tsitouras54<2> m;
-    const double h = T / n;
-    m.start(f, 0.0, KnownSolutionSystem::exact(0.0));
-    double worst = 0.0;
-    for (int i = 0; i < n; ++i) {
-      m.takeFixedStep(f, h);
-      for (double theta : {0.0, 0.25, 0.5, 0.75, 1.0}) {
-        const double t = (i + theta) * h;
-        StateVector<2> x;
-        m.interpolate(t, x);
-        worst = std::max(worst, (x - KnownSolutionSystem::exact(t)).cwiseAbs().maxCoeff());
-      }
-    }
-    steps.push_back(h);
-    errors.push_back(worst);
-  }
-  const double p = observedOrder(steps, errors);
-  std::printf("[measured] tsit5 dense output: order %.2f\n", p);
-  EXPECT_GE(p, 3.7);
-  EXPECT_LE(p, 4.6);
 }
 
 }  // namespace
