@@ -7,10 +7,17 @@ JOBS      ?= $(shell nproc 2>/dev/null || echo 2)
 OUT       := out
 CMAKE_CFG := cmake --preset release -Wno-dev > /dev/null
 
-.PHONY: play test build bench asan tsan fuzz deps configure clean
+.PHONY: play test build bench asan tsan fuzz deps peer-deps configure clean
 
 deps:
 	@tools/install-deps.sh
+
+# The peer engines of tools/peers (issue 15): only the benchmark links them.
+# A build configured before they were installed is configured again, so
+# that peer_bench joins it.
+peer-deps:
+	@tools/install-deps.sh --peers
+	@if [ -f $(BUILD)/build.ninja ] && ! grep -q peer_bench $(BUILD)/build.ninja; then $(CMAKE_CFG); fi
 
 $(BUILD)/build.ninja: CMakeLists.txt CMakePresets.json | deps
 	@$(CMAKE_CFG)
@@ -26,10 +33,10 @@ play: build
 	@$(BUILD)/hemiroll play
 
 # The fast suite; `ctest --test-dir build -L heavy` runs the heavy variants.
-test: build
+test: peer-deps build
 	@ctest --test-dir $(BUILD) -j $(JOBS) --output-on-failure -LE heavy
 
-bench: build
+bench: peer-deps build
 	@tools/run-benchmarks.sh $(BUILD)
 
 # Debug build with AddressSanitizer and UndefinedBehaviorSanitizer.

@@ -5,6 +5,8 @@
 # needs besides: clang with its libFuzzer and sanitizer runtimes. `--slurm`
 # adds a Slurm cluster's daemons and munge, for tools/slurm-local.sh (the
 # heavy test of `hemiroll sweep --slurm`); nothing else needs them.
+# `--peers` adds MuJoCo, Bullet and ODE for tools/peers (peer_bench, called
+# by `make test` and `make bench`); the engine and the game never link them.
 set -euo pipefail
 
 packages=(
@@ -24,6 +26,9 @@ if [ "${1:-}" = "--fuzz" ]; then
 fi
 if [ "${1:-}" = "--slurm" ]; then
   packages+=(slurm-wlm munge)
+fi
+if [ "${1:-}" = "--peers" ]; then
+  packages+=(libmujoco-dev libbullet-dev libode-dev)
 fi
 
 missing=()

@@ -6,6 +6,7 @@ build=${1:-build}
 mkdir -p out/bench
 for b in "$build"/bench/*_bench; do
   name=$(basename "$b")
+  [ "$name" = peer_bench ] && continue  # not Google Benchmark: its own section below
   echo "== $name (median of 7 repetitions)"
   # render_bench opens a window: a virtual display and Mesa's software GL.
   wrap=()
@@ -22,3 +23,14 @@ echo "== work_precision (docs/WORK_PRECISION.md)"
 mkdir -p docs/work-precision
 "$build"/bench/work_precision --out docs/work-precision --doc docs/WORK_PRECISION.md
 gnuplot docs/work-precision/work_precision.gp
+
+# hemiroll against MuJoCo, Bullet and ODE on the same scenes (issue 15, a few
+# minutes): regenerates docs/PEERS.md and docs/peers/*.
+if [ -x "$build"/bench/peer_bench ]; then
+  echo "== peer_bench (docs/PEERS.md)"
+  mkdir -p docs/peers
+  "$build"/bench/peer_bench --out docs/peers --doc docs/PEERS.md
+  gnuplot docs/peers/peers.gp
+else
+  echo "== peer_bench not built (tools/install-deps.sh --peers, then configure again)"
+fi
