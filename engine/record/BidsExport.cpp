@@ -6,6 +6,7 @@
 
 #include "engine/record/CsvRowFormat.h"
 #include "engine/record/DurableFile.h"
+#include "engine/record/FileNames.h"
 #include "engine/record/RecordError.h"
 
 namespace hemiroll::record {
@@ -53,7 +54,7 @@ std::vector<Channel> channels() {
 std::string label(const std::string& id, const char* what) {
   std::string out;
   for (const char ch : id)
-    if ((ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9')) out += ch;
+    if (isAsciiLetterOrDigit(ch)) out += ch;
   if (out.empty()) throw RecordError("BIDS export: the " + std::string(what) + " '" + id + "' has no letters or digits");
   return out;
 }

@@ -20,4 +20,17 @@ class ReplayRunner {
   static std::uint64_t run(haptics::ServoLoop& loop, const ReplayLog& log);
 };
 
+// Where a replay has got to, for playing it a part at a time (the replay
+// screen, a ghost): the same posting-then-ticking rule as ReplayRunner.
+class ReplayCursor {
+ public:
+  // Plays the log's inputs up to (not including) index `due`, or its end.
+  // Returns false, having played on, if the loop refused a logged command.
+  bool playTo(haptics::ServoLoop& loop, const ReplayLog& log, std::size_t due);
+  std::size_t next() const { return nextInput_; }
+
+ private:
+  std::size_t nextInput_ = 0, nextCommand_ = 0;
+};
+
 }  // namespace hemiroll::record

@@ -10,8 +10,6 @@ namespace hemiroll::game {
 
 namespace {
 
-haptics::Vec3 vec(const std::array<double, 3>& t) { return {t[0], t[1], t[2]}; }
-
 AutopilotBotOptions plannerOnItsOwnThread() {
   AutopilotBotOptions o;
   o.plannerThread = true;
@@ -89,7 +87,7 @@ void AutopilotCompanion::step() {
     std::lock_guard<std::mutex> lock(reasonMutex_);
     reason_ = autopilot_.giveUpReason().empty() ? "autopilot: no plan" : autopilot_.giveUpReason();
   } else if (hand_ != nullptr && driving()) {
-    hand_->publish(plan.time, vec(plan.position), vec(plan.velocity));
+    hand_->publish(plan.time, physics::vec3Of(plan.position), physics::vec3Of(plan.velocity));
   }
   if (guide_) loop_.publishGuide(plan);
   plans_.write(plan);

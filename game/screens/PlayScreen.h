@@ -33,7 +33,7 @@
 #include "game/play/PlaySession.h"
 #include "game/screens/PlayMode.h"
 #include "game/screens/Screen.h"
-#include "game/trial/ReplayPlayer.h"
+#include "game/play/ReplayPlayer.h"
 
 namespace hemiroll::game {
 

@@ -9,7 +9,7 @@
 #include "engine/render/ContactTrace.h"
 #include "engine/render/RenderScene.h"
 #include "engine/script/LevelLoader.h"
-#include "game/trial/ReplayPlayer.h"
+#include "game/play/ReplayPlayer.h"
 #include "game/screens/Screen.h"
 
 namespace hemiroll::game {

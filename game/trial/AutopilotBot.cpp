@@ -2,14 +2,12 @@
 
 #include <algorithm>
 
+#include "engine/physics/StateKinematics.h"
 #include "engine/script/ScriptError.h"
 
 namespace hemiroll::game {
 
 namespace {
-
-physics::Vec3 vec(const script::Triple3& t) { return {t[0], t[1], t[2]}; }
-script::Triple3 triple(const physics::Vec3& v) { return {v.x(), v.y(), v.z()}; }
 
 // The coupling of a level info whose method is "M1", "M2" or "M3" (init
 // refuses "visual" before this).
@@ -40,7 +38,7 @@ void AutopilotBot::init(const script::BotLevelInfo& info, std::int64_t seed) {
   def.params.gravity = info.gravity;
   def.coupling = couplingOf(info);
   def.dt = info.dt;
-  def.workspace.centre = vec(info.workspaceCentre);
+  def.workspace.centre = physics::vec3Of(info.workspaceCentre);
   def.workspace.radius = info.workspaceRadius;
   def.budget = options_.budget;
   def.seed = static_cast<std::uint64_t>(seed);
@@ -52,8 +50,8 @@ script::BotAction AutopilotBot::act(const script::BotObservation& obs) {
   if (!autopilot_) throw script::ScriptError("autopilot: act before init");
   input_.time = obs.time;
   for (int i = 0; i < 12; ++i) input_.state[i] = obs.state[static_cast<std::size_t>(i)];
-  input_.massPosition = vec(obs.mass);
-  input_.massVelocity = vec(obs.massVelocity);
+  input_.massPosition = physics::vec3Of(obs.mass);
+  input_.massVelocity = physics::vec3Of(obs.massVelocity);
   input_.engaged = obs.engaged;
   input_.stage = obs.stage;
   autopilot::Goal& goal = input_.goal;
@@ -76,8 +74,8 @@ script::BotAction AutopilotBot::act(const script::BotObservation& obs) {
   }
   const autopilot::ProxyCommand command = autopilot_->act(input_);
   script::BotAction action;
-  action.position = triple(command.position);
-  action.velocity = triple(command.velocity);
+  action.position = physics::tripleOf(command.position);
+  action.velocity = physics::tripleOf(command.velocity);
   action.hasVelocity = true;
   return action;
 }
@@ -94,7 +92,7 @@ haptics::GuideSample guideSampleOf(AutopilotBot& autopilot, const script::BotObs
   const script::BotAction plan = autopilot.act(obs);
   sample.position = plan.position;
   if (plan.hasVelocity) sample.velocity = plan.velocity;
-  sample.valid = autopilot.giveUpReason().empty() && vec(sample.position).allFinite() && vec(sample.velocity).allFinite();
+  sample.valid = autopilot.giveUpReason().empty() && physics::vec3Of(sample.position).allFinite() && physics::vec3Of(sample.velocity).allFinite();
   return sample;
 }
 

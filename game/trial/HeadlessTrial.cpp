@@ -15,12 +15,6 @@ namespace hemiroll::game {
 
 using script::TrialOutcome;
 
-namespace {
-
-physics::Vec3 vec(const haptics::Triple& t) { return {t[0], t[1], t[2]}; }
-
-}  // namespace
-
 HeadlessTrial::HeadlessTrial(script::LoadedLevel& level, script::BotPolicy& bot, const TrialSettings& settings)
     : level_(level), bot_(bot), settings_(settings) {}
 
@@ -81,9 +75,9 @@ TrialResult HeadlessTrial::run() {
       break;
     }
     if (action.hasVelocity)
-      device.setPose(vec(action.position), vec(action.velocity));
+      device.setPose(physics::vec3Of(action.position), physics::vec3Of(action.velocity));
     else
-      device.setPose(vec(action.position));
+      device.setPose(physics::vec3Of(action.position));
     if (guide) loop.publishGuide(guideSampleOf(*guide, obs));
 
     loop.tick();

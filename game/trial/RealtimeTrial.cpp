@@ -19,12 +19,6 @@ namespace hemiroll::game {
 
 using script::TrialOutcome;
 
-namespace {
-
-physics::Vec3 vec(const std::array<double, 3>& t) { return {t[0], t[1], t[2]}; }
-
-}  // namespace
-
 TrialResult runRealtimeTrial(script::LoadedLevel& level, script::BotPolicy& bot, const TrialSettings& settings) {
   const auto wallStart = std::chrono::steady_clock::now();
   const script::LevelDef& def = level.def;
@@ -72,9 +66,9 @@ TrialResult runRealtimeTrial(script::LoadedLevel& level, script::BotPolicy& bot,
         return false;
       }
       if (a.hasVelocity)
-        device.publish(time, vec(a.position), vec(a.velocity));
+        device.publish(time, physics::vec3Of(a.position), physics::vec3Of(a.velocity));
       else
-        device.publish(time, vec(a.position));
+        device.publish(time, physics::vec3Of(a.position));
       if (guide) loop.publishGuide(guideSampleOf(*guide, obs));
     } catch (const script::ScriptError& e) {
       judging.fail(std::string("bot error: ") + e.what());

@@ -8,12 +8,6 @@ namespace hemiroll::game {
 
 using script::TrialOutcome;
 
-namespace {
-
-physics::Vec3 vec(const haptics::Triple& t) { return {t[0], t[1], t[2]}; }
-
-}  // namespace
-
 TrialJudge::TrialJudge(script::LoadedLevel& level, haptics::RecordRing* forward, int forwardEvery, bool faultsEndTrial)
     : level_(level),
       forward_(forward),
@@ -38,10 +32,10 @@ void TrialJudge::judgeAny(const Tick& tick) {
   input.event = tick.event;
   judge_.judge(input);
   script::EffortInput effort;
-  effort.proxyPosition = vec(tick.proxyPosition);
-  effort.handForce = vec(tick.handForce);
+  effort.proxyPosition = physics::vec3Of(tick.proxyPosition);
+  effort.handForce = physics::vec3Of(tick.handForce);
   accumulator_.add(input, effort, judge_);
-  maxRenderedForce_ = std::max(maxRenderedForce_, vec(tick.renderedForce).norm());
+  maxRenderedForce_ = std::max(maxRenderedForce_, physics::vec3Of(tick.renderedForce).norm());
   maxProxyDistance_ = std::max(maxProxyDistance_, tick.proxyDistance);
   if (faultsEndTrial_ && !judge_.finished() && tick.fault != haptics::SafetyFault::None)
     judge_.finish(TrialOutcome::Failure, std::string("safety: ") + haptics::safetyFaultName(tick.fault), tick.time);

@@ -66,6 +66,9 @@ TEST(PlaySessionTest, AScriptedMouseEngagesAndPlaysPausesAndQuits) {
     if (!stalled(session)) break;
   }
   PlaySession& session = *played;
+  // Three starved attempts are a failure that says so, not a pass on checks
+  // that a stopped session happens to meet.
+  ASSERT_FALSE(stalled(session)) << "the servo loop was starved in three attempts";
   ASSERT_FALSE(session.finished()) << session.judging().judge().reason();
   EXPECT_TRUE(engaged);
   const double before = session.snapshot().time;

@@ -1,4 +1,4 @@
-#include "game/trial/ReplayPlayer.h"
+#include "game/play/ReplayPlayer.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

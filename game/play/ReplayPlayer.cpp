@@ -1,4 +1,4 @@
-#include "game/trial/ReplayPlayer.h"
+#include "game/play/ReplayPlayer.h"
 
 #include <stdexcept>
 
@@ -30,13 +30,10 @@ ReplayPlayer::~ReplayPlayer() = default;
 
 void ReplayPlayer::playTo(std::uint64_t ticks) {
   const std::size_t due = static_cast<std::size_t>(std::min<std::uint64_t>(ticks, log_.inputs.size()));
-  if (next_ >= due) return;
-  for (; next_ < due; ++next_) {
-    const haptics::TickInput& in = log_.inputs[next_];
-    for (; nextCommand_ < log_.commands.size() && log_.commands[nextCommand_].tick == in.tick; ++nextCommand_)
-      loop_->post(log_.commands[nextCommand_].command);
-    loop_->tick(in.latenessNs);
-  }
+  if (cursor_.next() >= due) return;
+  // A refused command cannot happen here: the level's hash was checked when
+  // the log was opened, so the loop is the logged run's.
+  cursor_.playTo(*loop_, log_, due);
   loop_->latest(snapshot_);
 }
 

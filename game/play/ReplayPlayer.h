@@ -2,7 +2,9 @@
 // Plays a replay log (engine/record) through a ServoLoop built from the
 // level, on the caller's thread, as far as the caller asks: the recorded
 // trial again, bit for bit, a frame's worth of ticks at a time. Each logged
-// command is posted before the tick that applied it (ReplayRunner's rule).
+// command is posted before the tick that applied it (record::ReplayCursor).
+// In the play layer: it builds the played device's spec (DeviceFactory),
+// which the headless toolkit may not link.
 // Shared by the replay screen (1x speed) and the ghost that races beside
 // live play (as far as the live trial has got).
 
@@ -14,6 +16,7 @@
 #include "engine/haptics/ReplayDevice.h"
 #include "engine/haptics/ServoLoop.h"
 #include "engine/record/ReplayReader.h"
+#include "engine/record/ReplayRunner.h"
 #include "engine/script/LevelDef.h"
 
 namespace hemiroll::game {
@@ -31,16 +34,16 @@ class ReplayPlayer {
   void playTo(std::uint64_t ticks);
   // The state after the last tick played (the level's start before any).
   const haptics::ServoSnapshot& snapshot() const { return snapshot_; }
-  std::uint64_t ticksPlayed() const { return next_; }
+  std::uint64_t ticksPlayed() const { return cursor_.next(); }
   std::uint64_t ticksTotal() const { return log_.inputs.size(); }
-  bool done() const { return next_ >= log_.inputs.size(); }
+  bool done() const { return cursor_.next() >= log_.inputs.size(); }
   double period() const { return log_.header.dt; }  // [s] per tick
 
  private:
   record::ReplayLog log_;
   std::unique_ptr<haptics::ReplayDevice> device_;
   std::unique_ptr<haptics::ServoLoop> loop_;
-  std::size_t next_ = 0, nextCommand_ = 0;
+  record::ReplayCursor cursor_;
   haptics::ServoSnapshot snapshot_;
 };
 
