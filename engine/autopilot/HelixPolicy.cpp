@@ -89,6 +89,13 @@ Vec2 HelixPolicy::contactTarget() const {
   return {goal_.set[7] ? goal_.target[7] : 0.0, goal_.set[8] ? goal_.target[8] : 0.0};
 }
 
+double HelixPolicy::contactBandError(const physics::ForceDrivenState& x) const {
+  double worst = 0.0;
+  for (const int slot : {physics::force_slot::u_a, physics::force_slot::v_a})
+    if (goal_.set[slot]) worst = std::max(worst, std::abs(x[slot] - goal_.target[slot]) / goal_.tolerance[slot]);
+  return worst;
+}
+
 Vec2 HelixPolicy::landingPoint(const Vec2& upright) const {
   if (!goal_.contactSet()) return upright;
   Vec2 want = contactTarget();
@@ -161,7 +168,14 @@ Vec3 HelixPolicy::proxyFor(const physics::ForceDrivenState& x) {
   if (phase_ == HelixPhase::Settle) {
     const Vec2 land = detour(Vec2(x[u_a], x[v_a]), landingPoint(up.point));
     const Vec2 error = land - Vec2(x[u_a], x[v_a]);
-    settleOffset_ += limited(params_.settleGain * error, params_.glideSpeed) * dt_;
+    // The goal creeps only while the contact is not yet well inside its
+    // band: a proxy that keeps creeping keeps the hemisphere rocking, and in
+    // real time (plans handed over at 500 Hz) that rocking sat at the edge
+    // of the |omega| band for a whole trial (tutorial 02, 2 of 6 runs).
+    // Full gain beyond 0.8 of the band, none within 0.4, linear between, so
+    // that nothing switches.
+    const double creep = goal_.contactSet() ? std::clamp((contactBandError(x) - 0.4) / 0.4, 0.0, 1.0) : 1.0;
+    settleOffset_ += limited(creep * params_.settleGain * error, params_.glideSpeed) * dt_;
     settleOffset_ = limited(settleOffset_, 0.5 * R);
     const Vec3 goal(land.x() + settleOffset_.x(), land.y() + settleOffset_.y(), R);
     Vec3 step = goal - last_;

@@ -42,7 +42,8 @@ struct HelixParams {
   // measured spin, radius despinGain x |w_z| (at most `amplitude`), since
   // circling makes spin in its own sense. A landing candidate after the plain
   // ones; of the shipped levels only the full orientation challenge lands
-  // with it (36.0 s with it, 44.9 s without, measured); taking spin out is
+  // with it (36.0 s with it, 44.9 s without, measured before the settle
+  // integral was gated by the contact's band; 28.4 s with it since); taking spin out is
   // mostly the landing shape's job. 0 turns it off.
   double despinGain = 0.0;     // [m s/rad]
 };
@@ -92,6 +93,9 @@ class HelixPolicy {
 
  private:
   physics::Vec2 contactTarget() const;
+  // The contact's distance from its target in units of its band (the larger
+  // of u_a's and v_a's; 0 when neither is set).
+  double contactBandError(const physics::ForceDrivenState& x) const;
   physics::Vec3 despin(const physics::ForceDrivenState& x);
   physics::Vec2 detour(const physics::Vec2& contact, const physics::Vec2& land);
 

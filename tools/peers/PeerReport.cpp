@@ -242,13 +242,17 @@ std::string targetsTable(const SceneStudy& s, const std::vector<EngineInfo>& eng
 
 // The step each setting needs for a target error: measured when a run reached
 // it, else extrapolated from the order observed between its two finest steps.
-std::string reachCell(const Curve& c, double target) {
+std::string reachCell(const Curve& c, double target, double radius) {
   if (const ScoredRun* r = cheapestWithin(c, target))
     return stepLabel(r->run) + ", " + fmt("%.1e s", r->score.cpuPerSimSecond);
   // Points are ordered by cost: the last two are the finest steps.
-  if (c.points.size() < 2) return "-";
+  if (c.points.size() < 2) return "no: one step ran, the others left the model";
   const ScoredRun* a = c.points[c.points.size() - 2];
   const ScoredRun* b = c.points.back();
+  // An error of a quarter of the radius is no longer one that shrinks with
+  // the step: the run has gone another way, and no order can be read off it.
+  if (b->score.contactError > 0.25 * radius)
+    return "no: at its finest step it has gone another way (" + fmt("%.1e m", b->score.contactError) + ")";
   const double order = std::log(a->score.contactError / b->score.contactError) / std::log(a->run.step / b->run.step);
   if (!(order > 0.3))
     return "no: the error stops falling (order " + fmt("%.1f", order) + " at the finest steps, " +
@@ -256,7 +260,7 @@ std::string reachCell(const Curve& c, double target) {
   const double h = b->run.step * std::pow(target / b->score.contactError, 1.0 / order);
   const double cost = b->score.cpuPerSimSecond * b->run.step / h;
   return "not within " + stepLabel(b->run) + "; order " + fmt("%.1f", order) + " gives h " + fmt("%.1g", h * 1e3) +
-         " ms, about " + fmt("%.0e s", cost);
+         " ms, CPU about " + fmt("%.0e s", cost) + " per simulated s";
 }
 
 std::string reachTable(const Study& study) {
@@ -265,8 +269,8 @@ std::string reachTable(const Study& study) {
   for (const SceneStudy& s : study.scenes)
     for (const Curve& c : curvesOf(s)) {
       if (c.engine == "hemiroll") continue;
-      o << "| " << s.scene.name << " | " << c.engine << " | " << c.setting << " | " << reachCell(c, 1e-3) << " | "
-        << reachCell(c, 1e-5) << " |\n";
+      o << "| " << s.scene.name << " | " << c.engine << " | " << c.setting << " | "
+        << reachCell(c, 1e-3, s.scene.params.radius) << " | " << reachCell(c, 1e-5, s.scene.params.radius) << " |\n";
     }
   return o.str();
 }
