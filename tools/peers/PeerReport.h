@@ -41,6 +41,16 @@ struct Curve {
 };
 std::vector<Curve> curvesOf(const SceneStudy& scene);
 
+// Queries the CSV, the checks and the markdown share.
+std::string fmt(const char* format, double value);  // "-" for a non-finite value
+std::string stepLabel(const RunResult& r);           // "h 1 ms" or "tol 1e-08"
+const ScoredRun* find(const SceneStudy& s, const std::string& engine, const std::string& setting, double step);
+// The engine's setting with the smallest error it reaches on the scene.
+const Curve* bestCurve(const std::vector<Curve>& curves, const std::string& engine);
+// The cheapest run of a curve within `target` of contact-point error.
+const ScoredRun* cheapestWithin(const Curve& c, double target);
+const ScoredRun* mostAccurate(const Curve& c);
+
 // log-log interpolation along a curve; NaN outside its range.
 double errorAtCost(const Curve& c, double cpuPerSimSecond);
 double costAtError(const Curve& c, double contactError);
