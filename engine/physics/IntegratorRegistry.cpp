@@ -4,6 +4,7 @@
 #include "engine/physics/DormandPrince853.h"
 #include "engine/physics/GaussLegendre.h"
 #include "engine/physics/Tsitouras54.h"
+#include "engine/physics/Verner76.h"
 
 namespace hemiroll::physics {
 
@@ -16,6 +17,7 @@ const IntegratorRegistry& IntegratorRegistry::builtin() {
     r.add<GaussLegendre3>("gauss3", "Gauss-Legendre, 3 stages, implicit symmetric, fixed step: bounded energy error");
     r.add<DormandPrince54>("dopri5", "Dormand-Prince 5(4), adaptive (--tol), 4th-order dense output");
     r.add<Tsitouras54>("tsit5", "Tsitouras 5(4) (2011), adaptive (--tol), cubic Hermite dense output");
+    r.add<Verner76>("vern7", "Verner's most efficient 7(6) pair (2010), adaptive (--tol), cubic Hermite dense output");
     r.add<DormandPrince853Double>("dop853", "Dormand-Prince 8(5,3) (HNW's DOP853), adaptive (--tol), 7th-order dense output");
     r.add<DormandPrince853LongDouble>("dop853ld",
                                       "DOP853 with the state kept in long double, for tight-tolerance references");

@@ -34,3 +34,4 @@
 #include "engine/physics/Stepper.h"
 #include "engine/physics/SubsteppingIntegrator.h"
 #include "engine/physics/Tsitouras54.h"
+#include "engine/physics/Verner76.h"

@@ -7,8 +7,8 @@
 // first-same-as-last; its coefficients were chosen for a smaller principal
 // error than DOPRI5's at the same cost. Measured in docs/WORK_PRECISION.md:
 // 1.1-2.2x less CPU time than DOPRI5 at equal error on four of the five
-// scenarios, and 0.5-0.8x on the rose drive below 1e-5 (DOP853 stays the
-// fastest of ours at every error from 1e-4 down). tests/physics/Tsitouras54Test.cpp checks
+// scenarios, and 0.5-0.8x on the rose drive below 1e-5 (DOP853 and
+// Verner76.h are faster still at every error from 1e-4 down). tests/physics/Tsitouras54Test.cpp checks
 // every order condition up to the 5th (the embedded pair's up to the 4th) to
 // the rounding of the typed digits.
 //

@@ -51,6 +51,7 @@ void expectErrorTracksTolerance() {
 TEST(AdaptiveIntegrator, Dopri5ErrorTracksTolerance) { expectErrorTracksTolerance<DormandPrince54<2>>(); }
 TEST(AdaptiveIntegrator, Dop853ErrorTracksTolerance) { expectErrorTracksTolerance<DormandPrince853<2>>(); }
 TEST(AdaptiveIntegrator, Tsit5ErrorTracksTolerance) { expectErrorTracksTolerance<Tsitouras54<2>>(); }
+TEST(AdaptiveIntegrator, Vern7ErrorTracksTolerance) { expectErrorTracksTolerance<Verner76<2>>(); }
 
 // Dense output: with equal steps, the largest interpolation error at the
 // quarter points of every step, against the closed form. The continuous
@@ -94,6 +95,13 @@ TEST(AdaptiveIntegrator, Dopri5DenseOutputIsFifthOrderAccurate) {
 // Tsit5's dense output is a cubic Hermite: local error h^4, order 4.
 TEST(AdaptiveIntegrator, Tsit5DenseOutputIsTheCubicHermitesOrder) {
   const double p = denseOrder<Tsitouras54<2>>(30, 2);
+  EXPECT_GE(p, 3.7);
+  EXPECT_LE(p, 4.6);
+}
+
+// Vern7's too (Verner's own interpolant needs six more stages).
+TEST(AdaptiveIntegrator, Vern7DenseOutputIsTheCubicHermitesOrder) {
+  const double p = denseOrder<Verner76<2>>(30, 2);
   EXPECT_GE(p, 3.7);
   EXPECT_LE(p, 4.6);
 }
