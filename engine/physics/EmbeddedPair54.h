@@ -10,26 +10,26 @@
 // DOPRI5's are, and their terms are then left out, so that its arithmetic is
 // the same operations in the same order as when it was written alone).
 
-#include "engine/physics/AdaptiveIntegrator.h"
+#include "engine/physics/ExplicitPair.h"
 
 namespace hemiroll::physics {
 
 template <int N, class Tableau>
-class EmbeddedPair54 : public AdaptiveIntegrator<N> {
+class EmbeddedPair54 : public ExplicitPair<N> {
  public:
   int order() const override { return 5; }
-  const StateVector<N>& state() const override { return x_; }
 
  protected:
-  int controlOrder() const override { return 5; }
+  using ExplicitPair<N>::x_;
+  using ExplicitPair<N>::xNew_;
+  using ExplicitPair<N>::xPrev_;
+  using ExplicitPair<N>::stage_;
+  using ExplicitPair<N>::k1_;
+  using ExplicitPair<N>::k1Prev_;
+  using ExplicitPair<N>::hTry_;
+  using ExplicitPair<N>::hDone_;
 
-  void restart(const OdeSystem<N>& f, double t0, const StateVector<N>& x0) override {
-    x_ = x0;
-    this->setTime(t0);
-    f.derivative(t0, x_, k1_);
-    this->countEvaluations(1);
-    hDone_ = 0.0;
-  }
+  int controlOrder() const override { return 5; }
 
   double attempt(const OdeSystem<N>& f, double h) override {
     using T = Tableau;
@@ -69,11 +69,9 @@ class EmbeddedPair54 : public AdaptiveIntegrator<N> {
     this->setTime(this->time() + hTry_);
   }
 
-  // For the derived class's dense output: the accepted step's ends, its
-  // stages (k1Prev_ the first, k1_ = the last) and its length.
-  StateVector<N> x_, xNew_, xPrev_, stage_;
-  StateVector<N> k1_, k2_, k3_, k4_, k5_, k6_, k7_, k1Prev_;
-  double hTry_ = 0.0, hDone_ = 0.0;
+  // For the derived class's dense output, besides ExplicitPair's: the
+  // accepted step's inner stages.
+  StateVector<N> k2_, k3_, k4_, k5_, k6_, k7_;
 };
 
 }  // namespace hemiroll::physics

@@ -45,13 +45,7 @@ class Tsitouras54 final : public EmbeddedPair54<N, Tsit5Tableau> {
  public:
   std::string_view name() const override { return "tsit5"; }
 
-  // Cubic Hermite on [t0, t0 + h]: the step's ends and their derivatives.
-  void interpolate(double t, StateVector<N>& x) override {
-    const double h = this->hDone_;
-    const double s = (t - this->stepBegin()) / h, s2 = s * s, s3 = s2 * s;
-    x = (2 * s3 - 3 * s2 + 1) * this->xPrev_ + (s3 - 2 * s2 + s) * h * this->k1Prev_ + (-2 * s3 + 3 * s2) * this->x_ +
-        (s3 - s2) * h * this->k1_;
-  }
+  void interpolate(double t, StateVector<N>& x) override { this->hermite(t, x); }
 };
 
 }  // namespace hemiroll::physics

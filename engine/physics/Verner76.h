@@ -18,7 +18,7 @@
 // Dense output: the cubic Hermite interpolant of Tsitouras54.h (third order
 // between the steps, exact at their ends), not Verner's 16-stage interpolant.
 
-#include "engine/physics/AdaptiveIntegrator.h"
+#include "engine/physics/ExplicitPair.h"
 
 namespace hemiroll::physics {
 
@@ -55,30 +55,23 @@ struct Vern7Tableau {
 };
 
 template <int N>
-class Verner76 final : public AdaptiveIntegrator<N> {
+class Verner76 final : public ExplicitPair<N> {
  public:
   std::string_view name() const override { return "vern7"; }
   int order() const override { return 7; }
-  const StateVector<N>& state() const override { return x_; }
-
-  // Cubic Hermite on [t0, t0 + h]: the step's ends and their derivatives.
-  void interpolate(double t, StateVector<N>& x) override {
-    const double h = hDone_;
-    const double s = (t - this->stepBegin()) / h, s2 = s * s, s3 = s2 * s;
-    x = (2 * s3 - 3 * s2 + 1) * xPrev_ + (s3 - 2 * s2 + s) * h * k1Prev_ + (-2 * s3 + 3 * s2) * x_ +
-        (s3 - s2) * h * k1_;
-  }
+  void interpolate(double t, StateVector<N>& x) override { this->hermite(t, x); }
 
  protected:
-  int controlOrder() const override { return 7; }
+  using ExplicitPair<N>::x_;
+  using ExplicitPair<N>::xNew_;
+  using ExplicitPair<N>::xPrev_;
+  using ExplicitPair<N>::stage_;
+  using ExplicitPair<N>::k1_;
+  using ExplicitPair<N>::k1Prev_;
+  using ExplicitPair<N>::hTry_;
+  using ExplicitPair<N>::hDone_;
 
-  void restart(const OdeSystem<N>& f, double t0, const StateVector<N>& x0) override {
-    x_ = x0;
-    this->setTime(t0);
-    f.derivative(t0, x_, k1_);
-    this->countEvaluations(1);
-    hDone_ = 0.0;
-  }
+  int controlOrder() const override { return 7; }
 
   double attempt(const OdeSystem<N>& f, double h) override {
     using T = Vern7Tableau;
@@ -125,9 +118,7 @@ class Verner76 final : public AdaptiveIntegrator<N> {
   }
 
  private:
-  StateVector<N> x_, xNew_, xPrev_, stage_;
-  StateVector<N> k1_, k2_, k3_, k4_, k5_, k6_, k7_, k8_, k9_, k10_, k1Prev_;
-  double hTry_ = 0.0, hDone_ = 0.0;
+  StateVector<N> k2_, k3_, k4_, k5_, k6_, k7_, k8_, k9_, k10_;
 };
 
 }  // namespace hemiroll::physics
