@@ -17,10 +17,11 @@ plot 'docs/work-precision/work_precision.csv' using (strcol(1) eq 'free' && strc
   'docs/work-precision/work_precision.csv' using (strcol(1) eq 'free' && strcol(2) eq 'dopri5' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 pt 7 lc 4 title 'dopri5', \
   'docs/work-precision/work_precision.csv' using (strcol(1) eq 'free' && strcol(2) eq 'tsit5' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 pt 7 lc 5 title 'tsit5', \
   'docs/work-precision/work_precision.csv' using (strcol(1) eq 'free' && strcol(2) eq 'vern7' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 pt 7 lc 6 title 'vern7', \
-  'docs/work-precision/work_precision.csv' using (strcol(1) eq 'free' && strcol(2) eq 'dop853' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 pt 7 lc 7 title 'dop853', \
-  'docs/work-precision/work_precision.csv' using (strcol(1) eq 'free' && strcol(2) eq 'cvode-adams' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 dt 2 pt 6 lc 8 title 'cvode-adams', \
-  'docs/work-precision/work_precision.csv' using (strcol(1) eq 'free' && strcol(2) eq 'odeint-dopri5' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 dt 2 pt 6 lc 9 title 'odeint-dopri5', \
-  'docs/work-precision/work_precision.csv' using (strcol(1) eq 'free' && strcol(2) eq 'odeint-rkf78' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 dt 2 pt 6 lc 10 title 'odeint-rkf78'
+  'docs/work-precision/work_precision.csv' using (strcol(1) eq 'free' && strcol(2) eq 'vern9' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 pt 7 lc 7 title 'vern9', \
+  'docs/work-precision/work_precision.csv' using (strcol(1) eq 'free' && strcol(2) eq 'dop853' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 pt 7 lc 8 title 'dop853', \
+  'docs/work-precision/work_precision.csv' using (strcol(1) eq 'free' && strcol(2) eq 'cvode-adams' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 dt 2 pt 6 lc 9 title 'cvode-adams', \
+  'docs/work-precision/work_precision.csv' using (strcol(1) eq 'free' && strcol(2) eq 'odeint-dopri5' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 dt 2 pt 6 lc 10 title 'odeint-dopri5', \
+  'docs/work-precision/work_precision.csv' using (strcol(1) eq 'free' && strcol(2) eq 'odeint-rkf78' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 dt 2 pt 6 lc 11 title 'odeint-rkf78'
 set title 'tether'
 plot 'docs/work-precision/work_precision.csv' using (strcol(1) eq 'tether' && strcol(2) eq 'rk4' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 pt 7 lc 1 title 'rk4', \
   'docs/work-precision/work_precision.csv' using (strcol(1) eq 'tether' && strcol(2) eq 'gauss2' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 pt 7 lc 2 title 'gauss2', \
@@ -28,10 +29,11 @@ plot 'docs/work-precision/work_precision.csv' using (strcol(1) eq 'tether' && st
   'docs/work-precision/work_precision.csv' using (strcol(1) eq 'tether' && strcol(2) eq 'dopri5' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 pt 7 lc 4 title 'dopri5', \
   'docs/work-precision/work_precision.csv' using (strcol(1) eq 'tether' && strcol(2) eq 'tsit5' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 pt 7 lc 5 title 'tsit5', \
   'docs/work-precision/work_precision.csv' using (strcol(1) eq 'tether' && strcol(2) eq 'vern7' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 pt 7 lc 6 title 'vern7', \
-  'docs/work-precision/work_precision.csv' using (strcol(1) eq 'tether' && strcol(2) eq 'dop853' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 pt 7 lc 7 title 'dop853', \
-  'docs/work-precision/work_precision.csv' using (strcol(1) eq 'tether' && strcol(2) eq 'cvode-adams' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 dt 2 pt 6 lc 8 title 'cvode-adams', \
-  'docs/work-precision/work_precision.csv' using (strcol(1) eq 'tether' && strcol(2) eq 'odeint-dopri5' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 dt 2 pt 6 lc 9 title 'odeint-dopri5', \
-  'docs/work-precision/work_precision.csv' using (strcol(1) eq 'tether' && strcol(2) eq 'odeint-rkf78' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 dt 2 pt 6 lc 10 title 'odeint-rkf78'
+  'docs/work-precision/work_precision.csv' using (strcol(1) eq 'tether' && strcol(2) eq 'vern9' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 pt 7 lc 7 title 'vern9', \
+  'docs/work-precision/work_precision.csv' using (strcol(1) eq 'tether' && strcol(2) eq 'dop853' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 pt 7 lc 8 title 'dop853', \
+  'docs/work-precision/work_precision.csv' using (strcol(1) eq 'tether' && strcol(2) eq 'cvode-adams' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 dt 2 pt 6 lc 9 title 'cvode-adams', \
+  'docs/work-precision/work_precision.csv' using (strcol(1) eq 'tether' && strcol(2) eq 'odeint-dopri5' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 dt 2 pt 6 lc 10 title 'odeint-dopri5', \
+  'docs/work-precision/work_precision.csv' using (strcol(1) eq 'tether' && strcol(2) eq 'odeint-rkf78' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 dt 2 pt 6 lc 11 title 'odeint-rkf78'
 set title 'm3moving'
 plot 'docs/work-precision/work_precision.csv' using (strcol(1) eq 'm3moving' && strcol(2) eq 'rk4' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 pt 7 lc 1 title 'rk4', \
   'docs/work-precision/work_precision.csv' using (strcol(1) eq 'm3moving' && strcol(2) eq 'gauss2' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 pt 7 lc 2 title 'gauss2', \
@@ -39,10 +41,11 @@ plot 'docs/work-precision/work_precision.csv' using (strcol(1) eq 'm3moving' && 
   'docs/work-precision/work_precision.csv' using (strcol(1) eq 'm3moving' && strcol(2) eq 'dopri5' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 pt 7 lc 4 title 'dopri5', \
   'docs/work-precision/work_precision.csv' using (strcol(1) eq 'm3moving' && strcol(2) eq 'tsit5' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 pt 7 lc 5 title 'tsit5', \
   'docs/work-precision/work_precision.csv' using (strcol(1) eq 'm3moving' && strcol(2) eq 'vern7' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 pt 7 lc 6 title 'vern7', \
-  'docs/work-precision/work_precision.csv' using (strcol(1) eq 'm3moving' && strcol(2) eq 'dop853' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 pt 7 lc 7 title 'dop853', \
-  'docs/work-precision/work_precision.csv' using (strcol(1) eq 'm3moving' && strcol(2) eq 'cvode-adams' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 dt 2 pt 6 lc 8 title 'cvode-adams', \
-  'docs/work-precision/work_precision.csv' using (strcol(1) eq 'm3moving' && strcol(2) eq 'odeint-dopri5' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 dt 2 pt 6 lc 9 title 'odeint-dopri5', \
-  'docs/work-precision/work_precision.csv' using (strcol(1) eq 'm3moving' && strcol(2) eq 'odeint-rkf78' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 dt 2 pt 6 lc 10 title 'odeint-rkf78'
+  'docs/work-precision/work_precision.csv' using (strcol(1) eq 'm3moving' && strcol(2) eq 'vern9' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 pt 7 lc 7 title 'vern9', \
+  'docs/work-precision/work_precision.csv' using (strcol(1) eq 'm3moving' && strcol(2) eq 'dop853' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 pt 7 lc 8 title 'dop853', \
+  'docs/work-precision/work_precision.csv' using (strcol(1) eq 'm3moving' && strcol(2) eq 'cvode-adams' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 dt 2 pt 6 lc 9 title 'cvode-adams', \
+  'docs/work-precision/work_precision.csv' using (strcol(1) eq 'm3moving' && strcol(2) eq 'odeint-dopri5' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 dt 2 pt 6 lc 10 title 'odeint-dopri5', \
+  'docs/work-precision/work_precision.csv' using (strcol(1) eq 'm3moving' && strcol(2) eq 'odeint-rkf78' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 dt 2 pt 6 lc 11 title 'odeint-rkf78'
 set title 'rose'
 plot 'docs/work-precision/work_precision.csv' using (strcol(1) eq 'rose' && strcol(2) eq 'rk4' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 pt 7 lc 1 title 'rk4', \
   'docs/work-precision/work_precision.csv' using (strcol(1) eq 'rose' && strcol(2) eq 'gauss2' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 pt 7 lc 2 title 'gauss2', \
@@ -50,10 +53,11 @@ plot 'docs/work-precision/work_precision.csv' using (strcol(1) eq 'rose' && strc
   'docs/work-precision/work_precision.csv' using (strcol(1) eq 'rose' && strcol(2) eq 'dopri5' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 pt 7 lc 4 title 'dopri5', \
   'docs/work-precision/work_precision.csv' using (strcol(1) eq 'rose' && strcol(2) eq 'tsit5' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 pt 7 lc 5 title 'tsit5', \
   'docs/work-precision/work_precision.csv' using (strcol(1) eq 'rose' && strcol(2) eq 'vern7' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 pt 7 lc 6 title 'vern7', \
-  'docs/work-precision/work_precision.csv' using (strcol(1) eq 'rose' && strcol(2) eq 'dop853' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 pt 7 lc 7 title 'dop853', \
-  'docs/work-precision/work_precision.csv' using (strcol(1) eq 'rose' && strcol(2) eq 'cvode-adams' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 dt 2 pt 6 lc 8 title 'cvode-adams', \
-  'docs/work-precision/work_precision.csv' using (strcol(1) eq 'rose' && strcol(2) eq 'odeint-dopri5' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 dt 2 pt 6 lc 9 title 'odeint-dopri5', \
-  'docs/work-precision/work_precision.csv' using (strcol(1) eq 'rose' && strcol(2) eq 'odeint-rkf78' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 dt 2 pt 6 lc 10 title 'odeint-rkf78'
+  'docs/work-precision/work_precision.csv' using (strcol(1) eq 'rose' && strcol(2) eq 'vern9' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 pt 7 lc 7 title 'vern9', \
+  'docs/work-precision/work_precision.csv' using (strcol(1) eq 'rose' && strcol(2) eq 'dop853' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 pt 7 lc 8 title 'dop853', \
+  'docs/work-precision/work_precision.csv' using (strcol(1) eq 'rose' && strcol(2) eq 'cvode-adams' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 dt 2 pt 6 lc 9 title 'cvode-adams', \
+  'docs/work-precision/work_precision.csv' using (strcol(1) eq 'rose' && strcol(2) eq 'odeint-dopri5' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 dt 2 pt 6 lc 10 title 'odeint-dopri5', \
+  'docs/work-precision/work_precision.csv' using (strcol(1) eq 'rose' && strcol(2) eq 'odeint-rkf78' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 dt 2 pt 6 lc 11 title 'odeint-rkf78'
 set title 'roseheavy'
 plot 'docs/work-precision/work_precision.csv' using (strcol(1) eq 'roseheavy' && strcol(2) eq 'rk4' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 pt 7 lc 1 title 'rk4', \
   'docs/work-precision/work_precision.csv' using (strcol(1) eq 'roseheavy' && strcol(2) eq 'gauss2' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 pt 7 lc 2 title 'gauss2', \
@@ -61,8 +65,9 @@ plot 'docs/work-precision/work_precision.csv' using (strcol(1) eq 'roseheavy' &&
   'docs/work-precision/work_precision.csv' using (strcol(1) eq 'roseheavy' && strcol(2) eq 'dopri5' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 pt 7 lc 4 title 'dopri5', \
   'docs/work-precision/work_precision.csv' using (strcol(1) eq 'roseheavy' && strcol(2) eq 'tsit5' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 pt 7 lc 5 title 'tsit5', \
   'docs/work-precision/work_precision.csv' using (strcol(1) eq 'roseheavy' && strcol(2) eq 'vern7' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 pt 7 lc 6 title 'vern7', \
-  'docs/work-precision/work_precision.csv' using (strcol(1) eq 'roseheavy' && strcol(2) eq 'dop853' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 pt 7 lc 7 title 'dop853', \
-  'docs/work-precision/work_precision.csv' using (strcol(1) eq 'roseheavy' && strcol(2) eq 'cvode-adams' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 dt 2 pt 6 lc 8 title 'cvode-adams', \
-  'docs/work-precision/work_precision.csv' using (strcol(1) eq 'roseheavy' && strcol(2) eq 'odeint-dopri5' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 dt 2 pt 6 lc 9 title 'odeint-dopri5', \
-  'docs/work-precision/work_precision.csv' using (strcol(1) eq 'roseheavy' && strcol(2) eq 'odeint-rkf78' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 dt 2 pt 6 lc 10 title 'odeint-rkf78'
+  'docs/work-precision/work_precision.csv' using (strcol(1) eq 'roseheavy' && strcol(2) eq 'vern9' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 pt 7 lc 7 title 'vern9', \
+  'docs/work-precision/work_precision.csv' using (strcol(1) eq 'roseheavy' && strcol(2) eq 'dop853' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 pt 7 lc 8 title 'dop853', \
+  'docs/work-precision/work_precision.csv' using (strcol(1) eq 'roseheavy' && strcol(2) eq 'cvode-adams' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 dt 2 pt 6 lc 9 title 'cvode-adams', \
+  'docs/work-precision/work_precision.csv' using (strcol(1) eq 'roseheavy' && strcol(2) eq 'odeint-dopri5' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 dt 2 pt 6 lc 10 title 'odeint-dopri5', \
+  'docs/work-precision/work_precision.csv' using (strcol(1) eq 'roseheavy' && strcol(2) eq 'odeint-rkf78' && $9 == 1 ? $6 : NaN):7 with linespoints lw 2 dt 2 pt 6 lc 11 title 'odeint-rkf78'
 unset multiplot

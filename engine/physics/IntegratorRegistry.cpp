@@ -5,6 +5,7 @@
 #include "engine/physics/GaussLegendre.h"
 #include "engine/physics/Tsitouras54.h"
 #include "engine/physics/Verner76.h"
+#include "engine/physics/Verner98.h"
 
 namespace hemiroll::physics {
 
@@ -18,6 +19,7 @@ const IntegratorRegistry& IntegratorRegistry::builtin() {
     r.add<DormandPrince54>("dopri5", "Dormand-Prince 5(4), adaptive (--tol), 4th-order dense output");
     r.add<Tsitouras54>("tsit5", "Tsitouras 5(4) (2011), adaptive (--tol), cubic Hermite dense output");
     r.add<Verner76>("vern7", "Verner's most efficient 7(6) pair (2010), adaptive (--tol), cubic Hermite dense output");
+    r.add<Verner98>("vern9", "Verner's most efficient 9(8) pair (2010), adaptive (--tol), cubic Hermite dense output");
     r.add<DormandPrince853Double>("dop853", "Dormand-Prince 8(5,3) (HNW's DOP853), adaptive (--tol), 7th-order dense output");
     r.add<DormandPrince853LongDouble>("dop853ld",
                                       "DOP853 with the state kept in long double, for tight-tolerance references");

@@ -35,3 +35,4 @@
 #include "engine/physics/SubsteppingIntegrator.h"
 #include "engine/physics/Tsitouras54.h"
 #include "engine/physics/Verner76.h"
+#include "engine/physics/Verner98.h"

@@ -11,9 +11,8 @@
 // weights against the 37 up to the 6th).
 //
 // Measured in docs/WORK_PRECISION.md: the fastest of ours on the heavy rose
-// from 1e-4 to 1e-9, on free motion at 1e-4 and 1e-5 and on the rose at
-// 1e-8, DOP853 elsewhere; the smallest margin of our best
-// over a peer rose from 1.01x to 1.04x (odeint's RKF78 on the rose at 1e-8).
+// from 1e-4 to 1e-9 and on free motion at 1e-4 and 1e-5; Verner98.h at the
+// tightest errors, DOP853 elsewhere.
 //
 // Dense output: the cubic Hermite interpolant of Tsitouras54.h (third order
 // between the steps, exact at their ends), not Verner's 16-stage interpolant.

@@ -99,9 +99,15 @@ TEST(AdaptiveIntegrator, Tsit5DenseOutputIsTheCubicHermitesOrder) {
   EXPECT_LE(p, 4.6);
 }
 
-// Vern7's too (Verner's own interpolant needs six more stages).
+// Vern7's and Vern9's too (Verner's own interpolants need more stages).
 TEST(AdaptiveIntegrator, Vern7DenseOutputIsTheCubicHermitesOrder) {
   const double p = denseOrder<Verner76<2>>(30, 2);
+  EXPECT_GE(p, 3.7);
+  EXPECT_LE(p, 4.6);
+}
+
+TEST(AdaptiveIntegrator, Vern9DenseOutputIsTheCubicHermitesOrder) {
+  const double p = denseOrder<Verner98<2>>(30, 2);
   EXPECT_GE(p, 3.7);
   EXPECT_LE(p, 4.6);
 }

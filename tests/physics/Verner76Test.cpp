@@ -1,7 +1,8 @@
 // engine/physics/Verner76: the tableau as typed against every Runge-Kutta
 // order condition up to the 7th (85 rooted trees; the embedded weights
-// against the 37 up to the 6th), generated here from the trees themselves
-// rather than listed, then the pair against DOP853 on a known solution.
+// against the 37 up to the 6th), generated from the trees themselves
+// (support/OrderConditions.h) rather than listed, then the pair on a known
+// solution beside DOP853.
 
 #include "engine/physics/Verner76.h"
 
@@ -12,24 +13,18 @@
 #include <cstdio>
 #include <vector>
 
-#include "engine/physics/DormandPrince853.h"
-#include "tests/physics/support/KnownSolution.h"
+#include "tests/physics/support/BesideDop853.h"
+#include "tests/physics/support/OrderConditions.h"
 
 namespace hemiroll::test {
 namespace {
 
 using namespace physics;
 constexpr int S = 10;
-using Vec = std::array<double, S>;
 
-struct Tableau {
-  std::array<Vec, S> a{};
-  Vec b{}, bHat{}, c{};
-};
-
-Tableau tableau() {
+ButcherTableau<S> tableau() {
   using T = Vern7Tableau;
-  Tableau t;
+  ButcherTableau<S> t;
   t.c = {0.0, T::c2, T::c3, T::c4, T::c5, T::c6, T::c7, T::c8, 1.0, 1.0};
   t.a[1] = {T::a21};
   t.a[2] = {T::a31, T::a32};
@@ -45,77 +40,11 @@ Tableau tableau() {
   return t;
 }
 
-// A rooted tree by what the conditions need: its order, its density gamma
-// and its elementary weights Phi_i (the product over the root's subtrees u of
-// (A Phi(u))_i; all ones for the single node). b . Phi = 1 / gamma.
-struct Tree {
-  int order = 1;
-  double gamma = 1.0;
-  Vec phi{};
-};
-
-// Every rooted tree up to `maxOrder`, each once: a tree is its root's
-// multiset of subtrees, built as a non-increasing list of indices into the
-// trees already made, so that no two lists name the same tree.
-std::vector<Tree> treesUpTo(const Tableau& t, int maxOrder) {
-  std::vector<Tree> trees;
-  Tree node;
-  node.phi.fill(1.0);
-  trees.push_back(node);
-  std::vector<Vec> aPhi;  // A Phi(u) of each tree u made so far
-  const auto times = [&](const Vec& phi) {
-    Vec out{};
-    for (int i = 0; i < S; ++i)
-      for (int j = 0; j < S; ++j) out[i] += t.a[i][j] * phi[j];
-    return out;
-  };
-  aPhi.push_back(times(node.phi));
-  for (int order = 2; order <= maxOrder; ++order) {
-    const std::size_t known = trees.size();  // subtrees have order < `order`
-    std::vector<Tree> made;
-    // children: non-increasing indices into trees[0, known); their orders sum to order - 1.
-    std::vector<std::size_t> children;
-    const auto extend = [&](auto&& self, std::size_t maxIndex, int remaining) -> void {
-      if (remaining == 0) {
-        Tree tree;
-        tree.order = order;
-        tree.phi.fill(1.0);
-        double gamma = order;
-        for (const std::size_t c : children) {
-          gamma *= trees[c].gamma;
-          for (int i = 0; i < S; ++i) tree.phi[i] *= aPhi[c][i];
-        }
-        tree.gamma = gamma;
-        made.push_back(tree);
-        return;
-      }
-      for (std::size_t c = 0; c <= maxIndex && c < known; ++c) {
-        if (trees[c].order > remaining) continue;
-        children.push_back(c);
-        self(self, c, remaining - trees[c].order);
-        children.pop_back();
-      }
-    };
-    extend(extend, known - 1, order - 1);
-    for (const Tree& tree : made) {
-      trees.push_back(tree);
-      aPhi.push_back(times(tree.phi));
-    }
-  }
-  return trees;
-}
-
-double residual(const Vec& b, const Tree& tree) {
-  double s = 0.0;
-  for (int i = 0; i < S; ++i) s += b[i] * tree.phi[i];
-  return s - 1.0 / tree.gamma;
-}
-
 TEST(Verner76, TheTreesAreTheRightCount) {
   // 1, 1, 2, 4, 9, 20, 48 rooted trees of orders 1..7 (OEIS A000081).
-  const std::vector<Tree> trees = treesUpTo(tableau(), 7);
+  const auto trees = treesUpTo(tableau(), 7);
   int count[8] = {};
-  for (const Tree& t : trees) ++count[t.order];
+  for (const auto& t : trees) ++count[t.order];
   EXPECT_EQ(count[1], 1);
   EXPECT_EQ(count[4], 4);
   EXPECT_EQ(count[5], 9);
@@ -125,7 +54,7 @@ TEST(Verner76, TheTreesAreTheRightCount) {
 }
 
 TEST(Verner76, TheTypedTableauMeetsEveryOrderCondition) {
-  const Tableau t = tableau();
+  const ButcherTableau<S> t = tableau();
   // 17 significant digits of coefficients up to 187 in size: the conditions
   // hold to a few units in the last place of the largest products.
   constexpr double kTypedDigits = 1e-13;
@@ -134,12 +63,9 @@ TEST(Verner76, TheTypedTableauMeetsEveryOrderCondition) {
     for (int j = 0; j < i; ++j) row += t.a[i][j];
     EXPECT_NEAR(row, t.c[i], kTypedDigits) << "row " << i << " sums to c";
   }
-  double worstB = 0.0, worstBHat = 0.0, worstBHatSeventh = 0.0;
-  for (const Tree& tree : treesUpTo(t, 7)) {
-    worstB = std::max(worstB, std::abs(residual(t.b, tree)));
-    if (tree.order <= 6) worstBHat = std::max(worstBHat, std::abs(residual(t.bHat, tree)));
-    else worstBHatSeventh = std::max(worstBHatSeventh, std::abs(residual(t.bHat, tree)));
-  }
+  const auto trees = treesUpTo(t, 7);
+  const double worstB = worstResidual(trees, t.b, 1, 7), worstBHat = worstResidual(trees, t.bHat, 1, 6),
+               worstBHatSeventh = worstResidual(trees, t.bHat, 7, 7);
   std::printf("[measured] worst residual: b to order 7 %.1e, b_hat to order 6 %.1e, b_hat at order 7 %.1e\n", worstB,
               worstBHat, worstBHatSeventh);
   EXPECT_LT(worstB, kTypedDigits);
@@ -151,30 +77,7 @@ TEST(Verner76, TheTypedTableauMeetsEveryOrderCondition) {
 // evaluations than DOP853 for the same accuracy only sometimes; what is
 // checked is that it converges with the tolerance and that the tolerance
 // bounds its error.
-TEST(Verner76, ItsErrorFollowsTheTolerance) {
-  const KnownSolutionSystem f;
-  const double T = 3.0;
-  double previous = 1.0;
-  for (double tol = 1e-4; tol >= 1e-12; tol *= 0.01) {
-    Verner76<2> m;
-    m.setTolerance(tol);
-    double t = 0.0;
-    StateVector<2> x = KnownSolutionSystem::exact(0.0);
-    ASSERT_TRUE(m.advanceTo(f, t, x, T));
-    const double e = (x - KnownSolutionSystem::exact(T)).cwiseAbs().maxCoeff();
-    DormandPrince853<2> d;
-    d.setTolerance(tol);
-    double td = 0.0;
-    StateVector<2> xd = KnownSolutionSystem::exact(0.0);
-    ASSERT_TRUE(d.advanceTo(f, td, xd, T));
-    std::printf("[measured] tol %.0e: vern7 error %.2e in %lld evaluations, dop853 %.2e in %lld\n", tol, e,
-                m.statistics().evaluations, (xd - KnownSolutionSystem::exact(T)).cwiseAbs().maxCoeff(),
-                d.statistics().evaluations);
-    EXPECT_LT(e, 100.0 * tol);
-    EXPECT_LT(e, previous);
-    previous = e;
-  }
-}
+TEST(Verner76, ItsErrorFollowsTheTolerance) { expectErrorFollowsToleranceBesideDop853<Verner76<2>>(); }
 
 }  // namespace
 }  // namespace hemiroll::test

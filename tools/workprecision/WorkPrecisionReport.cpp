@@ -128,7 +128,7 @@ void writeMarkdown(const std::string& path, const std::vector<WorkPoint>& points
                "with error below 10x that disagreement are marked unreliable and left out. CPU time: thread CPU time, median of repeated runs (at least 3, more for "
                "short runs); the adaptive methods, ours and the peers', timed interleaved (at each tol all six in "
                "turn) in three passes over the sweep, the median of the passes taken, so that load from other "
-               "work on the machine falls on all curves alike. Ours: rk4, gauss2, gauss3 (fixed step h), dopri5, tsit5 (Tsitouras 2011), vern7 (Verner 2010), dop853 (tolerance sweep "
+               "work on the machine falls on all curves alike. Ours: rk4, gauss2, gauss3 (fixed step h), dopri5, tsit5 (Tsitouras 2011), vern7 and vern9 (Verner 2010), dop853 (tolerance sweep "
                "1, 2, 5 per decade from 1e-3 to 1e-14, atol = rtol = tol, to the end state only: no dense output is "
                "asked for, so DOP853's three dense-output stages are never computed). Peers, on the same tolerance "
                "grid: SUNDIALS CVODE 6.4.1 (Adams, functional iteration, CVodeSStolerances(tol, tol), stop time T, "

@@ -23,6 +23,7 @@
 #include "engine/physics/DormandPrince853.h"
 #include "engine/physics/Tsitouras54.h"
 #include "engine/physics/Verner76.h"
+#include "engine/physics/Verner98.h"
 #include "engine/physics/GaussLegendre.h"
 #include "tools/workprecision/PeerSolvers.h"
 #include "tools/workprecision/WorkPrecisionReport.h"
@@ -162,13 +163,14 @@ void study(const Settings& settings, const Scenario<N>& s, std::vector<WorkPoint
     std::vector<double> seconds;
   };
   const std::vector<std::pair<std::string, bool>> adaptive = {
-      {"dopri5", true}, {"tsit5", true}, {"vern7", true}, {"dop853", true}, {peerName(Peer::CvodeAdams), false},
+      {"dopri5", true}, {"tsit5", true}, {"vern7", true}, {"vern9", true}, {"dop853", true}, {peerName(Peer::CvodeAdams), false},
       {peerName(Peer::OdeintDopri5), false}, {peerName(Peer::OdeintFehlberg78), false}};
   std::vector<Job> jobs;
   for (double tol : tols) {
     jobs.push_back({"dopri5", true, tol, [&s, tol] { return runAdaptive<N, DormandPrince54<N>>(s, tol); }, {}, {}});
     jobs.push_back({"tsit5", true, tol, [&s, tol] { return runAdaptive<N, Tsitouras54<N>>(s, tol); }, {}, {}});
     jobs.push_back({"vern7", true, tol, [&s, tol] { return runAdaptive<N, Verner76<N>>(s, tol); }, {}, {}});
+    jobs.push_back({"vern9", true, tol, [&s, tol] { return runAdaptive<N, Verner98<N>>(s, tol); }, {}, {}});
     jobs.push_back({"dop853", true, tol, [&s, tol] { return runAdaptive<N, DormandPrince853<N>>(s, tol); }, {}, {}});
     for (Peer peer : {Peer::CvodeAdams, Peer::OdeintDopri5, Peer::OdeintFehlberg78})
       jobs.push_back({peerName(peer), false, tol,
