@@ -66,7 +66,7 @@ class BulletWorld final : public PeerWorld {
     shellShape_.addChildShape(btTransform(btMatrix3x3::getIdentity(), btVector3(0, 0, 3.0 * p.radius / 8.0)),
                               &sphere_);
     const Vec3 I = shellPrincipalInertia(p);
-    const double rider = riderInertia(p);
+    const double rider = riderInertia(p);  // the point's
     btRigidBody::btRigidBodyConstructionInfo shellInfo(p.shellMass, nullptr, &shellShape_,
                                                        btVector3(I.x() - rider, I.y() - rider, I.z() - rider));
     shellInfo.m_friction = s.friction;

@@ -96,9 +96,7 @@ std::string modelXml(const PeerScene& scene, const Setting& s, double timestep) 
   x.precision(17);
   const std::string contact = " condim=\"3\" friction=\"" + std::to_string(s.friction) + " 0 0\" solref=\"" +
                               s.solref + "\" solimp=\"" + s.solimp + "\"";
-  // The point's own rotational inertia rides with the shell (its joints only
-  // slide); it is taken off the shell's so that the total is exact.
-  const double pointInertia = 1e-12;
+  const double pointInertia = riderInertia(p);
   x << "<mujoco model=\"hemiroll_peer\">\n"
     << "<compiler angle=\"radian\" inertiafromgeom=\"false\"/>\n"
     << "<option timestep=\"" << timestep << "\" gravity=\"0 0 " << -p.gravity << "\" integrator=\""

@@ -47,14 +47,12 @@ Setting settingNamed(const std::string& name) {
 
 // ODE's error and debug handlers abort the process by default; the study
 // turns them into a failed run instead (ODE is C++ inside, built with
-// exceptions). Its LCP warnings ("s <= 0") are muted: the run's measured
-// error shows what they cost.
+// exceptions).
 [[noreturn]] void throwOdeError(int code, const char* message, va_list args) {
   char text[256];
   std::vsnprintf(text, sizeof text, message, args);
   throw std::runtime_error("ODE error " + std::to_string(code) + ": " + text);
 }
-void ignoreOdeMessage(int, const char*, va_list) {}
 
 void initialiseOdeOnce() {
   static std::once_flag once;
@@ -62,7 +60,6 @@ void initialiseOdeOnce() {
     dInitODE2(0);
     dSetErrorHandler(throwOdeError);
     dSetDebugHandler(throwOdeError);
-    dSetMessageHandler(ignoreOdeMessage);
   });
 }
 

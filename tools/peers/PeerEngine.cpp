@@ -88,38 +88,36 @@ RunResult runPeer(const PeerEngine& engine, const PeerScene& scene, const std::s
   const int intervals = static_cast<int>(std::lround(scene.horizon / kSampleInterval));
   const long perSample = std::lround(kSampleInterval / timestep);
   r.samples.reserve(intervals + 1);
-  r.samples.push_back(sampleOf(scene, world->pose(), 0.0));
+  Pose pose = world->pose();  // read once per step, for the drive and the check
+  r.samples.push_back(sampleOf(scene, pose, 0.0));
   PrescribedHand hand(scene, timestep);
   const double t0 = cpuNow();
   long k = 0;
-  const char* outside = nullptr;
-  for (int i = 1; i <= intervals && !outside; ++i) {
-    for (long j = 0; j < perSample && !outside; ++j, ++k) {
+  for (int i = 1; i <= intervals && r.failure.empty(); ++i) {
+    for (long j = 0; j < perSample; ++j, ++k) {
       // The same right-hand conditions for every engine: the drive is read
       // off the bodies at the start of the step and held over it.
-      const double t = static_cast<double>(k) * timestep;
       if (scene.drive == PointDrive::Tether && !world->ownsTether()) {
-        world->setPointForce(scene.tetherStiffness * (scene.proxy - world->pose().point));
+        world->setPointForce(scene.tetherStiffness * (scene.proxy - pose.point));
       } else if (scene.drive == PointDrive::Prescribed) {
-        world->setPointForce(hand.force(world->pose(), t));
+        world->setPointForce(hand.force(pose, static_cast<double>(k) * timestep));
       }
-      std::string engineError;
       try {
         world->step();
-        outside = outsideModel(scene, world->pose());
+        pose = world->pose();
+        if (const char* why = outsideModel(scene, pose)) r.failure = why;
       } catch (const std::exception& e) {  // an engine's fatal error, turned into an exception
-        engineError = e.what();
-        outside = engineError.c_str();
+        r.failure = e.what();
       }
-      if (outside) {
+      if (!r.failure.empty()) {
         char when[64];
         std::snprintf(when, sizeof when, " at t = %.4f s", static_cast<double>(k + 1) * timestep);
-        r.failure = outside + std::string(when);
+        r.failure += when;
         r.samples.clear();
-        outside = "";  // stops both loops; engineError dies with this step
+        break;
       }
     }
-    if (!outside) r.samples.push_back(sampleOf(scene, world->pose(), i * kSampleInterval));
+    if (r.failure.empty()) r.samples.push_back(sampleOf(scene, pose, i * kSampleInterval));
   }
   r.cpuSeconds = cpuNow() - t0;
   return r;
