@@ -4,25 +4,26 @@
 // the 16-stage pair of Verner's coefficient file
 // RKV98.IIa.Efficient.000000349.081209 (sfu.ca/~jverner), at its 40 digits
 // (each literal rounds to the nearest double). It propagates the 9th-order
-// solution and estimates the error with the embedded 8th-order one; the
-// derivative at the end of an accepted step is evaluated once, for the next
-// step's first stage and the dense output (ExplicitPair.h's cubic Hermite,
-// not Verner's interpolant, which needs further stages). tests/physics/Verner98Test.cpp checks
-// the table against all 486 order conditions up to the 9th (the embedded
-// weights against the 200 up to the 8th). Measured in docs/WORK_PRECISION.md:
-// the fastest of ours from 1e-8 to 1e-10 on the rose and on free motion, at
-// 1e-9 and 1e-10 on the tether and at 1e-10 on the heavy rose; with it the
-// smallest margin of our best over odeint's RKF78 rose from 1.04x to 1.13x.
+// solution and estimates the error with the embedded 8th-order one
+// (TableauPair.h steps it); dense output: ExplicitPair.h's cubic Hermite,
+// not Verner's interpolant, which needs further stages.
+// tests/physics/Verner98Test.cpp checks the table against all 486 order
+// conditions up to the 9th (the embedded weights against the 200 up to the
+// 8th). Measured in docs/WORK_PRECISION.md: the fastest of ours at 17 of
+// its 35 error levels (from 1e-8 down on every scenario but the M3 coupling,
+// which DOP853 keeps, and most of the heavy rose and the tether); with it the
+// smallest margin of our best over odeint's RKF78 went from 1.01x (before
+// the Verner pairs) to 1.18x.
 // Its error control is conservative at loose tolerances (error 6e-9 at tol
-// 1e-4 on the known-solution test), which is why it wins at tight errors only.
+// 1e-4 on the known-solution test), which is why it wins at tight errors.
 
-#include <array>
-
-#include "engine/physics/ExplicitPair.h"
+#include "engine/physics/TableauPair.h"
 
 namespace hemiroll::physics {
 
 struct Vern9Tableau {
+  static constexpr std::string_view kName = "vern9";
+  static constexpr int kOrder = 9, kStages = 16;
   static constexpr double c[16] = {
       0.0, 0.3462e-1, 0.9702435063878044594828361677100617517633e-1, 0.1455365259581706689224254251565092627645,
           0.561, 0.2290079115904850126662751771814700052182, 0.5449920884095149873337248228185299947818, 0.645,
@@ -91,55 +92,6 @@ struct Vern9Tableau {
 };
 
 template <int N>
-class Verner98 final : public ExplicitPair<N> {
- public:
-  std::string_view name() const override { return "vern9"; }
-  int order() const override { return 9; }
-  void interpolate(double t, StateVector<N>& x) override { this->hermite(t, x); }
-
- protected:
-  int controlOrder() const override { return 9; }
-
-  double attempt(const OdeSystem<N>& f, double h) override {
-    using T = Vern9Tableau;
-    const double t = this->time();
-    k_[0] = this->k1_;
-    // The stages by the table's rows; its zeros (whole columns 2-5 from row
-    // 6 on) are skipped, which changes no sum.
-    for (int i = 1; i < kStages; ++i) {
-      this->stage_ = this->x_;
-      StateVector<N> sum = StateVector<N>::Zero();
-      for (int j = 0; j < i; ++j)
-        if (T::a[i][j] != 0.0) sum += T::a[i][j] * k_[j];
-      this->stage_ += h * sum;
-      f.derivative(t + T::c[i] * h, this->stage_, k_[i]);
-    }
-    this->countEvaluations(kStages - 1);
-    StateVector<N> high = StateVector<N>::Zero(), error = StateVector<N>::Zero();
-    for (int i = 0; i < kStages; ++i) {
-      if (T::b[i] != 0.0) high += T::b[i] * k_[i];
-      if (T::b[i] != T::bHat[i]) error += (T::b[i] - T::bHat[i]) * k_[i];
-    }
-    this->xNew_ = this->x_ + h * high;
-    this->hTry_ = h;
-    error *= h;
-    const double err = std::sqrt(error.cwiseQuotient(this->errorWeights(this->x_, this->xNew_)).squaredNorm() / N);
-    return std::isfinite(err) ? err : std::numeric_limits<double>::infinity();
-  }
-
-  void accept(const OdeSystem<N>& f) override {
-    this->xPrev_ = this->x_;
-    this->x_ = this->xNew_;
-    this->k1Prev_ = this->k1_;
-    this->hDone_ = this->hTry_;
-    this->setTime(this->time() + this->hTry_);
-    f.derivative(this->time(), this->x_, this->k1_);  // the next step's first stage and this one's end slope
-    this->countEvaluations(1);
-  }
-
- private:
-  static constexpr int kStages = 16;
-  std::array<StateVector<N>, kStages> k_;
-};
+using Verner98 = TableauPair<N, Vern9Tableau>;
 
 }  // namespace hemiroll::physics

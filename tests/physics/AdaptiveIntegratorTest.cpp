@@ -17,19 +17,14 @@ using namespace physics;
 
 template <class M>
 void expectErrorTracksTolerance() {
-  const KnownSolutionSystem f;
   const double T = 3.0;
   std::vector<double> tols, errors;
   for (double tol = 1e-4; tol >= 1e-10; tol *= 0.01) {
-    M m;
-    m.setTolerance(tol);
-    double t = 0.0;
-    StateVector<2> x = KnownSolutionSystem::exact(0.0);
-    ASSERT_TRUE(m.advanceTo(f, t, x, T));
-    EXPECT_EQ(t, T);
-    const double e = (x - KnownSolutionSystem::exact(T)).cwiseAbs().maxCoeff();
-    std::printf("[measured] %s tol %.0e: error %.2e (%lld evaluations)\n", m.name().data(), tol, e,
-                m.statistics().evaluations);
+    const KnownSolutionRun run = runKnownSolution<M>(tol, T);
+    ASSERT_TRUE(run.reached);
+    EXPECT_EQ(run.t, T);
+    const double e = run.error;
+    std::printf("[measured] %s tol %.0e: error %.2e (%lld evaluations)\n", M().name().data(), tol, e, run.evaluations);
     // The tolerance bounds the local error per step, so the global error over
     // 3 s (of order 1 solution, ~3 time units) is within ~10x of tol for a
     // well-behaved problem; 30x leaves room for error accumulation. Far below
@@ -92,24 +87,14 @@ TEST(AdaptiveIntegrator, Dopri5DenseOutputIsFifthOrderAccurate) {
   EXPECT_LE(p, 5.6);
 }
 
-// Tsit5's dense output is a cubic Hermite: local error h^4, order 4.
-TEST(AdaptiveIntegrator, Tsit5DenseOutputIsTheCubicHermitesOrder) {
-  const double p = denseOrder<Tsitouras54<2>>(30, 2);
-  EXPECT_GE(p, 3.7);
-  EXPECT_LE(p, 4.6);
-}
-
-// Vern7's and Vern9's too (Verner's own interpolants need more stages).
-TEST(AdaptiveIntegrator, Vern7DenseOutputIsTheCubicHermitesOrder) {
-  const double p = denseOrder<Verner76<2>>(30, 2);
-  EXPECT_GE(p, 3.7);
-  EXPECT_LE(p, 4.6);
-}
-
-TEST(AdaptiveIntegrator, Vern9DenseOutputIsTheCubicHermitesOrder) {
-  const double p = denseOrder<Verner98<2>>(30, 2);
-  EXPECT_GE(p, 3.7);
-  EXPECT_LE(p, 4.6);
+// Tsit5's, Vern7's and Vern9's dense output is ExplicitPair's cubic Hermite
+// (Verner's own interpolants need more stages): local error h^4, order 4.
+TEST(AdaptiveIntegrator, TheCubicHermiteDenseOutputsAreFourthOrder) {
+  for (const double p : {denseOrder<Tsitouras54<2>>(30, 2), denseOrder<Verner76<2>>(30, 2),
+                         denseOrder<Verner98<2>>(30, 2)}) {
+    EXPECT_GE(p, 3.7);
+    EXPECT_LE(p, 4.6);
+  }
 }
 
 TEST(AdaptiveIntegrator, Dop853DenseOutputIsEighthOrderAccurate) {

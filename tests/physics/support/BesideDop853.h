@@ -15,28 +15,15 @@ namespace hemiroll::test {
 
 template <class Pair>
 void expectErrorFollowsToleranceBesideDop853() {
-  using namespace physics;
-  const KnownSolutionSystem f;
-  const double T = 3.0;
   double previous = 1.0;
   for (double tol = 1e-4; tol >= 1e-12; tol *= 0.01) {
-    Pair m;
-    m.setTolerance(tol);
-    double t = 0.0;
-    StateVector<2> x = KnownSolutionSystem::exact(0.0);
-    ASSERT_TRUE(m.advanceTo(f, t, x, T));
-    const double e = (x - KnownSolutionSystem::exact(T)).cwiseAbs().maxCoeff();
-    DormandPrince853<2> d;
-    d.setTolerance(tol);
-    double td = 0.0;
-    StateVector<2> xd = KnownSolutionSystem::exact(0.0);
-    ASSERT_TRUE(d.advanceTo(f, td, xd, T));
+    const KnownSolutionRun run = runKnownSolution<Pair>(tol), dop853 = runKnownSolution<physics::DormandPrince853<2>>(tol);
+    ASSERT_TRUE(run.reached && dop853.reached);
     std::printf("[measured] tol %.0e: %s error %.2e in %lld evaluations, dop853 %.2e in %lld\n", tol,
-                m.name().data(), e, m.statistics().evaluations,
-                (xd - KnownSolutionSystem::exact(T)).cwiseAbs().maxCoeff(), d.statistics().evaluations);
-    EXPECT_LT(e, 100.0 * tol);
-    EXPECT_LT(e, previous);
-    previous = e;
+                Pair().name().data(), run.error, run.evaluations, dop853.error, dop853.evaluations);
+    EXPECT_LT(run.error, 100.0 * tol);
+    EXPECT_LT(run.error, previous);
+    previous = run.error;
   }
 }
 

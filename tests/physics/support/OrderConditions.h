@@ -6,7 +6,10 @@
 // gamma(t) = |t| times the product of the subtrees' densities. Used by the
 // tests of the higher-order pairs, whose conditions are too many to list.
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
+#include <cstdio>
 #include <array>
 #include <cmath>
 #include <type_traits>
@@ -93,6 +96,47 @@ double worstResidual(const std::vector<RootedTree<S>>& trees, const std::type_id
   for (const RootedTree<S>& t : trees)
     if (t.order >= from && t.order <= to) worst = std::max(worst, std::abs(conditionResidual(b, t)));
   return worst;
+}
+
+// A pair's table (TableauPair.h's layout) as a ButcherTableau.
+template <class Table>
+ButcherTableau<Table::kStages> tableauOf() {
+  ButcherTableau<Table::kStages> t;
+  for (int i = 0; i < Table::kStages; ++i) {
+    t.c[i] = Table::c[i];
+    t.b[i] = Table::b[i];
+    t.bHat[i] = Table::bHat[i];
+    for (int j = 0; j < Table::kStages; ++j) t.a[i][j] = Table::a[i][j];
+  }
+  return t;
+}
+
+// The pair's rows sum to c, b meets every condition up to kOrder and b_hat
+// every one up to kOrder - 1, all within `rounding` (what the coefficients'
+// digits allow); and b_hat misses order kOrder by more than `missBy`, as an
+// error estimate must. Prints the worst residuals it measured.
+template <class Table>
+void expectPairMeetsOrderConditions(double rounding, double missBy) {
+  constexpr int S = Table::kStages, p = Table::kOrder;
+  const ButcherTableau<S> t = tableauOf<Table>();
+  for (int i = 1; i < S; ++i) {
+    double row = 0.0;
+    for (int j = 0; j < i; ++j) row += t.a[i][j];
+    EXPECT_NEAR(row, t.c[i], rounding) << "row " << i << " sums to c";
+  }
+  const auto trees = treesUpTo(t, p);
+  // Rooted trees up to orders 1..9: 1, 2, 4, 8, 17, 37, 85, 200, 486 (OEIS A000081, summed).
+  constexpr std::size_t kTreesUpTo[] = {0, 1, 2, 4, 8, 17, 37, 85, 200, 486};
+  ASSERT_LE(p, 9);
+  ASSERT_EQ(trees.size(), kTreesUpTo[p]);
+  const double worstB = worstResidual(trees, t.b, 1, p), worstBHat = worstResidual(trees, t.bHat, 1, p - 1),
+               missed = worstResidual(trees, t.bHat, p, p);
+  std::printf("[measured] %.*s: worst residual of b to order %d %.1e, of b_hat to order %d %.1e; b_hat misses order "
+              "%d by %.1e\n",
+              static_cast<int>(Table::kName.size()), Table::kName.data(), p, worstB, p - 1, worstBHat, p, missed);
+  EXPECT_LT(worstB, rounding);
+  EXPECT_LT(worstBHat, rounding);
+  EXPECT_GT(missed, missBy);
 }
 
 }  // namespace hemiroll::test
