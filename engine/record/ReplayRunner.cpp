@@ -6,25 +6,22 @@
 
 namespace hemiroll::record {
 
-bool ReplayCursor::playTo(haptics::ServoLoop& loop, const ReplayLog& log, std::size_t due) {
+std::optional<std::uint64_t> ReplayCursor::playTo(haptics::ServoLoop& loop, const ReplayLog& log, std::size_t due) {
   due = std::min(due, log.inputs.size());
-  bool accepted = true;
+  std::optional<std::uint64_t> refused;
   for (; nextInput_ < due; ++nextInput_) {
     const haptics::TickInput& in = log.inputs[nextInput_];
     for (; nextCommand_ < log.commands.size() && log.commands[nextCommand_].tick == in.tick; ++nextCommand_)
-      accepted = loop.post(log.commands[nextCommand_].command) && accepted;
+      if (!loop.post(log.commands[nextCommand_].command) && !refused) refused = in.tick;
     loop.tick(in.latenessNs);
   }
-  return accepted;
+  return refused;
 }
 
 std::uint64_t ReplayRunner::run(haptics::ServoLoop& loop, const ReplayLog& log) {
-  ReplayCursor cursor;
-  // One tick at a time, so that a refused command is named by its tick.
-  for (std::size_t i = 0; i < log.inputs.size(); ++i)
-    if (!cursor.playTo(loop, log, i + 1))
-      throw RecordError("replay: the loop refused the command logged at tick " + std::to_string(log.inputs[i].tick) +
-                        " (is it built from the logged level?)");
+  if (const auto refused = ReplayCursor().playTo(loop, log, log.inputs.size()))
+    throw RecordError("replay: the loop refused the command logged at tick " + std::to_string(*refused) +
+                      " (is it built from the logged level?)");
   return log.inputs.size();
 }
 

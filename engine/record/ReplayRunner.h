@@ -7,6 +7,7 @@
 // run included, since nothing of the clock reaches the tick but lateness.
 
 #include <cstdint>
+#include <optional>
 
 #include "engine/haptics/ServoLoop.h"
 #include "engine/record/ReplayReader.h"
@@ -25,8 +26,9 @@ class ReplayRunner {
 class ReplayCursor {
  public:
   // Plays the log's inputs up to (not including) index `due`, or its end.
-  // Returns false, having played on, if the loop refused a logged command.
-  bool playTo(haptics::ServoLoop& loop, const ReplayLog& log, std::size_t due);
+  // Returns the tick of the first logged command the loop refused, having
+  // played on; nothing if it took them all.
+  std::optional<std::uint64_t> playTo(haptics::ServoLoop& loop, const ReplayLog& log, std::size_t due);
   std::size_t next() const { return nextInput_; }
 
  private:

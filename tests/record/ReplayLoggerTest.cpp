@@ -206,5 +206,55 @@ TEST(ReplayLoggerTest, LostInputsMakeTheLogUnusable) {
   EXPECT_THROW(ReplayLogger(path, {}), RecordError);  // never over an existing log
 }
 
+// A log made in hand: 300 ticks of the circling hand, Engage at tick 1 and
+// a gain change at tick 50.
+ReplayLog handMadeLog(double laterStiffness) {
+  ReplayLog log;
+  for (std::uint64_t tick = 1; tick <= 300; ++tick) {
+    const haptics::SimulatedHandDevice::Intent at = circling(1e-3 * static_cast<double>(tick));
+    haptics::TickInput in;
+    in.tick = tick;
+    in.position = {at.position.x(), at.position.y(), at.position.z()};
+    in.velocity = {at.velocity.x(), at.velocity.y(), at.velocity.z()};
+    log.inputs.push_back(in);
+  }
+  log.commands.push_back({1, command(haptics::ServoCommandKind::Engage)});
+  haptics::ServoCommand gains = stiffer();
+  gains.coupling.stiffness = laterStiffness;
+  log.commands.push_back({50, gains});
+  return log;
+}
+
+// Played in parts (a ghost, a frame's worth at a time) the log repeats the
+// whole run bit for bit; a logged command the loop refuses (gains its device
+// cannot render: a definition other than the logged run's) is named by its
+// tick, by the part that met it and by ReplayRunner.
+TEST(ReplayLoggerTest, ACursorPlaysInPartsAndNamesARefusedCommand) {
+  const ReplayLog log = handMadeLog(300.0);
+  Rings whole, parts;
+  haptics::ReplayDevice wholeDevice(log.inputs), partsDevice(log.inputs);
+  haptics::ServoLoop wholeLoop(whole.def(false), wholeDevice), partsLoop(parts.def(false), partsDevice);
+  EXPECT_EQ(ReplayRunner::run(wholeLoop, log), 300u);
+  ReplayCursor cursor;
+  for (std::size_t due : {7u, 7u, 49u, 50u, 299u, 500u}) EXPECT_FALSE(cursor.playTo(partsLoop, log, due).has_value());
+  EXPECT_EQ(cursor.next(), 300u);
+  EXPECT_EQ(std::memcmp(wholeLoop.state().data(), partsLoop.state().data(), sizeof(double) * 12), 0);
+  EXPECT_GT(std::hypot(partsLoop.state()[0], partsLoop.state()[1]), 1e-6);  // the point moved: not a trivial match
+
+  const ReplayLog bad = handMadeLog(-1.0);  // a negative stiffness: refused
+  Rings r1, r2;
+  haptics::ReplayDevice d1(bad.inputs), d2(bad.inputs);
+  haptics::ServoLoop l1(r1.def(false), d1), l2(r2.def(false), d2);
+  ReplayCursor badCursor;
+  EXPECT_FALSE(badCursor.playTo(l1, bad, 49).has_value());
+  EXPECT_EQ(badCursor.playTo(l1, bad, 300), std::optional<std::uint64_t>(50));
+  try {
+    ReplayRunner::run(l2, bad);
+    FAIL() << "no error";
+  } catch (const RecordError& e) {
+    EXPECT_NE(std::string(e.what()).find("logged at tick 50"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace hemiroll::record
