@@ -26,6 +26,7 @@ struct Quaternion {
 // same interface as HeadingFrame (RollingDynamics.h), for the frame-generic
 // dynamics, but with no zero entry to exploit.
 struct BodyFrame {
+  using Number = double;
   Real3 i, j, k;
 
   Real3 inPlane(const Real2& q) const { return i * q.x + j * q.y; }

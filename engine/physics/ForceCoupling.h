@@ -47,23 +47,43 @@ struct CouplingForces {
   Vec3 deviceForce;  // force to render on the device [N]: -F_h, or zero if visual only
 };
 
+// The gains of one coupling, per trajectory: doubles, or one lane per
+// trajectory in the batched integrator (the method is shared).
+template <class T>
+struct CouplingLawOf {
+  ForceMethod method;
+  T stiffness, damping, alpha;  // k_r [N/m], k_v [N s/m], M3's anisotropy [-]
+};
+inline CouplingLawOf<double> couplingLawOf(const CouplingDef& def) {
+  return {def.method, def.stiffness, def.damping, def.alpha};
+}
+
 // The coupling law in any one frame: faceNormal k, the position offset
 // dr = r_p - r_h and the velocity offset dv = v_p - v_h must share it, and so
 // does the force returned. Inline: it runs in every integrator stage.
-inline Real3 handForce(const CouplingDef& def, const Real3& k, const Real3& dr, const Real3& dv) {
-  Real3 force = -def.stiffness * dr - def.damping * dv;
-  if (def.method == ForceMethod::M3) {
+template <class T>
+inline Real3Of<T> handForceOf(const CouplingLawOf<T>& law, const Real3Of<T>& k, const Real3Of<T>& dr,
+                              const Real3Of<T>& dv) {
+  Real3Of<T> force = -law.stiffness * dr - law.damping * dv;
+  if (law.method == ForceMethod::M3) {
     // R diag(k, k, alpha k) R^T = k I + (alpha - 1) k k_o k_o^T: only the
     // normal component is stiffer, so no rotation to the body frame is needed.
-    force = force - ((def.alpha - 1.0) * (def.stiffness * dot(k, dr) + def.damping * dot(k, dv))) * k;
+    force = force - ((law.alpha - 1.0) * (law.stiffness * dot(k, dr) + law.damping * dot(k, dv))) * k;
   }
   return force;
+}
+inline Real3 handForce(const CouplingDef& def, const Real3& k, const Real3& dr, const Real3& dv) {
+  return handForceOf(couplingLawOf(def), k, dr, dv);
 }
 
 // The part of F_h that drives the model: all of it for M2 and M3, the in-face
 // part for M1 (eq. 42).
+template <class T>
+inline Real3Of<T> modelForceOf(ForceMethod method, const Real3Of<T>& k, const Real3Of<T>& hand) {
+  return method == ForceMethod::M1 ? hand - dot(k, hand) * k : hand;
+}
 inline Real3 modelForce(const CouplingDef& def, const Real3& k, const Real3& hand) {
-  return def.method == ForceMethod::M1 ? hand - dot(k, hand) * k : hand;
+  return modelForceOf(def.method, k, hand);
 }
 
 // Absolute position and velocity of the mass point in the base frame,

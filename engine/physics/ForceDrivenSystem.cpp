@@ -44,24 +44,8 @@ Real3 ForceDrivenSystem::inputForce(const RollingGeometry& g, double t, const Fo
 // input force, the 3x3 solve). Left to GCC's size limits, parts of it stay
 // out of line and pass their results through memory (docs/PERFORMANCE.md).
 [[gnu::flatten]] void ForceDrivenSystem::derivative(double t, const ForceDrivenState& x, ForceDrivenState& dxdt) const {
-  const double radius = dynamics_.constants().params.radius;
-  const RollingGeometry g = geometryOf(dynamics_.constants(), x);
-  const HeadingFrame& f = g.frame;
-  const Real3 omega = omegaOf(x);
-  const Real3 omegaH = f.toHeading(omega);
-  const Real3 force = inputForce(g, t, x, omegaH);
-
-  const BodyAcceleration a = dynamics_.bodyAcceleration(g, omegaH, dot(f.k, force));
-  const Real2 pDDot = dynamics_.pointAcceleration(g, a, f.toFace(force));
-  const Real3 omegaDot = f.toBase(a.omegaDot);
-
-  const ContactRates rates = contactRates(f.cv, f.sv, f.cpsi, f.spsi, radius, omega);
-  dxdt[x_p] = x[xd_p];
-  dxdt[y_p] = x[yd_p];
-  dxdt[xd_p] = pDDot.x;
-  dxdt[yd_p] = pDDot.y;
-  static_assert(w_x == body && psi == body + 7, "slots 4..11 are the body state");
-  writeBodyRates(dxdt.data() + body, omegaDot, rates);
+  forceDrivenRatesOf(dynamics_.massConstants(), x.data(), dxdt.data(),
+                     [&](const RollingGeometry& g, const Real3& omegaH) { return inputForce(g, t, x, omegaH); });
 }
 
 DomainMargins ForceDrivenSystem::margins(double, const ForceDrivenState& x) const {

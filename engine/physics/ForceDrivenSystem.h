@@ -54,4 +54,31 @@ class ForceDrivenSystem final : public OdeSystem<12> {
 // and couplings).
 RollingGeometry geometryOf(const ModelConstants& c, const ForceDrivenState& x);
 
+// The 12 rates of eq. (31) at x, over doubles or lanes (BatchedRk4.h):
+// ForceDrivenSystem::derivative and the batched integrator both evaluate the
+// model here. inputForce(g, omegaH) gives the force on the mass point in the
+// heading frame of g, for angular velocity omegaH in that frame.
+template <class T, class InputForce>
+inline void forceDrivenRatesOf(const MassConstantsOf<T>& c, const T* x, T* dxdt, const InputForce& inputForce) {
+  using namespace force_slot;
+  const RollingGeometryIn<HeadingFrameOf<T>> g = geometryIn(
+      c.radius, makeHeadingFrame(x[u_o], x[v_o], x[psi]), Real2Of<T>{x[x_p], x[y_p]}, Real2Of<T>{x[xd_p], x[yd_p]});
+  const HeadingFrameOf<T>& f = g.frame;
+  const Real3Of<T> omega{x[w_x], x[w_y], x[w_z]};
+  const Real3Of<T> omegaH = f.toHeading(omega);
+  const Real3Of<T> force = inputForce(g, omegaH);
+
+  const BodyAccelerationOf<T> a = bodyAccelerationOf(c, g, omegaH, dot(f.k, force));
+  const Real2Of<T> pDDot = pointAccelerationOf(c, g, a, f.toFace(force));
+  const Real3Of<T> omegaDot = f.toBase(a.omegaDot);
+
+  const ContactRatesOf<T> rates = contactRates(f.cv, f.sv, f.cpsi, f.spsi, c.radius, omega);
+  dxdt[x_p] = x[xd_p];
+  dxdt[y_p] = x[yd_p];
+  dxdt[xd_p] = pDDot.x;
+  dxdt[yd_p] = pDDot.y;
+  static_assert(w_x == body && psi == body + 7, "slots 4..11 are the body state");
+  writeBodyRates(dxdt + body, omegaDot, rates);
+}
+
 }  // namespace hemiroll::physics

@@ -18,6 +18,21 @@ class ProxyTrajectory {
   virtual ProxyPose at(double t) const = 0;
 };
 
+// F_h for a proxy at proxyPosition moving at proxyVelocity (base frame), in
+// the frame that toFrame() turns the base frame into: k is the face normal
+// and rhoP the mass point from the face centre in that frame, centre the
+// sphere centre in the base frame, pointVelocity the mass point's absolute
+// velocity in that frame. Over doubles or lanes (BatchedRk4.h).
+template <class T, class ToFrame>
+inline Real3Of<T> handForceFromProxy(const CouplingLawOf<T>& law, const Real3Of<T>& k, const Real3Of<T>& centre,
+                                     const Real3Of<T>& rhoP, const Real3Of<T>& pointVelocity,
+                                     const Real3Of<T>& proxyPosition, const Real3Of<T>& proxyVelocity,
+                                     ToFrame toFrame) {
+  const Real3Of<T> dr = toFrame(centre - proxyPosition) + rhoP;
+  const Real3Of<T> dv = pointVelocity - toFrame(proxyVelocity);
+  return handForceOf(law, k, dr, dv);
+}
+
 class ForceInput {
  public:
   enum class Mode { Free, FaceForce, Coupling };
@@ -50,9 +65,8 @@ class ForceInput {
   Real3 handForce(double t, const Real3& k, const Real3& centre, const Real3& rhoP, const Real3& pointVelocity,
                   ToFrame toFrame) const {
     const ProxyPose proxy = proxyAt(t);
-    const Real3 dr = toFrame(centre - Real3::from(proxy.position)) + rhoP;
-    const Real3 dv = pointVelocity - toFrame(Real3::from(proxy.velocity));
-    return physics::handForce(coupling_, k, dr, dv);
+    return handForceFromProxy(couplingLawOf(coupling_), k, centre, rhoP, pointVelocity,
+                              Real3::from(proxy.position), Real3::from(proxy.velocity), toFrame);
   }
 
  private:

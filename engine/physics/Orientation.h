@@ -22,19 +22,23 @@ Orientation makeOrientation(double u_o, double v_o, double psi);
 // Contact kinematics, eqs. (11)-(15): rates of (u_a, v_a, u_o, v_o, psi) for
 // angular velocity w (base frame). Eq. (31) as printed multiplies u_o' by
 // cos v_o; it must divide (physics-notes.md).
-struct ContactRates {
-  double u_a, v_a, u_o, v_o, psi;
+template <class T>
+struct ContactRatesOf {
+  T u_a, v_a, u_o, v_o, psi;
 };
-inline ContactRates contactRates(double cosV, double sinV, double cosPsi, double sinPsi, double radius,
-                                 const Real3& w) {
-  const double a = w.x * sinPsi + w.y * cosPsi;
-  const double secV = 1.0 / cosV;
-  return ContactRates{radius * w.y, -radius * w.x, -a * secV, -w.x * cosPsi + w.y * sinPsi, -w.z - a * sinV * secV};
+using ContactRates = ContactRatesOf<double>;
+template <class T>
+inline ContactRatesOf<T> contactRates(T cosV, T sinV, T cosPsi, T sinPsi, T radius, const Real3Of<T>& w) {
+  const T a = w.x * sinPsi + w.y * cosPsi;
+  const T secV = 1.0 / cosV;
+  return ContactRatesOf<T>{radius * w.y, -radius * w.x, -a * secV, -w.x * cosPsi + w.y * sinPsi,
+                           -w.z - a * sinV * secV};
 }
 // The hemisphere's eight rates (w', then the contact rates) in the slot order
 // of body_slot, which is also slots 4..11 of the 12-state model: both models
 // write their tail through this one function.
-inline void writeBodyRates(double* out, const Real3& omegaDot, const ContactRates& r) {
+template <class T>
+inline void writeBodyRates(T* out, const Real3Of<T>& omegaDot, const ContactRatesOf<T>& r) {
   out[0] = omegaDot.x;
   out[1] = omegaDot.y;
   out[2] = omegaDot.z;

@@ -7,12 +7,14 @@
 // Owns: parameters, state layouts, the orientation and contact kinematics,
 // the dynamics of the 12-state force-driven model and the 8-state prescribed
 // drive, the force couplings M1/M2/M3 to a haptic proxy, energy, domain events
-// (tip-over, off-face), integrators and the event-aware stepper.
+// (tip-over, off-face), integrators and the event-aware stepper, and the
+// lockstep RK4 of many trajectories in SIMD lanes (BatchedRk4.h).
 //
 // Must not know: Lua, devices, threads, clocks, files, rendering, levels.
 // Depends on Eigen and the standard library only.
 
 #include "engine/physics/AdaptiveIntegrator.h"
+#include "engine/physics/BatchedRk4.h"
 #include "engine/physics/BodyRotation.h"
 #include "engine/physics/CouplingStability.h"
 #include "engine/physics/DomainEvents.h"

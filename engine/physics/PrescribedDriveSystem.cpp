@@ -24,17 +24,8 @@ PrescribedDriveSystem::PrescribedDriveSystem(const HemisphereParams& params, con
 // the 3x3 solve). Left to GCC's size limits, parts of it stay
 // out of line and pass their results through memory (docs/PERFORMANCE.md).
 [[gnu::flatten]] void PrescribedDriveSystem::derivative(double t, const BodyState& x, BodyState& dxdt) const {
-  const ModelConstants& c = dynamics_.constants();
   const MassPointTrajectory::Sample s = trajectory_.at(t);
-  const RollingGeometry g = geometryAt(c, x, s);
-  const HeadingFrame& f = g.frame;
-  const Real3 omega{x[w_x], x[w_y], x[w_z]};
-  const Real3 omegaH = f.toHeading(omega);
-  // Eq. (47): p'' does not enter the hemisphere's dynamics.
-  const Real3 omegaDot = f.toBase(dynamics_.bodyAcceleration(g, omegaH, 0.0).omegaDot);
-  const ContactRates rates = contactRates(f.cv, f.sv, f.cpsi, f.spsi, c.params.radius, omega);
-  static_assert(w_x == 0 && psi == 7, "the body state is w, then the contact coordinates");
-  writeBodyRates(dxdt.data(), omegaDot, rates);
+  prescribedRatesOf(dynamics_.massConstants(), Real2::from(s.p), Real2::from(s.pDot), x.data(), dxdt.data());
 }
 
 DomainMargins PrescribedDriveSystem::margins(double t, const BodyState& x) const {

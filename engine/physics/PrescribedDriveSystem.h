@@ -17,6 +17,25 @@ class MassPointTrajectory {
   virtual Sample at(double t) const = 0;
 };
 
+// The 8 rates of eq. (47) at x for the mass point at p moving at pDot (face
+// coordinates), over doubles or lanes (BatchedRk4.h):
+// PrescribedDriveSystem::derivative and the batched integrator both evaluate
+// the model here. p'' does not enter the hemisphere's dynamics.
+template <class T>
+inline void prescribedRatesOf(const MassConstantsOf<T>& c, const Real2Of<T>& p, const Real2Of<T>& pDot, const T* x,
+                              T* dxdt) {
+  using namespace body_slot;
+  const RollingGeometryIn<HeadingFrameOf<T>> g =
+      geometryIn(c.radius, makeHeadingFrame(x[u_o], x[v_o], x[psi]), p, pDot);
+  const HeadingFrameOf<T>& f = g.frame;
+  const Real3Of<T> omega{x[w_x], x[w_y], x[w_z]};
+  const Real3Of<T> omegaH = f.toHeading(omega);
+  const Real3Of<T> omegaDot = f.toBase(bodyAccelerationOf(c, g, omegaH, broadcast<T>(0.0)).omegaDot);
+  const ContactRatesOf<T> rates = contactRates(f.cv, f.sv, f.cpsi, f.spsi, c.radius, omega);
+  static_assert(w_x == 0 && psi == 7, "the body state is w, then the contact coordinates");
+  writeBodyRates(dxdt, omegaDot, rates);
+}
+
 class PrescribedDriveSystem final : public OdeSystem<8> {
  public:
   PrescribedDriveSystem(const HemisphereParams& params, const MassPointTrajectory& trajectory,

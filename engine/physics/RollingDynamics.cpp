@@ -2,6 +2,10 @@
 
 namespace hemiroll::physics {
 
+MassConstantsOf<double> massConstantsOf(const ModelConstants& c) {
+  return {c.params.pointMass, c.params.shellMass, c.params.radius, c.params.gravity, c.comDepth, c.shellMoment};
+}
+
 Mat3 RollingDynamics::contactInertia(const Vec3& k) const {
   // J_c = J_o + m_s (hat(rho_s) hat(rho_c) + hat(rho_c) hat(rho_s) - hat(rho_c)^2)
   // with rho_s = -(3R/8) k, rho_c = -R e_z, J_o = (2/5) m_s R^2 I, expanded:

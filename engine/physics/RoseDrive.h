@@ -14,6 +14,28 @@ struct RoseDef {
   double omega = -0.31415926535897931;     // Omega, rate of the first link [rad/s] (-pi/10)
 };
 
+// p, p' and p'' at time t, over doubles or lanes (one rose per lane,
+// BatchedRk4.h): RoseDrive::at and the batched integrator both use it.
+template <class T>
+struct RoseSampleOf {
+  Real2Of<T> p, pDot, pDDot;  // [m], [m/s], [m/s^2], face coordinates
+};
+template <class T>
+inline RoseSampleOf<T> roseSampleOf(T r1, T r2, T k, T W, double t) {
+  const T phi = W * t;
+  SinCosOf<T> first, second;
+  if constexpr (std::is_same_v<T, double>) {
+    sinCos2(phi, k * phi, first, second);  // the engine's trig: same bits on every libm
+  } else {
+    first = sinCosLanes(phi);
+    second = sinCosLanes(k * phi);
+  }
+  const T c1 = first.cos, s1 = first.sin, ck = second.cos, sk = second.sin;
+  return {{r1 * c1 + r2 * ck, r1 * s1 - r2 * sk},
+          {W * (-r1 * s1 - k * r2 * sk), W * (r1 * c1 - k * r2 * ck)},
+          {(W * W) * (-r1 * c1 - k * k * r2 * ck), (W * W) * (-r1 * s1 + k * k * r2 * sk)}};
+}
+
 class RoseDrive final : public MassPointTrajectory {
  public:
   explicit RoseDrive(const RoseDef& def) : def_(def) {}

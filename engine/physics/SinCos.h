@@ -15,9 +15,11 @@
 
 namespace hemiroll::physics {
 
-struct SinCos {
-  double sin, cos;
+template <class T>
+struct SinCosOf {
+  T sin, cos;
 };
+using SinCos = SinCosOf<double>;
 
 namespace detail {
 // pi/2 split into 33 + 33 + 53 significant bits: n * kPiOver2Hi and
@@ -152,6 +154,49 @@ inline void sinCos2(double a, double b, SinCos& outA, SinCos& outB) {
   const Lanes cosv = ((quadrant + 1) & 2) != 0 ? -cosAbs : cosAbs;
   outA = {sinv[0], cosv[0]};
   outB = {sinv[1], cosv[1]};
+}
+
+namespace detail {
+// The integer vector with T's lanes (a member typedef: GCC drops a dependent
+// vector_size from a typedef local to a function template).
+template <class T>
+struct LaneIntsOf {
+  typedef long long type __attribute__((vector_size(sizeof(T))));
+};
+}  // namespace detail
+
+// Each lane of T (a GCC vector of doubles, BatchedRk4.h) with exactly the
+// bits sinCos gives that lane's angle. It always reduces: for |x| < 0.78 the
+// reduction gives n = 0 and r = x exactly, so skipping it (as sinCos does)
+// changes no bit; the kernels and the quadrant logic are sinCos2's.
+template <class T>
+inline SinCosOf<T> sinCosLanes(T x) {
+  using namespace detail;
+  using LaneInts = typename LaneIntsOf<T>::type;
+  constexpr int kLanes = sizeof(T) / sizeof(double);
+  // NaN fails the comparisons, so it takes the per-lane path as in sinCos.
+  const LaneInts reducible = (x > -kExactReductionLimit) & (x < kExactReductionLimit);
+  bool allReducible = true;
+  for (int lane = 0; lane < kLanes; ++lane) allReducible = allReducible && reducible[lane] != 0;
+  if (!allReducible) {
+    double sines[kLanes], cosines[kLanes];
+    for (int lane = 0; lane < kLanes; ++lane) {
+      const SinCos one = sinCos(x[lane]);
+      sines[lane] = one.sin;
+      cosines[lane] = one.cos;
+    }
+    SinCosOf<T> out;
+    __builtin_memcpy(&out.sin, sines, sizeof out.sin);
+    __builtin_memcpy(&out.cos, cosines, sizeof out.cos);
+    return out;
+  }
+  const T n = (x * kTwoOverPi + kRoundingShift) - kRoundingShift;
+  const T r = ((x - n * kPiOver2Hi) - n * kPiOver2Mid) - n * kPiOver2Lo;
+  const T s = sinKernel(r), c = cosKernel(r);
+  const LaneInts quadrant = __builtin_convertvector(n, LaneInts) & 3;
+  const LaneInts swap = (quadrant & 1) != 0;
+  const T sinAbs = swap ? c : s, cosAbs = swap ? s : c;
+  return {(quadrant & 2) != 0 ? -sinAbs : sinAbs, ((quadrant + 1) & 2) != 0 ? -cosAbs : cosAbs};
 }
 
 }  // namespace hemiroll::physics

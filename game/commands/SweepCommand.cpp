@@ -4,6 +4,7 @@
 
 #include <iostream>
 
+#include "engine/physics/BatchedRk4.h"
 #include "engine/record/DurableFile.h"
 #include "engine/record/RecordError.h"
 #include "engine/script/ScriptError.h"
@@ -80,6 +81,13 @@ int runSweep(const SweepOptions& o) {
   request.shard = o.shard;
   request.outDir = *o.out;
   request.threads = o.threads > 0 ? o.threads : OrderedPool::defaultThreads();
+  request.laneWidth = o.lanes > 0 ? o.lanes : physics::bestLaneWidth();
+  if (!physics::laneWidthSupported(request.laneWidth)) {
+    std::cerr << "hemiroll sweep: --lanes " << request.laneWidth << " needs "
+              << (request.laneWidth == 8 ? "AVX-512" : "AVX2") << ", which this CPU lacks; widths it runs: 1, 2"
+              << (physics::laneWidthSupported(4) ? ", 4" : "") << "\n";
+    return kExitUsage;
+  }
   request.terminal = isatty(STDERR_FILENO) == 1;
   // The version and the physics fingerprint: parts merge and resume only
   // where both agree (PhysicsFingerprint.h).
@@ -89,7 +97,7 @@ int runSweep(const SweepOptions& o) {
   const double rate = r.wallSeconds > 0.0 ? static_cast<double>(r.computed) / r.wallSeconds : 0.0;
   std::cerr << "hemiroll sweep: " << (r.alreadyComplete ? "already complete: " : "") << r.points << " points (shard "
             << o.shard.label() << ", " << r.resumed << " kept from an earlier run, " << r.computed << " computed on "
-            << request.threads << " threads in " << r.wallSeconds << " s, " << rate << " points/s), " << r.stopped
+            << request.threads << " threads (" << request.laneWidth << " lanes) in " << r.wallSeconds << " s, " << rate << " points/s), " << r.stopped
             << " stopped by a domain event; " << r.csv.string() << (maps > 0 ? " and " + std::to_string(maps) + " maps" : "")
             << "\n";
   std::cout << JsonLine()
@@ -100,6 +108,7 @@ int runSweep(const SweepOptions& o) {
                    .add("resumed", static_cast<long long>(r.resumed))
                    .add("stopped", static_cast<long long>(r.stopped))
                    .add("threads", static_cast<long long>(request.threads))
+                   .add("lanes", static_cast<long long>(request.laneWidth))
                    .add("wall_s", r.wallSeconds)
                    .add("points_per_s", rate)
                    .add("maps", static_cast<long long>(maps))

@@ -7,7 +7,7 @@
 namespace hemiroll::game {
 
 const char* sweepUsage() {
-  return "usage: hemiroll sweep SPEC.lua --out DIR [--threads N] [--shard i/N] [--maps svg|none]\n"
+  return "usage: hemiroll sweep SPEC.lua --out DIR [--threads N] [--lanes W] [--shard i/N] [--maps svg|none]\n"
          "       hemiroll sweep SPEC.lua --out DIR --slurm N [--threads T] [--maps svg|none]\n"
          "       hemiroll sweep merge DIR... --out DIR [--maps svg|none]\n"
          "       hemiroll sweep map DIR --x PARAM --y PARAM --metric NAME [--aggregate HOW] [--out FILE.svg]\n"
@@ -21,6 +21,9 @@ const char* sweepUsage() {
          "                    same folder keeps the points already done\n"
          "  --threads N       run: worker threads (default: every CPU this process may\n"
          "                    use); the CSV does not depend on N\n"
+         "  --lanes W         run: trajectories integrated together in SIMD lanes on\n"
+         "                    each thread, 1, 2, 4 (AVX2) or 8 (AVX-512) (default: the\n"
+         "                    widest this CPU runs); the CSV does not depend on W\n"
          "  --shard i/N       run: only the points whose index is i modulo N, into\n"
          "                    part-i-of-N.csv/.json (for a cluster's job array); join\n"
          "                    the parts with `hemiroll sweep merge`\n"
@@ -60,6 +63,11 @@ SweepOptionsResult parseSweepOptions(const std::vector<std::string>& args) {
   reader.option("--out", cli::text(o.out, map ? "an SVG file name" : "a folder"));
   if (run) {
     reader.option("--threads", cli::integerIn(o.threads, 1, 1024, "a whole number of threads from 1 to 1024"));
+    reader.option("--lanes", [&](const std::string& flag, const std::string& value) {
+      if (value != "1" && value != "2" && value != "4" && value != "8") return cli::needs(flag, "1, 2, 4 or 8", value);
+      o.lanes = std::stoi(value);
+      return std::string();
+    });
     reader.option("--shard", [&](const std::string& flag, const std::string& value) {
       const auto shard = SweepShard::parse(value);
       if (!shard) return cli::needs(flag, "i/N with 0 <= i < N (e.g. 0/4)", value);

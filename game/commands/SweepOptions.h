@@ -20,6 +20,7 @@ struct SweepOptions {
   std::vector<std::string> inputs;
   std::optional<std::string> out;   // run, merge: the folder; map: the SVG file
   int threads = 0;                  // run: 0 = every CPU the process may use (OrderedPool::defaultThreads)
+  int lanes = 0;                    // run: --lanes W, SIMD lanes per thread; 0 = the widest this CPU runs
   SweepShard shard;                 // run: --shard i/N
   int slurmTasks = 0;               // run: --slurm N writes a Slurm job of N shards instead of running (0: run)
   bool maps = true;                 // run (whole sweeps), merge: --maps svg|none

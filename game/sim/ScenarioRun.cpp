@@ -83,6 +83,15 @@ RunSummary integrate(const physics::OdeSystem<N>& system, physics::Integrator<N>
 
 }  // namespace
 
+TrajectoryRow roseRow(const physics::PrescribedDriveSystem& system, double t, const physics::BodyState& x) {
+  TrajectoryRow row;
+  row.time = t;
+  row.state = system.fullState(t, x);
+  row.energy = physics::mechanicalEnergy(system.dynamics(), row.state).total();
+  row.faceForce = system.drivingForce(t, x);  // eq. (46)
+  return row;
+}
+
 long long ScenarioRun::stepCount(const RunSettings& settings) {
   const double ratio = settings.duration / settings.timeStep;
   const double whole = std::round(ratio);
@@ -103,14 +112,7 @@ RunSummary ScenarioRun::runRose(const RowCallback& onRow) const {
   const physics::PrescribedDriveSystem system(scenario_.params, rose);
   auto integrator = makeIntegrator<8>(settings_.integrator, settings_.tolerance);
   const physics::BodyState x0 = scenario_.initial.tail<8>();
-  auto observe = [&](double t, const physics::BodyState& x) {
-    TrajectoryRow row;
-    row.time = t;
-    row.state = system.fullState(t, x);
-    row.energy = physics::mechanicalEnergy(system.dynamics(), row.state).total();
-    row.faceForce = system.drivingForce(t, x);  // eq. (46)
-    return row;
-  };
+  auto observe = [&](double t, const physics::BodyState& x) { return roseRow(system, t, x); };
   return integrate<8>(system, *integrator, x0, settings_, observe, onRow);
 }
 

@@ -12,6 +12,7 @@
 
 #include "engine/physics/DomainEvents.h"
 #include "engine/physics/ForceDrivenSystem.h"
+#include "engine/physics/PrescribedDriveSystem.h"
 #include "engine/physics/RotationDrivenSystem.h"
 #include "engine/script/ScenarioDef.h"
 #include "game/sim/TrajectoryRow.h"
@@ -36,6 +37,11 @@ struct RunSummary {
   double finalEnergy = 0.0;      // [J]
   physics::DomainEvent event = physics::DomainEvent::None;
 };
+
+// The row of the 8-state rose drive at (t, x): the 12-state with p and p'
+// from the curve, the energy and the driving force of eq. (46). Shared by
+// ScenarioRun and RoseLockstepRun, so that both write the same rows.
+TrajectoryRow roseRow(const physics::PrescribedDriveSystem& system, double t, const physics::BodyState& x);
 
 class ScenarioRun {
  public:

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "engine/physics/StateLayout.h"
+#include "game/sim/RoseLockstepRun.h"
 #include "game/sim/ScenarioRun.h"
 
 namespace hemiroll::game {
@@ -51,45 +52,95 @@ long long sampleEvery(double timeStep) {
   return std::max(1LL, static_cast<long long>(std::llround(0.01 / timeStep)));
 }
 
-PointMeasurement measurePoint(const SweepGrid& grid, const SweepPoint& point) {
-  const script::SweepDef& def = grid.def();
+namespace {
+
+RunSettings settingsOf(const script::SweepDef& def) {
   RunSettings settings;
   settings.duration = def.duration;
   settings.timeStep = def.timeStep;
   settings.integrator = def.integrator;
   settings.tolerance = def.tolerance;
   settings.every = sampleEvery(def.timeStep);
+  return settings;
+}
 
-  std::vector<double> time, massX, massY, contactX, contactY, psi;
-  const long long rows = ScenarioRun::stepCount(settings) / settings.every + 2;
-  for (auto* column : {&time, &massX, &massY, &contactX, &contactY, &psi}) column->reserve(static_cast<std::size_t>(rows));
-  PointMeasurement m;
-  m.duration = def.duration;
-  const RunSummary summary = ScenarioRun(grid.scenario(point), settings).run([&](const TrajectoryRow& row) {
+// The columns one point's rows fill, then the measurement made of them.
+class PointRecorder {
+ public:
+  explicit PointRecorder(const RunSettings& settings) {
+    const long long rows = ScenarioRun::stepCount(settings) / settings.every + 2;
+    for (auto* column : {&time_, &massX_, &massY_, &contactX_, &contactY_, &psi_})
+      column->reserve(static_cast<std::size_t>(rows));
+  }
+
+  void add(const TrajectoryRow& row) {
     namespace slot = physics::force_slot;
-    time.push_back(row.time);
-    massX.push_back(row.state[slot::x_p]);
-    massY.push_back(row.state[slot::y_p]);
-    contactX.push_back(row.state[slot::u_a]);
-    contactY.push_back(row.state[slot::v_a]);
-    psi.push_back(row.state[slot::psi]);
+    time_.push_back(row.time);
+    massX_.push_back(row.state[slot::x_p]);
+    massY_.push_back(row.state[slot::y_p]);
+    contactX_.push_back(row.state[slot::u_a]);
+    contactY_.push_back(row.state[slot::v_a]);
+    psi_.push_back(row.state[slot::psi]);
     // The face normal's vertical component is cos(u_o) cos(v_o): eq. (6)
     // with psi about the vertical (SweepTest checks it against Orientation).
     const double cosTilt = std::cos(row.state[slot::u_o]) * std::cos(row.state[slot::v_o]);
-    m.maxTilt = std::max(m.maxTilt, std::acos(std::clamp(cosTilt, -1.0, 1.0)));
-  });
-  m.event = summary.event;
-  m.simulated = summary.endTime;
-  if (m.event != physics::DomainEvent::None) m.eventTime = summary.endTime;
-  if (m.simulated > 0.0) m.meanRate = (psi.back() - psi.front()) / m.simulated;
-  analysis::TrialAnalysisDef judged;
-  judged.phases.minRate = def.analysis.minRate;
-  judged.phases.relativeBand = def.analysis.relativeBand;
-  judged.phases.absoluteBand = def.analysis.absoluteBand;
-  m.features = analysis::analyzeTrial({time, massX, massY, contactX, contactY, psi}, judged);
-  m.helixInSteadyPhase = m.features.phases.found && m.features.helixNote.empty();
-  m.paperLike = m.meetsPaper(def.analysis);
-  return m;
+    maxTilt_ = std::max(maxTilt_, std::acos(std::clamp(cosTilt, -1.0, 1.0)));
+  }
+
+  PointMeasurement finish(const script::SweepDef& def, const RunSummary& summary) const {
+    PointMeasurement m;
+    m.duration = def.duration;
+    m.maxTilt = maxTilt_;
+    m.event = summary.event;
+    m.simulated = summary.endTime;
+    if (m.event != physics::DomainEvent::None) m.eventTime = summary.endTime;
+    if (m.simulated > 0.0) m.meanRate = (psi_.back() - psi_.front()) / m.simulated;
+    analysis::TrialAnalysisDef judged;
+    judged.phases.minRate = def.analysis.minRate;
+    judged.phases.relativeBand = def.analysis.relativeBand;
+    judged.phases.absoluteBand = def.analysis.absoluteBand;
+    m.features = analysis::analyzeTrial({time_, massX_, massY_, contactX_, contactY_, psi_}, judged);
+    m.helixInSteadyPhase = m.features.phases.found && m.features.helixNote.empty();
+    m.paperLike = m.meetsPaper(def.analysis);
+    return m;
+  }
+
+ private:
+  std::vector<double> time_, massX_, massY_, contactX_, contactY_, psi_;
+  double maxTilt_ = 0.0;
+};
+
+}  // namespace
+
+PointMeasurement measurePoint(const SweepGrid& grid, const SweepPoint& point) {
+  const RunSettings settings = settingsOf(grid.def());
+  PointRecorder recorder(settings);
+  const RunSummary summary =
+      ScenarioRun(grid.scenario(point), settings).run([&](const TrajectoryRow& row) { recorder.add(row); });
+  return recorder.finish(grid.def(), summary);
+}
+
+std::vector<PointMeasurement> measurePoints(const SweepGrid& grid, const std::vector<SweepPoint>& points,
+                                            int laneWidth) {
+  const RunSettings settings = settingsOf(grid.def());
+  std::vector<script::ScenarioDef> scenarios;
+  bool lockstep = laneWidth > 1 && points.size() > 1;
+  for (const SweepPoint& point : points) {
+    scenarios.push_back(grid.scenario(point));
+    lockstep = lockstep && RoseLockstepRun::eligible(scenarios.back(), settings);
+  }
+  std::vector<PointMeasurement> out;
+  if (!lockstep) {
+    for (const SweepPoint& point : points) out.push_back(measurePoint(grid, point));
+    return out;
+  }
+  std::vector<PointRecorder> recorders(points.size(), PointRecorder(settings));
+  const std::vector<RunSummary> summaries = RoseLockstepRun(std::move(scenarios), settings, laneWidth)
+                                                .run([&](std::size_t lane, const TrajectoryRow& row) {
+                                                  recorders[lane].add(row);
+                                                });
+  for (std::size_t i = 0; i < points.size(); ++i) out.push_back(recorders[i].finish(grid.def(), summaries[i]));
+  return out;
 }
 
 }  // namespace hemiroll::game

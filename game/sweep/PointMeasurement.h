@@ -9,6 +9,7 @@
 // whatever thread runs it (no shared state; engine/analysis is pure).
 
 #include <string>
+#include <vector>
 
 #include "engine/analysis/TrialAnalyzer.h"
 #include "engine/physics/DomainEvents.h"
@@ -42,5 +43,12 @@ struct PointMeasurement {
 long long sampleEvery(double timeStep);
 
 PointMeasurement measurePoint(const SweepGrid& grid, const SweepPoint& point);
+
+// The same measurements for several points, the same bits: with laneWidth > 1
+// (a width this CPU runs) and points the lockstep run takes (the rose drive
+// with rk4), their trajectories are integrated together in SIMD lanes
+// (RoseLockstepRun); otherwise one after the other.
+std::vector<PointMeasurement> measurePoints(const SweepGrid& grid, const std::vector<SweepPoint>& points,
+                                            int laneWidth);
 
 }  // namespace hemiroll::game

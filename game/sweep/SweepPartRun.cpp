@@ -146,16 +146,26 @@ SweepPartReport runSweepPart(const SweepPartRequest& r) {
     record::writeFileAtomically(partial, start);
     record::DurableFile out(partial, "ab");
     const std::size_t first = kept.size();
+    // A job is one batch of up to laneWidth points, integrated together.
+    const std::size_t batch = static_cast<std::size_t>(std::max(1, r.laneWidth));
+    const std::size_t remaining = points.size() - first;
+    std::size_t delivered = 0;  // points, on the delivering thread
     OrderedPool(r.threads).run(
-        points.size() - first,
+        (remaining + batch - 1) / batch,
         [&](std::size_t job) {
-          const SweepPoint point = grid.point(points[first + job]);
-          return sweepRow(point, measurePoint(grid, point));
+          std::vector<SweepPoint> jobPoints;
+          for (std::size_t i = first + job * batch; i < std::min(points.size(), first + (job + 1) * batch); ++i)
+            jobPoints.push_back(grid.point(points[i]));
+          const std::vector<PointMeasurement> measured = measurePoints(grid, jobPoints, r.laneWidth);
+          std::string rows;
+          for (std::size_t i = 0; i < jobPoints.size(); ++i) rows += sweepRow(jobPoints[i], measured[i]);
+          return rows;
         },
-        [&](std::size_t, std::string&& row) {
-          if (!out.write(row) || !out.flush()) environment(out.path().string() + ": " + out.error());
+        [&](std::size_t job, std::string&& rows) {
+          if (!out.write(rows) || !out.flush()) environment(out.path().string() + ": " + out.error());
+          delivered = std::min(remaining, (job + 1) * batch);
         },
-        [&](std::size_t delivered) { progress.update(static_cast<long long>(first + delivered)); });
+        [&](std::size_t) { progress.update(static_cast<long long>(first + delivered)); });
     if (!out.close()) environment(out.path().string() + ": " + out.error());
     report.computed = report.points - report.resumed;
     progress.finish(report.points);

@@ -26,6 +26,9 @@ struct SweepPartRequest {
   SweepShard shard;
   std::filesystem::path outDir;
   int threads = 1;
+  // Trajectories integrated together in SIMD lanes (1: one at a time); the
+  // CSV is the same bytes for any width (RoseLockstepRun).
+  int laneWidth = 1;
   bool terminal = false;           // draw a progress bar on stderr
   std::string program;             // "hemiroll <version>"
 };

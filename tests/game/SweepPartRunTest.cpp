@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <functional>
 
+#include "engine/physics/BatchedRk4.h"
 #include "game/sweep/SweepError.h"
 #include "game/sweep/SweepManifest.h"
 #include "game/sweep/SweepTable.h"
@@ -48,6 +49,22 @@ TEST(SweepPartRun, TheCsvDoesNotDependOnTheThreadCount) {
   const std::string one = TempDirectory::read(dir.path() / "one" / "sweep.csv");
   EXPECT_EQ(readSweepRows(dir.path() / "one" / "sweep.csv").size(), 9u);
   EXPECT_EQ(one, TempDirectory::read(dir.path() / "three" / "sweep.csv"));
+}
+
+// Lanes that tip over (kTippingSweep) stop while the others go on, and the
+// rows are the same bytes at every width this CPU runs.
+TEST(SweepPartRun, TheCsvDoesNotDependOnTheLaneWidth) {
+  for (const char* source : {test::kTinySweep, test::kTippingSweep}) {
+    const TempDirectory dir;
+    test::runSweepInto(source, dir.path() / "1", {}, 1, 1);
+    const std::string scalar = TempDirectory::read(dir.path() / "1" / "sweep.csv");
+    for (int width : {2, 4, 8}) {
+      if (!physics::laneWidthSupported(width)) continue;
+      const std::string name = std::to_string(width);
+      test::runSweepInto(source, dir.path() / name, {}, 2, width);
+      EXPECT_EQ(scalar, TempDirectory::read(dir.path() / name / "sweep.csv")) << "lanes " << width;
+    }
+  }
 }
 
 // What a crash leaves of a finished run of the tiny sweep in dir/out: the

@@ -1,7 +1,12 @@
 // Cost of one right-hand side and one RK4 step for both models, on states
 // typical of play (tilted, spinning, mass point off centre). Targets on the
 // 2-core development machine: one RK4 step of the 12-state model <= 250 ns.
+// The lockstep benchmarks (BatchedRk4.h) step 64 trajectories a time at each
+// lane width; compare their items_per_second (trajectory steps per second)
+// with the scalar RK4 steps' (issue 16: at least 3x on one core).
 #include <benchmark/benchmark.h>
+
+#include <vector>
 
 #include "engine/physics/Physics.h"
 
@@ -54,6 +59,7 @@ void BM_ForceDrivenRk4Step(benchmark::State& state) {
     benchmark::DoNotOptimize(x);
     x = x0;  // stay on a typical state rather than drift away from it
   }
+  state.SetItemsProcessed(state.iterations());
 }
 BENCHMARK(BM_ForceDrivenRk4Step)->Arg(0)->Arg(1)->ArgName("coupledM3");
 
@@ -118,8 +124,67 @@ void BM_PrescribedRk4Step(benchmark::State& state) {
     benchmark::DoNotOptimize(x);
     x = x0;
   }
+  state.SetItemsProcessed(state.iterations());
 }
 BENCHMARK(BM_PrescribedRk4Step);
+
+// Lockstep: 64 trajectories, varied as a sweep varies them, back on their
+// typical starts every 256 steps (a few per cent of a step's cost) so that
+// the benchmark measures typical states rather than tipped-over ones.
+constexpr int kLockstepLanes = 64;
+constexpr int kLockstepRestart = 256;
+
+void BM_PrescribedLockstepRk4(benchmark::State& state) {
+  const int width = static_cast<int>(state.range(0));
+  if (!laneWidthSupported(width)) {
+    state.SkipWithError("this CPU does not run this lane width");
+    return;
+  }
+  RoseBatch batch(width);
+  std::vector<BodyState> starts;
+  for (int lane = 0; lane < kLockstepLanes; ++lane) {
+    RoseDef rose;
+    rose.k = 4.0 + lane % 13;
+    rose.omega = -1.0 + 0.08 * (lane / 13);
+    starts.push_back(typicalBody());
+    batch.add(HemisphereParams{}, rose, starts.back());
+  }
+  int steps = 0;
+  for (auto _ : state) {
+    batch.step(1.3, 1e-3);
+    if (++steps == kLockstepRestart) {
+      for (int lane = 0; lane < kLockstepLanes; ++lane) batch.setState(lane, starts[lane]);
+      steps = 0;
+    }
+  }
+  state.SetItemsProcessed(state.iterations() * kLockstepLanes);
+}
+BENCHMARK(BM_PrescribedLockstepRk4)->Arg(1)->Arg(2)->Arg(4)->Arg(8)->ArgName("lanes");
+
+void BM_ForceDrivenLockstepRk4(benchmark::State& state) {
+  const int width = static_cast<int>(state.range(0));
+  if (!laneWidthSupported(width)) {
+    state.SkipWithError("this CPU does not run this lane width");
+    return;
+  }
+  ForceDrivenBatch batch(ForceMethod::M3, width);
+  for (int lane = 0; lane < kLockstepLanes; ++lane) {
+    CouplingDef coupling;
+    coupling.stiffness = 150.0 + 4.0 * lane;
+    batch.add(HemisphereParams{}, coupling, typicalState());
+    batch.holdProxy(lane, typicalProxy());
+  }
+  int steps = 0;
+  for (auto _ : state) {
+    batch.step(0.0, 1e-3);
+    if (++steps == kLockstepRestart) {
+      for (int lane = 0; lane < kLockstepLanes; ++lane) batch.setState(lane, typicalState());
+      steps = 0;
+    }
+  }
+  state.SetItemsProcessed(state.iterations() * kLockstepLanes);
+}
+BENCHMARK(BM_ForceDrivenLockstepRk4)->Arg(1)->Arg(2)->Arg(4)->Arg(8)->ArgName("lanes");
 
 // The stepper on top of RK4: domain checks every step, as the servo loop runs it.
 void BM_StepperAdvance(benchmark::State& state) {

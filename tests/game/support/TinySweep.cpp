@@ -25,13 +25,14 @@ const char* const kTippingSweep = R"(return {
 script::SweepDef sweepOf(const std::string& source) { return script::SweepLoader().loadSource(source, "tiny.lua"); }
 
 game::SweepPartReport runSweepInto(const std::string& source, const std::filesystem::path& dir, game::SweepShard shard,
-                                   int threads) {
+                                   int threads, int laneWidth) {
   game::SweepPartRequest request;
   request.def = sweepOf(source);
   request.specFile = "tiny.lua";
   request.shard = shard;
   request.outDir = dir;
   request.threads = threads;
+  request.laneWidth = laneWidth;
   request.program = "hemiroll test";
   return game::runSweepPart(request);
 }

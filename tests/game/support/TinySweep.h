@@ -18,8 +18,8 @@ extern const char* const kTippingSweep;
 
 script::SweepDef sweepOf(const std::string& source);
 
-// Runs `source` (shard, threads) into dir in-process.
+// Runs `source` (shard, threads, SIMD lanes) into dir in-process.
 game::SweepPartReport runSweepInto(const std::string& source, const std::filesystem::path& dir,
-                                   game::SweepShard shard = {}, int threads = 1);
+                                   game::SweepShard shard = {}, int threads = 1, int laneWidth = 1);
 
 }  // namespace hemiroll::test

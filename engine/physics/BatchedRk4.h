@@ -1,0 +1,155 @@
+#pragma once
+// Many independent trajectories of one model, stepped with RK4 in lockstep,
+// one trajectory per SIMD lane: the 8-state rose drive (sweeps) and the
+// 12-state force-driven model, free or coupled to a held proxy (rollouts).
+//
+// Why lanes: one trajectory is near its limit (a right-hand side is a long
+// dependent chain of about 48 ns); many trajectories of the same model are
+// the same chain many times over, which a vector unit runs side by side.
+//
+// Same bits as the scalar path, in every lane and at every width: each lane
+// runs the very functions the scalar systems evaluate (prescribedRatesOf,
+// forceDrivenRatesOf, roseSampleOf: templates over the number type), with
+// sinCosLanes for the engine's sinCos and RK4's operations in RungeKutta4's
+// order; the build forbids FMA contraction (-ffp-contract=off), so a vector
+// lane rounds as a scalar does. tests/physics/BatchedRk4Test checks it bit
+// for bit against RungeKutta4 and the scalar systems at every width this CPU
+// runs. A sweep or a replay is therefore the same whatever the lane width.
+//
+// Widths: 8 lanes with AVX-512F, 4 with AVX2, 2 with SSE2 (every x86-64),
+// chosen at run time (bestLaneWidth); 1 runs the same code on plain doubles.
+// Each width is its own translation unit compiled for its instruction set
+// (BatchedRk4Lanes*.cpp); the release binary runs on any x86-64.
+//
+// Lanes that stop (a domain event, located by the caller with the scalar
+// Stepper) are retired: they keep their last state and no longer change,
+// while the others go on.
+
+#include <optional>
+#include <vector>
+
+#include "engine/physics/ForceCoupling.h"
+#include "engine/physics/HemisphereParams.h"
+#include "engine/physics/RoseDrive.h"
+#include "engine/physics/StateLayout.h"
+
+namespace hemiroll::physics {
+
+// The widest lane count this CPU runs: 8, 4 or 2.
+int bestLaneWidth();
+// True when this CPU runs `width` lanes (1, 2, 4 or 8).
+bool laneWidthSupported(int width);
+
+namespace lanes {
+// The data of a batch, structure of arrays: row r of `rows` is one quantity
+// for every lane (rows + r * padded), the state likewise; padded is a
+// multiple of 8, unused lanes are inactive.
+struct BatchView {
+  const double* rows;
+  double* state;
+  int padded;
+  int method;  // the coupling's ForceMethod, or -1 for free motion (12-state only)
+};
+// Rows shared by both models: the mass constants, then whether a lane is active.
+enum Row : int {
+  kPointMass,
+  kShellMass,
+  kRadius,
+  kGravity,
+  kComDepth,
+  kShellMoment,
+  kActive,
+  kCommonRows,
+  // The rose drive's.
+  kRoseR1 = kCommonRows,
+  kRoseR2,
+  kRoseK,
+  kRoseOmega,
+  kRoseRows,
+  // The coupling's, and the held proxy's pose.
+  kStiffness = kCommonRows,
+  kDamping,
+  kAlpha,
+  kProxyX,
+  kProxyY,
+  kProxyZ,
+  kProxyVx,
+  kProxyVy,
+  kProxyVz,
+  kCoupledRows,
+};
+
+// One width's step of every active lane, defined in BatchedRk4Lanes<W>.cpp
+// (widths 1 and 2 in BatchedRk4Lanes2.cpp).
+void roseStepLanes1(const BatchView& v, double t, double h);
+void roseStepLanes2(const BatchView& v, double t, double h);
+void roseStepLanes4(const BatchView& v, double t, double h);
+void roseStepLanes8(const BatchView& v, double t, double h);
+void forceDrivenStepLanes1(const BatchView& v, double h);
+void forceDrivenStepLanes2(const BatchView& v, double h);
+void forceDrivenStepLanes4(const BatchView& v, double h);
+void forceDrivenStepLanes8(const BatchView& v, double h);
+}  // namespace lanes
+
+// The lockstep state shared by both models: N states per lane.
+template <int N>
+class LaneBatch {
+ public:
+  int width() const { return width_; }
+  int size() const { return size_; }
+  StateVector<N> state(int lane) const;
+  // The state before the last step (for locating an event inside it).
+  StateVector<N> previousState(int lane) const;
+  void setState(int lane, const StateVector<N>& x);
+  bool active(int lane) const { return row(lanes::kActive)[lane] != 0.0; }
+  // The lane keeps its state and stops changing.
+  void retire(int lane) { rowMutable(lanes::kActive)[lane] = 0.0; }
+  int activeCount() const;
+
+ protected:
+  LaneBatch(int width, int rowCount);
+  int addLane(const HemisphereParams& params, const StateVector<N>& x0);
+  const double* row(int r) const { return rows_.data() + static_cast<std::size_t>(r) * padded_; }
+  double* rowMutable(int r) { return rows_.data() + static_cast<std::size_t>(r) * padded_; }
+  // Keeps the states as previousState() and gives the kernels the batch.
+  lanes::BatchView beginStep(int method);
+
+ private:
+  void grow();
+
+  int width_;
+  int rowCount_;
+  int size_ = 0;
+  int padded_ = 0;
+  std::vector<double> rows_;
+  std::vector<double> state_;
+  std::vector<double> previous_;
+};
+
+// The 8-state prescribed rose drive (PrescribedDriveSystem with a RoseDrive).
+class RoseBatch final : public LaneBatch<8> {
+ public:
+  explicit RoseBatch(int width = bestLaneWidth());
+  // The new lane's index.
+  int add(const HemisphereParams& params, const RoseDef& rose, const BodyState& x0);
+  // One RK4 step of every active lane from t to t + h.
+  void step(double t, double h);
+};
+
+// The 12-state force-driven model (ForceDrivenSystem): free motion, or every
+// lane coupled by the same method to its own proxy, held between steps.
+class ForceDrivenBatch final : public LaneBatch<12> {
+ public:
+  // Free motion without a coupling method; else the method all lanes share.
+  explicit ForceDrivenBatch(std::optional<ForceMethod> coupling, int width = bestLaneWidth());
+  // The coupling's gains (its method must be the batch's); ignored when free.
+  int add(const HemisphereParams& params, const CouplingDef& coupling, const ForceDrivenState& x0);
+  void holdProxy(int lane, const ProxyPose& pose);
+  // One RK4 step of every active lane (autonomous: t does not enter).
+  void step(double t, double h);
+
+ private:
+  int method_;
+};
+
+}  // namespace hemiroll::physics

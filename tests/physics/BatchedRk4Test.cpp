@@ -1,0 +1,201 @@
+// BatchedRk4.h: every lane, at every width this CPU runs, has exactly the
+// bits of the scalar path (RungeKutta4 on PrescribedDriveSystem with a
+// RoseDrive, or on ForceDrivenSystem free or coupled to a held proxy); a
+// retired lane stops while the others go on; widths this CPU lacks and a
+// mixed coupling are refused.
+//
+// Why exact equality, not a tolerance: the lanes run the scalar systems' own
+// arithmetic (the templates of RollingDynamics.h and the systems' rates
+// functions), so any difference is a bug, and sweeps rely on the bits.
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <optional>
+#include <random>
+#include <vector>
+
+#include "engine/physics/BatchedRk4.h"
+#include "engine/physics/ForceDrivenSystem.h"
+#include "engine/physics/Integrator.h"
+#include "engine/physics/PrescribedDriveSystem.h"
+#include "engine/physics/RoseDrive.h"
+#include "tests/physics/support/TestModel.h"
+
+namespace hemiroll::test {
+namespace {
+
+using physics::BodyState;
+using physics::CouplingDef;
+using physics::ForceDrivenState;
+using physics::ForceMethod;
+using physics::ProxyPose;
+using physics::RoseDef;
+
+std::vector<int> supportedWidths() {
+  std::vector<int> widths;
+  for (int w : {1, 2, 4, 8})
+    if (physics::laneWidthSupported(w)) widths.push_back(w);
+  return widths;
+}
+
+template <int N>
+bool sameBits(const physics::StateVector<N>& a, const physics::StateVector<N>& b) {
+  return std::memcmp(a.data(), b.data(), sizeof(double) * N) == 0;
+}
+
+// Eleven lanes: not a multiple of any width, so padding lanes are stepped too.
+constexpr int kLanes = 11;
+
+struct RoseLane {
+  HemisphereParams params;
+  RoseDef rose;
+  BodyState x0;
+};
+
+// Varied masses, roses and starts. Some tilts exceed 0.78 rad and some psi
+// are large, so sinCosLanes reduces the angle; one lane's psi is beyond the
+// exact reduction range, so that group takes the per-lane fallback.
+std::vector<RoseLane> roseLanes() {
+  std::mt19937 rng(20261126);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::vector<RoseLane> lanes;
+  for (int i = 0; i < kLanes; ++i) {
+    RoseLane l;
+    l.params.pointMass = 1.0 + 0.3 * unit(rng);
+    l.params.shellMass = 0.1 + 0.05 * unit(rng);
+    l.params.radius = 0.04 + 0.01 * unit(rng);
+    l.rose.k = 4.0 + i;
+    l.rose.omega = -0.04 - 0.09 * i;
+    l.rose.r1 = 0.015 + 0.002 * unit(rng);
+    l.rose.r2 = 0.008 + 0.002 * unit(rng);
+    for (int s = 0; s < 8; ++s) l.x0[s] = 0.3 * unit(rng);
+    l.x0[physics::body_slot::u_o] = (i % 3 == 0 ? 1.1 : 0.2) * unit(rng);
+    l.x0[physics::body_slot::psi] = i == 5 ? 2.0e6 : (i % 2 == 0 ? 40.0 * unit(rng) : unit(rng));
+    lanes.push_back(l);
+  }
+  return lanes;
+}
+
+// Runs every lane through the batch at `width` and through the scalar path,
+// retiring lane `retireLane` after `retireAfter` steps; expects the same bits
+// at every step.
+void expectRoseLanesMatchScalar(int width, int steps, int retireLane, int retireAfter) {
+  const std::vector<RoseLane> lanes = roseLanes();
+  physics::RoseBatch batch(width);
+  std::vector<physics::RoseDrive> roses;
+  roses.reserve(lanes.size());
+  std::vector<physics::PrescribedDriveSystem> systems;
+  systems.reserve(lanes.size());
+  std::vector<BodyState> scalar;
+  for (const RoseLane& l : lanes) {
+    EXPECT_EQ(batch.add(l.params, l.rose, l.x0), static_cast<int>(scalar.size()));
+    roses.emplace_back(l.rose);
+    systems.emplace_back(l.params, roses.back());
+    scalar.push_back(l.x0);
+  }
+  physics::RungeKutta4<8> rk4;
+  const double h = 1e-3;
+  for (int i = 0; i < steps; ++i) {
+    if (i == retireAfter) batch.retire(retireLane);
+    const double t = static_cast<double>(i) * h;
+    batch.step(t, h);
+    for (int lane = 0; lane < kLanes; ++lane) {
+      ASSERT_TRUE(sameBits<8>(batch.previousState(lane), scalar[lane])) << "lane " << lane << ", step " << i;
+      if (lane != retireLane || i < retireAfter) rk4.step(systems[lane], t, scalar[lane], h);
+      ASSERT_TRUE(sameBits<8>(batch.state(lane), scalar[lane]))
+          << "width " << width << ", lane " << lane << ", step " << i << ": " << batch.state(lane).transpose()
+          << " vs " << scalar[lane].transpose();
+    }
+  }
+  EXPECT_EQ(batch.activeCount(), kLanes - 1);
+  EXPECT_FALSE(batch.active(retireLane));
+}
+
+TEST(BatchedRk4Test, RoseLanesHaveTheScalarBitsAtEveryWidth) {
+  for (int width : supportedWidths()) expectRoseLanesMatchScalar(width, 300, 3, 120);
+}
+
+TEST(BatchedRk4Test, TheBestWidthIsOneThisCpuRuns) {
+  const int best = physics::bestLaneWidth();
+  EXPECT_TRUE(best == 2 || best == 4 || best == 8);
+  EXPECT_TRUE(physics::laneWidthSupported(best));
+  EXPECT_FALSE(physics::laneWidthSupported(3));
+  EXPECT_FALSE(physics::laneWidthSupported(16));
+}
+
+TEST(BatchedRk4Test, AWidthThisCpuLacksIsRefusedByName) {
+  try {
+    physics::RoseBatch batch(3);
+    FAIL() << "width 3 accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("lane width 3"), std::string::npos) << e.what();
+  }
+}
+
+// The 12-state lanes: free, or coupled by M1, M2 or M3 with per-lane gains
+// and proxies that move every few steps, as the servo holds them.
+void expectForceDrivenLanesMatchScalar(int width, std::optional<ForceMethod> method) {
+  std::mt19937 rng(7 + (method ? static_cast<int>(*method) : 9));
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  physics::ForceDrivenBatch batch(method, width);
+  std::vector<std::unique_ptr<physics::ForceDrivenSystem>> systems;
+  std::vector<ForceDrivenState> scalar;
+  for (int lane = 0; lane < kLanes; ++lane) {
+    HemisphereParams params;
+    params.pointMass = 1.0 + 0.4 * unit(rng);
+    params.shellMass = 0.1 + 0.05 * unit(rng);
+    CouplingDef coupling;
+    coupling.method = method.value_or(ForceMethod::M3);
+    coupling.stiffness = 250.0 + 100.0 * unit(rng);
+    coupling.damping = 10.0 + 5.0 * unit(rng);
+    coupling.alpha = 2.5 + 1.5 * unit(rng);
+    ForceDrivenState x0;
+    for (int s = 0; s < 12; ++s) x0[s] = 0.2 * unit(rng);
+    x0[physics::force_slot::x_p] = 0.01 * unit(rng);
+    x0[physics::force_slot::y_p] = 0.01 * unit(rng);
+    x0[physics::force_slot::v_o] = (lane % 4 == 1 ? 0.9 : 0.1) * unit(rng);
+    batch.add(params, coupling, x0);
+    systems.push_back(std::make_unique<physics::ForceDrivenSystem>(params));
+    if (method) systems.back()->setCoupling(coupling);
+    scalar.push_back(x0);
+  }
+  physics::RungeKutta4<12> rk4;
+  const double h = 1e-3;
+  for (int i = 0; i < 200; ++i) {
+    if (method && i % 10 == 0) {
+      for (int lane = 0; lane < kLanes; ++lane) {
+        ProxyPose pose;
+        pose.position = Vec3(0.02 * unit(rng), 0.02 * unit(rng), 0.04 + 0.01 * unit(rng));
+        pose.velocity = Vec3(0.1 * unit(rng), 0.1 * unit(rng), 0.02 * unit(rng));
+        batch.holdProxy(lane, pose);
+        systems[lane]->holdProxy(pose);
+      }
+    }
+    batch.step(static_cast<double>(i) * h, h);
+    for (int lane = 0; lane < kLanes; ++lane) {
+      rk4.step(*systems[lane], static_cast<double>(i) * h, scalar[lane], h);
+      ASSERT_TRUE(sameBits<12>(batch.state(lane), scalar[lane]))
+          << "width " << width << ", method " << (method ? physics::forceMethodName(*method) : "free") << ", lane "
+          << lane << ", step " << i;
+    }
+  }
+}
+
+TEST(BatchedRk4Test, ForceDrivenLanesHaveTheScalarBitsFreeAndCoupled) {
+  for (int width : supportedWidths()) {
+    expectForceDrivenLanesMatchScalar(width, std::nullopt);
+    for (ForceMethod m : {ForceMethod::M1, ForceMethod::M2, ForceMethod::M3})
+      expectForceDrivenLanesMatchScalar(width, m);
+  }
+}
+
+TEST(BatchedRk4Test, ALaneCoupledByAnotherMethodIsRefused) {
+  physics::ForceDrivenBatch batch(ForceMethod::M3, 1);
+  CouplingDef m1;
+  m1.method = ForceMethod::M1;
+  EXPECT_THROW(batch.add(HemisphereParams{}, m1, ForceDrivenState::Zero()), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace hemiroll::test
