@@ -50,4 +50,11 @@ inline constexpr double kMaxToneWork = 5e7;
 
 Tone dominantTone(std::span<const std::complex<double>> signal, double dt, const ToneSearch& search);
 
+// |sum_n z_n exp(-2 pi i f_k n dt)|^2 for each frequency f_k, into out[k]
+// (the periodogram's values before scaling). Each power has the bits of the
+// one-frequency sum by a rotating phasor (renormalised every 256 samples);
+// several are computed side by side because one alone waits on its chain.
+void periodogramPowers(std::span<const std::complex<double>> samples, std::span<const double> frequencies,
+                       double dt, std::span<double> out);
+
 }  // namespace hemiroll::analysis

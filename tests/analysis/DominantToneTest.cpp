@@ -13,6 +13,35 @@
 namespace hemiroll::analysis {
 namespace {
 
+// The one-frequency sum written plainly with std::complex: the definition
+// periodogramPowers must reproduce to the bit, whichever chains it shares.
+double onePower(const std::vector<std::complex<double>>& z, double f, double dt) {
+  const double step = -2.0 * std::numbers::pi * f * dt;
+  const std::complex<double> rotate(std::cos(step), std::sin(step));
+  std::complex<double> phasor(1.0, 0.0), sum(0.0, 0.0);
+  for (std::size_t n = 0; n < z.size(); ++n) {
+    sum += z[n] * phasor;
+    phasor *= rotate;
+    if ((n & 255u) == 255u) phasor /= std::abs(phasor);
+  }
+  return std::norm(sum);
+}
+
+TEST(DominantTone, PeriodogramPowersHaveTheBitsOfOneFrequencyAtATime) {
+  std::mt19937 rng(26);
+  std::normal_distribution<double> noise(0.0, 1.0);
+  // 1000 samples (the renormalisation every 256 included); 13 frequencies:
+  // not a multiple of the chains, both signs, zero among them.
+  std::vector<std::complex<double>> z;
+  for (int i = 0; i < 1000; ++i) z.emplace_back(noise(rng), noise(rng));
+  std::vector<double> freqs;
+  for (int k = -6; k <= 6; ++k) freqs.push_back(0.37 * k);
+  std::vector<double> powers(freqs.size(), -1.0);
+  periodogramPowers(z, freqs, 0.01, powers);
+  for (std::size_t k = 0; k < freqs.size(); ++k)
+    EXPECT_EQ(powers[k], onePower(z, freqs[k], 0.01)) << "f = " << freqs[k];
+}
+
 TEST(DominantTone, FindsAClockwiseToneBesideADrift) {
   // 0.45 Hz clockwise circle of 8 mm on top of a linear drift: over 35 s at 100 Hz.
   std::vector<std::complex<double>> z;
