@@ -125,12 +125,35 @@ inline SinCos sinCos(double x) {
   }
 }
 
+namespace detail {
+// The integer vector with T's lanes (a member typedef: GCC drops a dependent
+// vector_size from a typedef local to a function template).
+template <class T>
+struct LaneIntsOf {
+  typedef long long type __attribute__((vector_size(sizeof(T))));
+};
+
+// sin and cos of every lane of T, |x| < kExactReductionLimit in each: the
+// Cody-Waite reduction, the kernels, and the quadrant's swap and signs as
+// sinCos's switch makes them.
+template <class T>
+inline SinCosOf<T> reducedSinCos(T x) {
+  using LaneInts = typename LaneIntsOf<T>::type;
+  const T n = (x * kTwoOverPi + kRoundingShift) - kRoundingShift;
+  const T r = ((x - n * kPiOver2Hi) - n * kPiOver2Mid) - n * kPiOver2Lo;
+  const T s = sinKernel(r), c = cosKernel(r);
+  const LaneInts quadrant = __builtin_convertvector(n, LaneInts) & 3;
+  const LaneInts swap = (quadrant & 1) != 0;
+  const T sinAbs = swap ? c : s, cosAbs = swap ? s : c;
+  return {(quadrant & 2) != 0 ? -sinAbs : sinAbs, ((quadrant + 1) & 2) != 0 ? -cosAbs : cosAbs};
+}
+}  // namespace detail
+
 // Two angles at once, each with exactly the bits sinCos gives it: the same
 // operations in the same order, in the two lanes of an SSE2 register (GCC and
 // Clang vector extensions). The orientation needs three per evaluation.
 inline void sinCos2(double a, double b, SinCos& outA, SinCos& outB) {
   using namespace detail;
-  typedef long long LaneInts __attribute__((vector_size(16)));
   const Lanes x = {a, b};
   // The common case first (tilts are mostly small); NaN fails both tests.
   if (std::fabs(a) < kNoReductionLimit && std::fabs(b) < kNoReductionLimit) {
@@ -144,31 +167,15 @@ inline void sinCos2(double a, double b, SinCos& outA, SinCos& outB) {
     outB = sinCos(b);
     return;
   }
-  const Lanes n = (x * kTwoOverPi + kRoundingShift) - kRoundingShift;
-  const Lanes r = ((x - n * kPiOver2Hi) - n * kPiOver2Mid) - n * kPiOver2Lo;
-  const Lanes s = sinKernel(r), c = cosKernel(r);
-  const LaneInts quadrant = __builtin_convertvector(n, LaneInts) & 3;
-  const LaneInts swap = (quadrant & 1) != 0;
-  const Lanes sinAbs = swap ? c : s, cosAbs = swap ? s : c;
-  const Lanes sinv = (quadrant & 2) != 0 ? -sinAbs : sinAbs;
-  const Lanes cosv = ((quadrant + 1) & 2) != 0 ? -cosAbs : cosAbs;
-  outA = {sinv[0], cosv[0]};
-  outB = {sinv[1], cosv[1]};
+  const SinCosOf<Lanes> both = reducedSinCos(x);
+  outA = {both.sin[0], both.cos[0]};
+  outB = {both.sin[1], both.cos[1]};
 }
-
-namespace detail {
-// The integer vector with T's lanes (a member typedef: GCC drops a dependent
-// vector_size from a typedef local to a function template).
-template <class T>
-struct LaneIntsOf {
-  typedef long long type __attribute__((vector_size(sizeof(T))));
-};
-}  // namespace detail
 
 // Each lane of T (a GCC vector of doubles, BatchedRk4.h) with exactly the
 // bits sinCos gives that lane's angle. It always reduces: for |x| < 0.78 the
 // reduction gives n = 0 and r = x exactly, so skipping it (as sinCos does)
-// changes no bit; the kernels and the quadrant logic are sinCos2's.
+// changes no bit; the reduction and quadrant logic are sinCos2's.
 template <class T>
 inline SinCosOf<T> sinCosLanes(T x) {
   using namespace detail;
@@ -190,13 +197,7 @@ inline SinCosOf<T> sinCosLanes(T x) {
     __builtin_memcpy(&out.cos, cosines, sizeof out.cos);
     return out;
   }
-  const T n = (x * kTwoOverPi + kRoundingShift) - kRoundingShift;
-  const T r = ((x - n * kPiOver2Hi) - n * kPiOver2Mid) - n * kPiOver2Lo;
-  const T s = sinKernel(r), c = cosKernel(r);
-  const LaneInts quadrant = __builtin_convertvector(n, LaneInts) & 3;
-  const LaneInts swap = (quadrant & 1) != 0;
-  const T sinAbs = swap ? c : s, cosAbs = swap ? s : c;
-  return {(quadrant & 2) != 0 ? -sinAbs : sinAbs, ((quadrant + 1) & 2) != 0 ? -cosAbs : cosAbs};
+  return reducedSinCos(x);
 }
 
 }  // namespace hemiroll::physics

@@ -39,7 +39,13 @@ struct DriftRow {
 };
 
 // log-log interpolation of a method's curve at error level e: the least CPU
-// time among the segments that bracket e (a curve may fold back); < 0 if none.
+// time among the segments that bracket e (a curve may fold back), and the
+// evaluations on that segment; both < 0 if none.
+struct CostAtError {
+  double seconds = -1.0;
+  double evaluations = -1.0;
+};
+CostAtError costAtError(const std::vector<WorkPoint>& curve, double e);
 double timeAtError(const std::vector<WorkPoint>& curve, double e);
 
 void writeCsv(const std::string& path, const std::vector<WorkPoint>& points);
