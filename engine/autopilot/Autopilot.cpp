@@ -8,6 +8,7 @@
 #include "engine/autopilot/LandingSearch.h"
 #include "engine/autopilot/PlannerWorker.h"
 #include "engine/autopilot/UprightContact.h"
+#include "engine/physics/BatchedRk4.h"
 
 namespace hemiroll::autopilot {
 
@@ -50,7 +51,8 @@ Autopilot::Autopilot(const AutopilotDef& def)
       constants_(def.params),
       policy_(constants_, def.helix, def.dt),
       work_(policy_),
-      model_(def.params, def.coupling, def.dt) {
+      model_(def.params, def.coupling, def.dt),
+      domain_(def.params) {
   def_.budget = std::clamp(def_.budget, 0.25, 4.0);
   stats_.decisionWall.reserve(4096);
   if (def_.plannerThread) worker_ = std::make_unique<PlannerWorker>([this](const PlanJob& j) { return plan(j); });
@@ -246,58 +248,119 @@ void Autopilot::predict(AutopilotInput& input, double lead) {
   input.state = model_.state();
 }
 
-Autopilot::Outcome Autopilot::rollout(HelixPolicy policy, const AutopilotInput& input, double horizon, bool judge) {
-  model_.reset(input.state, input.time);
-  Vec3 last = planLastProxy_;
-  Outcome o;
-  long long ticks = std::llround(horizon / def_.dt);
+namespace {
+
+// Lanes for n rollouts: a group no wider than needed (a lane stepped for
+// nothing costs as much as one in use).
+int laneWidthFor(std::size_t n) {
+  for (int width : {1, 2, 4, 8})
+    if (static_cast<std::size_t>(width) >= n && physics::laneWidthSupported(width)) return width;
+  return physics::bestLaneWidth();
+}
+
+}  // namespace
+
+std::vector<Autopilot::Outcome> Autopilot::rollouts(std::vector<HelixPolicy> policies, const AutopilotInput& input,
+                                                    double horizon, bool judge) {
+  // One rollout's progress: what the loop of a single rollout keeps.
+  struct Lane {
+    Outcome o;
+    Vec3 last;
+    long long ticks = 0, k = 0, inside = 0, meanCount = 0;
+    double meanError = 0.0;
+    bool done = false;
+  };
+  const std::size_t n = policies.size();
+  physics::ForceDrivenBatch batch(def_.coupling.method, laneWidthFor(n));
+  std::vector<Lane> lanes(n);
   const long long holdTicks = std::llround(planGoal_.hold / def_.dt);
-  long long inside = 0;
-  long long k = 0;
-  double meanError = 0.0;
-  long long meanCount = 0;
-  for (; k < ticks; ++k) {
-    const Vec3 proxy = deliverable(policy.proxyFor(model_.state()), last);
-    const Vec3 velocity = (proxy - last) / def_.dt;
-    last = proxy;
-    if (model_.tick(proxy, velocity) != physics::DomainEvent::None || inForbiddenZone(planGoal_, model_.state())) {
-      o.event = true;
-      o.success = false;
-      break;
+  // A start outside the domain: PlantModel's stepper reports it at the first tick.
+  const bool startsOutside = domain_.domainEvent(input.time, input.state) != physics::DomainEvent::None;
+  for (std::size_t i = 0; i < n; ++i) {
+    batch.add(def_.params, def_.coupling, input.state);
+    lanes[i].last = planLastProxy_;
+    lanes[i].ticks = std::llround(horizon / def_.dt);
+    lanes[i].done = lanes[i].ticks <= 0;
+    if (startsOutside && !lanes[i].done) {
+      lanes[i].o.event = true;
+      lanes[i].done = true;
     }
-    if (o.success) continue;
-    if (!judge) {
-      // The second half of the horizon: c_up rides a loop per turn of the
-      // helix, so its mean, not its last value, says where the drift goes.
-      if (2 * k >= ticks) {
-        const UprightContact up = uprightContact(constants_, model_.state());
-        meanError += uprightError(up.point);
-        ++meanCount;
-        o.excess = std::max(o.excess, std::max(0.0, std::abs(model_.state()[6]) - 1.2) + std::max(0.0, up.tilt - 0.9));
+    if (lanes[i].done) batch.retire(static_cast<int>(i));
+  }
+  physics::ForceDrivenState x;
+  for (long long tick = 0; batch.activeCount() > 0; ++tick) {
+    for (std::size_t i = 0; i < n; ++i) {
+      if (lanes[i].done) continue;
+      x = batch.state(static_cast<int>(i));
+      physics::ProxyPose pose;
+      pose.position = deliverable(policies[i].proxyFor(x), lanes[i].last);
+      pose.velocity = (pose.position - lanes[i].last) / def_.dt;
+      lanes[i].last = pose.position;
+      batch.holdProxy(static_cast<int>(i), pose);
+    }
+    batch.step(0.0, def_.dt);
+    for (std::size_t i = 0; i < n; ++i) {
+      Lane& lane = lanes[i];
+      if (lane.done) continue;
+      Outcome& o = lane.o;
+      x = batch.state(static_cast<int>(i));
+      auto finish = [&] {
+        lane.done = true;
+        batch.retire(static_cast<int>(i));
+      };
+      if (domain_.domainEvent(0.0, x) != physics::DomainEvent::None || inForbiddenZone(planGoal_, x)) {
+        o.event = true;
+        o.success = false;
+        finish();
+        continue;
       }
-      continue;
-    }
-    const double e = normalisedError(planGoal_, model_.state());
-    const double soft = squaredError(planGoal_, model_.state());
-    if (soft < o.softCost) {
-      o.softCost = soft;
-      o.psiError = planGoal_.set[11] ? std::abs(std::remainder(model_.state()[11] - planGoal_.target[11], 2.0 * M_PI)) /
-                                       planGoal_.tolerance[11]
-                                 : 0.0;
-    }
-    inside = e <= 1.0 ? inside + 1 : 0;
-    if (inside > holdTicks && !o.success) {
-      // Held: but a plan that swings through the bands and tips over a
-      // moment later hands the next stage a wreck, so it must also stay in
-      // the domain for kAfterSuccess more.
-      o.success = true;
-      o.time = static_cast<double>(k + 1) * def_.dt;
-      ticks = std::min(ticks, k + 1 + std::llround(kAfterSuccess / def_.dt));
+      lane.k = tick + 1;
+      if (!o.success) {
+        if (!judge) {
+          // The second half of the horizon: c_up rides a loop per turn of the
+          // helix, so its mean, not its last value, says where the drift goes.
+          if (2 * tick >= lane.ticks) {
+            const UprightContact up = uprightContact(constants_, x);
+            lane.meanError += uprightError(up.point);
+            ++lane.meanCount;
+            o.excess = std::max(o.excess, std::max(0.0, std::abs(x[6]) - 1.2) + std::max(0.0, up.tilt - 0.9));
+          }
+        } else {
+          const double e = normalisedError(planGoal_, x);
+          const double soft = squaredError(planGoal_, x);
+          if (soft < o.softCost) {
+            o.softCost = soft;
+            o.psiError = planGoal_.set[11] ? std::abs(std::remainder(x[11] - planGoal_.target[11], 2.0 * M_PI)) /
+                                                 planGoal_.tolerance[11]
+                                           : 0.0;
+          }
+          lane.inside = e <= 1.0 ? lane.inside + 1 : 0;
+          if (lane.inside > holdTicks) {
+            // Held: but a plan that swings through the bands and tips over a
+            // moment later hands the next stage a wreck, so it must also stay
+            // in the domain for kAfterSuccess more.
+            o.success = true;
+            o.time = static_cast<double>(tick + 1) * def_.dt;
+            lane.ticks = std::min(lane.ticks, tick + 1 + std::llround(kAfterSuccess / def_.dt));
+          }
+        }
+      }
+      if (lane.k >= lane.ticks) finish();
     }
   }
-  stats_.rolloutSeconds += static_cast<double>(k) * def_.dt;
-  o.meanUprightError = meanCount > 0 ? meanError / static_cast<double>(meanCount) : 1e30;
-  return o;
+  std::vector<Outcome> out;
+  out.reserve(n);
+  for (Lane& lane : lanes) {
+    stats_.rolloutSeconds += static_cast<double>(lane.k) * def_.dt;
+    lane.o.meanUprightError = lane.meanCount > 0 ? lane.meanError / static_cast<double>(lane.meanCount) : 1e30;
+    out.push_back(lane.o);
+  }
+  return out;
+}
+
+Autopilot::Outcome Autopilot::rollout(const HelixPolicy& policy, const AutopilotInput& input, double horizon,
+                                      bool judge) {
+  return rollouts({policy}, input, horizon, judge).front();
 }
 
 void Autopilot::steer(const AutopilotInput& input) {
@@ -309,6 +372,7 @@ void Autopilot::steer(const AutopilotInput& input) {
   double bestAngle = baseAngle, bestAmplitude = baseAmplitude, bestCost = 1e30;
   // Turning psi on the spot keeps the full circle: it is what precesses.
   const std::array<double, 3> scales = {1.0, 0.7, 1.3};
+  std::vector<HelixPolicy> candidates;
   for (int si = 0; si < (planTurning_ ? 1 : 3); ++si) {
     const double scale = scales[static_cast<std::size_t>(si)];
     for (int i = -each; i <= each; ++i) {
@@ -316,15 +380,19 @@ void Autopilot::steer(const AutopilotInput& input) {
       candidate.params().steerAngle = baseAngle + i * def_.steerStep / each;
       candidate.params().amplitude = planTurning_ ? baseAmplitude
                                                  : std::clamp(baseAmplitude * scale, 0.3 * def_.helix.amplitude, def_.helix.amplitude);
-      const Outcome o = rollout(candidate, input, def_.steerHorizon, false);
-      // A candidate that tips over or throws the mass point off is never
-      // kept; fast spin and deep tilts are what lead there, so they cost.
-      const double cost = o.event ? 1e30 : o.meanUprightError + 0.01 * o.excess;
-      if (cost < bestCost) {
-        bestCost = cost;
-        bestAngle = candidate.params().steerAngle;
-        bestAmplitude = candidate.params().amplitude;
-      }
+      candidates.push_back(candidate);
+    }
+  }
+  const std::vector<Outcome> outcomes = rollouts(candidates, input, def_.steerHorizon, false);
+  for (std::size_t c = 0; c < candidates.size(); ++c) {
+    // A candidate that tips over or throws the mass point off is never
+    // kept; fast spin and deep tilts are what lead there, so they cost.
+    const Outcome& o = outcomes[c];
+    const double cost = o.event ? 1e30 : o.meanUprightError + 0.01 * o.excess;
+    if (cost < bestCost) {
+      bestCost = cost;
+      bestAngle = candidates[c].params().steerAngle;
+      bestAmplitude = candidates[c].params().amplitude;
     }
   }
   work_.params().steerAngle = std::remainder(bestAngle, 2.0 * M_PI);
@@ -345,14 +413,18 @@ bool Autopilot::tryLanding(const AutopilotInput& input) {
   Outcome best;
   double bestRate = 0.0, bestDespin = 0.0, psiNearest = 1e30;
   for (const double despin : kDespinGains) {
+    std::vector<HelixPolicy> candidates;
     for (const double rate : kLandRates) {
-      HelixPolicy candidate = work_;
-      candidate.land(rate, despin);
-      const Outcome o = rollout(candidate, input, horizon, true);
+      candidates.push_back(work_);
+      candidates.back().land(rate, despin);
+    }
+    const std::vector<Outcome> outcomes = rollouts(candidates, input, horizon, true);
+    for (std::size_t c = 0; c < outcomes.size(); ++c) {
+      const Outcome& o = outcomes[c];
       psiNearest = std::min(psiNearest, o.psiError);
       if (o.success && (!best.success || o.time < best.time)) {
         best = o;
-        bestRate = rate;
+        bestRate = kLandRates[c];
         bestDespin = despin;
       }
     }
@@ -400,16 +472,23 @@ bool Autopilot::refineLanding(const AutopilotInput& input, double horizon, bool 
   if (planDeadline_)
     search.outOfTime = [deadline = *planDeadline_] { return std::chrono::steady_clock::now() > deadline; };
   const double landRate = def_.refineLandRate * kRateScale[attempt % 3];
-  const std::optional<LandingShape> shape = searchLandingShape(search, [&](const LandingShape& candidateShape) {
-    HelixPolicy candidate = work_;
-    if (reshape)
-      candidate.reshape(candidateShape);
-    else
-      candidate.land(landRate, 0.0, candidateShape);
-    const Outcome o = rollout(candidate, input, horizon, true);
+  // The shapes of a batch are rolled out together, one per lane.
+  search.batch = physics::bestLaneWidth();
+  const ScoreShapes score = [&](const std::vector<LandingShape>& shapes) {
+    std::vector<HelixPolicy> candidates(shapes.size(), work_);
+    for (std::size_t c = 0; c < shapes.size(); ++c) {
+      if (reshape)
+        candidates[c].reshape(shapes[c]);
+      else
+        candidates[c].land(landRate, 0.0, shapes[c]);
+    }
+    std::vector<ShapeScore> scores;
     // Scored by the smallest sum of squared normalised errors on the way.
-    return ShapeScore{o.success, o.event ? 1e30 : o.softCost};
-  });
+    for (const Outcome& o : rollouts(std::move(candidates), input, horizon, true))
+      scores.push_back(ShapeScore{o.success, o.event ? 1e30 : o.softCost});
+    return scores;
+  };
+  const std::optional<LandingShape> shape = searchLandingShape(search, score);
   if (!shape) return false;
   if (reshape) {
     work_.reshape(*shape);

@@ -28,6 +28,10 @@
 //     the landing.
 //   psi: a stage with a psi band is played without it first, then psi is
 //     turned on the spot by a gentle helix from rest.
+// The candidates of one decision (steering's angles and radii, a row of
+// landing rates, a batch of landing shapes) are rolled out together, one
+// per SIMD lane (physics::ForceDrivenBatch); each lane has the bits of a
+// rollout through PlantModel alone, so the plans do not depend on it.
 // Headless plans run inside act(): same inputs, same outputs, bit for bit.
 
 #include <cstdint>
@@ -175,7 +179,12 @@ class Autopilot {
   void verifyLanding(const AutopilotInput& input);
   // False (and the decision asks for time) when this plan may not search.
   bool mayRefine();
-  Outcome rollout(HelixPolicy policy, const AutopilotInput& input, double horizon, bool judge);
+  // Each policy rolled out through the model from input, all together in
+  // SIMD lanes (physics::ForceDrivenBatch): each outcome is the one a rollout
+  // of that policy alone through model_ gives, bit for bit.
+  std::vector<Outcome> rollouts(std::vector<HelixPolicy> policies, const AutopilotInput& input, double horizon,
+                                bool judge);
+  Outcome rollout(const HelixPolicy& policy, const AutopilotInput& input, double horizon, bool judge);
   double uprightError(const physics::Vec2& upright) const;
   physics::Vec3 insideWorkspace(const physics::Vec3& p) const;
   // `wanted` moved no further from `last` than the proxy speed limit allows in
@@ -197,6 +206,7 @@ class Autopilot {
   // Real time: when the plan must be ready; none headless.
   std::optional<std::chrono::steady_clock::time_point> planDeadline_;
   PlantModel model_;
+  physics::ForceDrivenSystem domain_;  // the model's domain check, for the lanes
   Goal given_;  // the stage's goal as given
   Goal goal_;   // the one pursued now (given_ without psi until the rest holds)
   bool turningPsi_ = false;

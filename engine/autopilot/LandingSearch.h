@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <vector>
 
 #include "engine/autopilot/HelixPolicy.h"
 
@@ -21,8 +22,12 @@ struct LandingSearchDef {
   int rounds = 8;
   double spread = 0.002; // first spread of every knot coordinate [m]
   std::uint64_t seed = 0;
-  // Asked before each shape is scored; true ends the search with nothing
-  // (real time: a plan must be ready when its moment comes). Empty: never.
+  // Shapes handed to one call of a ScoreShapes (the autopilot rolls them out
+  // together, one per SIMD lane). The search's result does not depend on it.
+  int batch = 1;
+  // Asked before each call of the scorer (each shape, or each batch); true
+  // ends the search with nothing (real time: a plan must be ready when its
+  // moment comes). Empty: never.
   std::function<bool()> outOfTime;
 };
 
@@ -32,9 +37,14 @@ struct ShapeScore {
 };
 
 using ScoreShape = std::function<ShapeScore(const LandingShape&)>;
+// Scores of several shapes, in their order (at most def.batch at a time).
+using ScoreShapes = std::function<std::vector<ShapeScore>(const std::vector<LandingShape>&)>;
 
 // The first shape that succeeds, or nothing after `rounds` rounds (or when
-// out of time).
+// out of time). The shapes are drawn and judged in one order whatever the
+// batch, so the result is the same for every batch size.
+std::optional<LandingShape> searchLandingShape(const LandingSearchDef& def, const ScoreShapes& score);
+// One shape a call (the batch is 1).
 std::optional<LandingShape> searchLandingShape(const LandingSearchDef& def, const ScoreShape& score);
 
 // Standard normal draws from splitmix64 and Box-Muller.

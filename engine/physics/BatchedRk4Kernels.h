@@ -4,7 +4,7 @@
 // that instantiate it (BatchedRk4Lanes*.cpp), each compiled for its
 // instruction set; their entry points are [[gnu::flatten]], so nothing of
 // this header is left out of line to be shared (and mixed up at link time)
-// between instruction sets (tests/physics/lane_objects_check.sh checks it).
+// between instruction sets (tools/check-lane-objects.sh, the ctest physics.lane_objects_check, checks it).
 
 #include "engine/physics/BatchedRk4.h"
 #include "engine/physics/ForceDrivenSystem.h"

@@ -134,7 +134,9 @@ std::vector<PointMeasurement> measurePoints(const SweepGrid& grid, const std::ve
     for (const SweepPoint& point : points) out.push_back(measurePoint(grid, point));
     return out;
   }
-  std::vector<PointRecorder> recorders(points.size(), PointRecorder(settings));
+  std::vector<PointRecorder> recorders;  // each built in place: a copy would not keep the reserved columns
+  recorders.reserve(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) recorders.emplace_back(settings);
   const std::vector<RunSummary> summaries = RoseLockstepRun(std::move(scenarios), settings, laneWidth)
                                                 .run([&](std::size_t lane, const TrajectoryRow& row) {
                                                   recorders[lane].add(row);

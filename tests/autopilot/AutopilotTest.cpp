@@ -291,6 +291,51 @@ TEST(LandingSearch, OutOfTimeEndsTheSearchBeforeTheNextShape) {
   EXPECT_EQ(asked, 6);
 }
 
+TEST(LandingSearch, ScoringInBatchesFindsTheSameShapeAndAsksTheClockPerBatch) {
+  // The bowl of the first test, scored a batch at a time: the shape found
+  // is the one-at-a-time search's, bit for bit, for any batch size (the
+  // draws and the order of judging do not change); the clock is asked
+  // before each batch.
+  const auto one = [](const LandingShape& s) {
+    double cost = 0.0, worst = 0.0;
+    for (const physics::Vec2& k : s.knots)
+      for (int c = 0; c < 2; ++c) {
+        const double d = k[c] - 0.001;
+        cost += d * d;
+        worst = std::max(worst, std::abs(d));
+      }
+    return ShapeScore{worst < 2e-4, cost};
+  };
+  LandingSearchDef def;
+  def.rounds = 40;
+  def.seed = 3;
+  const std::optional<LandingShape> alone = searchLandingShape(def, one);
+  ASSERT_TRUE(alone.has_value());
+  for (int batch : {2, 5, 8, 32}) {
+    def.batch = batch;
+    std::size_t largest = 0;
+    const std::optional<LandingShape> batched = searchLandingShape(def, [&](const std::vector<LandingShape>& shapes) {
+      largest = std::max(largest, shapes.size());
+      std::vector<ShapeScore> scores;
+      for (const LandingShape& s : shapes) scores.push_back(one(s));
+      return scores;
+    });
+    ASSERT_TRUE(batched.has_value()) << "batch " << batch;
+    EXPECT_EQ(batched->knots, alone->knots) << "batch " << batch;
+    EXPECT_EQ(largest, static_cast<std::size_t>(batch));
+  }
+  int asked = 0;
+  std::size_t scored = 0;
+  def.batch = 8;
+  def.outOfTime = [&] { return ++asked > 2; };
+  EXPECT_FALSE(searchLandingShape(def, [&](const std::vector<LandingShape>& shapes) {
+                 scored += shapes.size();
+                 return std::vector<ShapeScore>(shapes.size());
+               }).has_value());
+  EXPECT_EQ(scored, 16u);  // two batches of 8, then the clock ran out
+  EXPECT_EQ(asked, 3);
+}
+
 TEST(LandingShape, ADefaultShapeIsNoOffsetAtAll) {
   // Eigen vectors are not zeroed by value-initialisation; a plain landing
   // (no shape) must add nothing. Built in memory filled with garbage first,
