@@ -31,6 +31,8 @@ TEST(SweepOptions, Run) {
   const SweepOptionsResult slurm = parseSweepOptions({"spec.lua", "--out", "d", "--slurm", "32", "--threads", "8"});
   ASSERT_EQ(slurm.error, "");
   EXPECT_EQ(slurm.options.slurmTasks, 32);
+  EXPECT_EQ(plain.lanes, 0);  // the widest this CPU runs
+  EXPECT_EQ(parseSweepOptions({"spec.lua", "--out", "d", "--lanes", "4"}).options.lanes, 4);
 }
 
 TEST(SweepOptions, MergeAndMap) {
@@ -54,6 +56,8 @@ TEST(SweepOptions, EachMistakeIsOneSentence) {
       {{"s.lua", "--out", "d", "--shard", "4/4"}, "--shard needs i/N with 0 <= i < N"},
       {{"s.lua", "--out", "d", "--threads", "0"}, "--threads needs a whole number of threads from 1 to 1024"},
       {{"s.lua", "--out", "d", "--maps", "png"}, "--maps needs 'svg' or 'none'"},
+      {{"s.lua", "--out", "d", "--lanes", "3"}, "--lanes needs 1, 2, 4 or 8"},
+      {{"merge", "a", "--out", "m", "--lanes", "2"}, "--lanes"},
       {{"s.lua", "t.lua", "--out", "d"}, "t.lua"},
       {{"merge", "--out", "m"}, "missing the part folders to merge"},
       {{"merge", "a", "--out", "m", "--shard", "0/2"}, "--shard"},
