@@ -53,6 +53,7 @@ void LaneBatch<N>::grow() {
   };
   regrow(rows_, rowCount_);
   regrow(state_, N);
+  if (!previous_.empty()) regrow(previous_, N);
   // The new lanes are inactive; give them a harmless model (unit masses and
   // radius) so that stepping their group beside active lanes computes no NaN.
   for (int lane = padded_; lane < padded; ++lane)
@@ -87,6 +88,7 @@ StateVector<N> LaneBatch<N>::state(int lane) const {
 
 template <int N>
 StateVector<N> LaneBatch<N>::previousState(int lane) const {
+  if (previous_.empty()) return state(lane);  // no step yet
   StateVector<N> x;
   for (int i = 0; i < N; ++i) x[i] = previous_[static_cast<std::size_t>(i) * padded_ + lane];
   return x;

@@ -98,7 +98,8 @@ class LaneBatch {
   int width() const { return width_; }
   int size() const { return size_; }
   StateVector<N> state(int lane) const;
-  // The state before the last step (for locating an event inside it).
+  // The state before the last step (for locating an event inside it); the
+  // state itself before any step. A lane added since the last step has none.
   StateVector<N> previousState(int lane) const;
   void setState(int lane, const StateVector<N>& x);
   bool active(int lane) const { return row(lanes::kActive)[lane] != 0.0; }

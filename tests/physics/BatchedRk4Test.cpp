@@ -94,6 +94,8 @@ void expectRoseLanesMatchScalar(int width, int steps, int retireLane, int retire
     systems.emplace_back(l.params, roses.back());
     scalar.push_back(l.x0);
   }
+  for (int lane = 0; lane < kLanes; ++lane)  // before any step: the start
+    ASSERT_TRUE(sameBits<8>(batch.previousState(lane), scalar[lane])) << "lane " << lane;
   physics::RungeKutta4<8> rk4;
   const double h = 1e-3;
   for (int i = 0; i < steps; ++i) {
