@@ -265,6 +265,7 @@ std::vector<Autopilot::Outcome> Autopilot::rollouts(std::vector<HelixPolicy> pol
   // One rollout's progress: what the loop of a single rollout keeps.
   struct Lane {
     Outcome o;
+    physics::ForceDrivenState x;  // the lane's state after the last tick
     Vec3 last;
     long long ticks = 0, k = 0, inside = 0, meanCount = 0;
     double meanError = 0.0;
@@ -278,6 +279,7 @@ std::vector<Autopilot::Outcome> Autopilot::rollouts(std::vector<HelixPolicy> pol
   const bool startsOutside = domain_.domainEvent(input.time, input.state) != physics::DomainEvent::None;
   for (std::size_t i = 0; i < n; ++i) {
     batch.add(def_.params, def_.coupling, input.state);
+    lanes[i].x = input.state;
     lanes[i].last = planLastProxy_;
     lanes[i].ticks = std::llround(horizon / def_.dt);
     lanes[i].done = lanes[i].ticks <= 0;
@@ -287,13 +289,11 @@ std::vector<Autopilot::Outcome> Autopilot::rollouts(std::vector<HelixPolicy> pol
     }
     if (lanes[i].done) batch.retire(static_cast<int>(i));
   }
-  physics::ForceDrivenState x;
   for (long long tick = 0; batch.activeCount() > 0; ++tick) {
     for (std::size_t i = 0; i < n; ++i) {
       if (lanes[i].done) continue;
-      x = batch.state(static_cast<int>(i));
       physics::ProxyPose pose;
-      pose.position = deliverable(policies[i].proxyFor(x), lanes[i].last);
+      pose.position = deliverable(policies[i].proxyFor(lanes[i].x), lanes[i].last);
       pose.velocity = (pose.position - lanes[i].last) / def_.dt;
       lanes[i].last = pose.position;
       batch.holdProxy(static_cast<int>(i), pose);
@@ -303,7 +303,8 @@ std::vector<Autopilot::Outcome> Autopilot::rollouts(std::vector<HelixPolicy> pol
       Lane& lane = lanes[i];
       if (lane.done) continue;
       Outcome& o = lane.o;
-      x = batch.state(static_cast<int>(i));
+      lane.x = batch.state(static_cast<int>(i));
+      const physics::ForceDrivenState& x = lane.x;
       auto finish = [&] {
         lane.done = true;
         batch.retire(static_cast<int>(i));

@@ -51,9 +51,15 @@ inline void rk4StepOf(const Rates& rates, double t, T (&x)[N], double h) {
   for (int i = 0; i < N; ++i) x[i] += sixth * (k1[i] + 2.0 * (k2[i] + k3[i]) + k4[i]);
 }
 
+// Row r of the lanes first .. first + laneCount<T>() - 1.
+template <class T>
+inline T rowAt(const BatchView& v, int r, int first) {
+  return load<T>(v.rows + static_cast<std::size_t>(r) * v.padded + first);
+}
+
 template <class T>
 inline MassConstantsOf<T> massConstantsAt(const BatchView& v, int first) {
-  auto at = [&](int r) { return load<T>(v.rows + static_cast<std::size_t>(r) * v.padded + first); };
+  auto at = [&](int r) { return rowAt<T>(v, r, first); };
   return {at(kPointMass), at(kShellMass), at(kRadius), at(kGravity), at(kComDepth), at(kShellMoment)};
 }
 
@@ -66,7 +72,7 @@ inline void stepGroup(const BatchView& v, int first, double t, double h, const R
   T next[N];
   for (int i = 0; i < N; ++i) next[i] = x[i];
   rk4StepOf<N>(rates, t, next, h);
-  const T active = load<T>(v.rows + static_cast<std::size_t>(kActive) * v.padded + first);
+  const T active = rowAt<T>(v, kActive, first);
   for (int i = 0; i < N; ++i) {
     const T kept = active != 0.0 ? next[i] : x[i];
     store(v.state + static_cast<std::size_t>(i) * v.padded + first, kept);
@@ -87,7 +93,7 @@ inline void roseStep(const BatchView& v, double t, double h) {
   for (int first = 0; first < v.padded; first += laneCount<T>()) {
     if (!anyActive<T>(v, first)) continue;
     const MassConstantsOf<T> c = massConstantsAt<T>(v, first);
-    auto at = [&](int r) { return load<T>(v.rows + static_cast<std::size_t>(r) * v.padded + first); };
+    auto at = [&](int r) { return rowAt<T>(v, r, first); };
     const T r1 = at(kRoseR1), r2 = at(kRoseR2), k = at(kRoseK), omega = at(kRoseOmega);
     stepGroup<8, T>(v, first, t, h, [&](double tau, const T* x, T* dxdt) {
       const RoseSampleOf<T> s = roseSampleOf(r1, r2, k, omega, tau);
@@ -101,7 +107,7 @@ inline void forceDrivenStep(const BatchView& v, double h) {
   for (int first = 0; first < v.padded; first += laneCount<T>()) {
     if (!anyActive<T>(v, first)) continue;
     const MassConstantsOf<T> c = massConstantsAt<T>(v, first);
-    auto at = [&](int r) { return load<T>(v.rows + static_cast<std::size_t>(r) * v.padded + first); };
+    auto at = [&](int r) { return rowAt<T>(v, r, first); };
     if (v.method < 0) {
       const Real3Of<T> zero{broadcast<T>(0.0), broadcast<T>(0.0), broadcast<T>(0.0)};
       stepGroup<12, T>(v, first, 0.0, h, [&](double, const T* x, T* dxdt) {

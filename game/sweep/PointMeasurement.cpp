@@ -110,14 +110,17 @@ class PointRecorder {
   double maxTilt_ = 0.0;
 };
 
+PointMeasurement measureScenario(const script::SweepDef& def, const script::ScenarioDef& scenario,
+                                 const RunSettings& settings) {
+  PointRecorder recorder(settings);
+  const RunSummary summary = ScenarioRun(scenario, settings).run([&](const TrajectoryRow& row) { recorder.add(row); });
+  return recorder.finish(def, summary);
+}
+
 }  // namespace
 
 PointMeasurement measurePoint(const SweepGrid& grid, const SweepPoint& point) {
-  const RunSettings settings = settingsOf(grid.def());
-  PointRecorder recorder(settings);
-  const RunSummary summary =
-      ScenarioRun(grid.scenario(point), settings).run([&](const TrajectoryRow& row) { recorder.add(row); });
-  return recorder.finish(grid.def(), summary);
+  return measureScenario(grid.def(), grid.scenario(point), settingsOf(grid.def()));
 }
 
 std::vector<PointMeasurement> measurePoints(const SweepGrid& grid, const std::vector<SweepPoint>& points,
@@ -131,7 +134,7 @@ std::vector<PointMeasurement> measurePoints(const SweepGrid& grid, const std::ve
   }
   std::vector<PointMeasurement> out;
   if (!lockstep) {
-    for (const SweepPoint& point : points) out.push_back(measurePoint(grid, point));
+    for (const script::ScenarioDef& scenario : scenarios) out.push_back(measureScenario(grid.def(), scenario, settings));
     return out;
   }
   std::vector<PointRecorder> recorders;  // each built in place: a copy would not keep the reserved columns

@@ -247,19 +247,21 @@ TEST(PlannerWorker, RunsOneJobAtATimeAndHandsBackItsDecision) {
 namespace hemiroll::autopilot {
 namespace {
 
+// A bowl in the 16 knot coordinates with its floor at 1 mm on every one:
+// success within 0.2 mm of it (the spread starts at 2 mm).
+ShapeScore bowl(const LandingShape& s) {
+  double cost = 0.0, worst = 0.0;
+  for (const physics::Vec2& k : s.knots)
+    for (int c = 0; c < 2; ++c) {
+      const double d = k[c] - 0.001;
+      cost += d * d;
+      worst = std::max(worst, std::abs(d));
+    }
+  return ShapeScore{worst < 2e-4, cost};
+}
+
 TEST(LandingSearch, FindsAShapeNearAnOptimumAndRepeatsItsDrawsPerSeed) {
-  // A bowl in the 16 knot coordinates with its floor at 1 mm on every one:
-  // success within 0.2 mm of it (the spread starts at 2 mm).
-  const auto score = [](const LandingShape& s) {
-    double cost = 0.0, worst = 0.0;
-    for (const physics::Vec2& k : s.knots)
-      for (int c = 0; c < 2; ++c) {
-        const double d = k[c] - 0.001;
-        cost += d * d;
-        worst = std::max(worst, std::abs(d));
-      }
-    return ShapeScore{worst < 2e-4, cost};
-  };
+  const ScoreShape score = bowl;
   LandingSearchDef def;
   def.rounds = 40;
   def.seed = 3;
@@ -292,20 +294,11 @@ TEST(LandingSearch, OutOfTimeEndsTheSearchBeforeTheNextShape) {
 }
 
 TEST(LandingSearch, ScoringInBatchesFindsTheSameShapeAndAsksTheClockPerBatch) {
-  // The bowl of the first test, scored a batch at a time: the shape found
-  // is the one-at-a-time search's, bit for bit, for any batch size (the
-  // draws and the order of judging do not change); the clock is asked
-  // before each batch.
-  const auto one = [](const LandingShape& s) {
-    double cost = 0.0, worst = 0.0;
-    for (const physics::Vec2& k : s.knots)
-      for (int c = 0; c < 2; ++c) {
-        const double d = k[c] - 0.001;
-        cost += d * d;
-        worst = std::max(worst, std::abs(d));
-      }
-    return ShapeScore{worst < 2e-4, cost};
-  };
+  // The bowl, scored a batch at a time: the shape found is the
+  // one-at-a-time search's, bit for bit, for any batch size (the draws and
+  // the order of judging do not change); the clock is asked before each
+  // batch.
+  const ScoreShape one = bowl;
   LandingSearchDef def;
   def.rounds = 40;
   def.seed = 3;
