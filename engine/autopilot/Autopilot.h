@@ -122,6 +122,8 @@ class Autopilot {
   const std::string& failure() const { return failure_; }
   // Read it only while no plan is running (headless, or after the trial).
   const PlannerStats& stats() const { return stats_; }
+  // The running law as of the last act (act's thread).
+  const HelixPolicy& policy() const { return policy_; }
 
   // What one plan decides, applied to the running policy.
   struct Decision {

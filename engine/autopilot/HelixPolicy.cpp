@@ -4,25 +4,12 @@
 #include <cmath>
 
 #include "engine/autopilot/UprightContact.h"
+#include "engine/physics/PlaneVectors.h"
 
 namespace hemiroll::autopilot {
 
 using physics::Vec2;
 using physics::Vec3;
-
-namespace {
-
-Vec2 limited(Vec2 v, double limit) {
-  const double n = v.norm();
-  return n > limit ? Vec2(v * (limit / n)) : v;
-}
-
-Vec2 turned(const Vec2& v, double angle) {
-  const double c = std::cos(angle), s = std::sin(angle);
-  return {c * v.x() - s * v.y(), s * v.x() + c * v.y()};
-}
-
-}  // namespace
 
 HelixPolicy::HelixPolicy(const physics::ModelConstants& constants, const HelixParams& params, double dt)
     : constants_(&constants), params_(params), dt_(dt) {}
@@ -101,7 +88,7 @@ Vec2 HelixPolicy::landingPoint(const Vec2& upright) const {
   Vec2 want = contactTarget();
   if (!goal_.set[7]) want.x() = upright.x();
   if (!goal_.set[8]) want.y() = upright.y();
-  return upright + limited(want - upright, landReach_);
+  return upright + physics::limitedTo(want - upright, landReach_);
 }
 
 Vec2 HelixPolicy::detour(const Vec2& contact, const Vec2& land) {
@@ -175,9 +162,10 @@ Vec3 HelixPolicy::proxyFor(const physics::ForceDrivenState& x) {
     // Full gain beyond 0.8 of the band, none within 0.4, linear between, so
     // that nothing switches.
     const double creep = goal_.contactSet() ? std::clamp((contactBandError(x) - 0.4) / 0.4, 0.0, 1.0) : 1.0;
-    settleOffset_ += limited(creep * params_.settleGain * error, params_.glideSpeed) * dt_;
-    settleOffset_ = limited(settleOffset_, 0.5 * R);
+    settleOffset_ += physics::limitedTo(creep * params_.settleGain * error, params_.glideSpeed) * dt_;
+    settleOffset_ = physics::limitedTo(settleOffset_, 0.5 * R);
     const Vec3 goal(land.x() + settleOffset_.x(), land.y() + settleOffset_.y(), R);
+    motion_.goal = goal.head<2>();
     Vec3 step = goal - last_;
     const double most = params_.glideSpeed * dt_;
     if (step.norm() > most) step *= most / step.norm();
@@ -189,7 +177,7 @@ Vec3 HelixPolicy::proxyFor(const physics::ForceDrivenState& x) {
       if (!goal_.set[7]) error.x() = 0.0;
       if (!goal_.set[8]) error.y() = 0.0;
     }
-    const Vec2 steer = limited(params_.steerGain * turned(error, params_.steerAngle), params_.steerLimit);
+    const Vec2 steer = physics::limitedTo(params_.steerGain * physics::turnedBy(error, params_.steerAngle), params_.steerLimit);
     const bool circling = phase_ == HelixPhase::Travel;
     const double rate = circling ? params_.amplitude : params_.landRate;  // [m/s] of radius change
     const double want = circling ? params_.amplitude : 0.0;
@@ -198,10 +186,14 @@ Vec3 HelixPolicy::proxyFor(const physics::ForceDrivenState& x) {
     proxy = Vec3(x[u_a] + steer.x() + radius_ * std::cos(phaseAngle_),
                  x[v_a] + steer.y() + radius_ * std::sin(phaseAngle_), R);
 
+    motion_.centre = Vec2(x[u_a] + steer.x(), x[v_a] + steer.y());
+    motion_.radius = radius_;
+    motion_.rate = params_.rate;
     if (phase_ == HelixPhase::Land && radius_ <= 0.0) phase_ = HelixPhase::Settle;
   }
   // last_ keeps the path; the landing shape rides on it.
   last_ = proxy;
+  motion_.phase = phase_;
   if (phase_ == HelixPhase::Travel) return proxy;
   const Vec2 shaped = shape_.at(landingTime_);
   landingTime_ += dt_;

@@ -50,6 +50,17 @@ struct HelixParams {
 
 enum class HelixPhase { Travel, Land, Settle };
 
+// What the law did on its last tick, in a player's terms (the game's hint
+// at a person's bandwidth, game/trial/HintCoach): the circle the proxy is
+// on, or the point it glides to.
+struct HelixMotion {
+  HelixPhase phase = HelixPhase::Travel;
+  physics::Vec2 centre = physics::Vec2::Zero();  // the circle's centre (travel, land) [m]
+  double radius = 0.0;                           // [m]
+  double rate = 0.0;                             // [rad/s]
+  physics::Vec2 goal = physics::Vec2::Zero();    // where the proxy glides to (settle) [m]
+};
+
 // A shape added to the proxy from the moment landing starts: offsets at
 // knots `spacing` apart, linear between them, fading to zero after the last.
 // The planner tunes them (Autopilot::refineLanding) when no plain landing
@@ -86,6 +97,7 @@ class HelixPolicy {
   physics::Vec3 proxyFor(const physics::ForceDrivenState& x);
 
   HelixPhase phase() const { return phase_; }
+  const HelixMotion& motion() const { return motion_; }
   HelixParams& params() { return params_; }
   const HelixParams& params() const { return params_; }
   // Where the contact would end after landing now (above c_up, nudged to the target).
@@ -113,6 +125,7 @@ class HelixPolicy {
   double landingTime_ = 0.0;  // since landing started [s]
   int detourZone_ = -1;       // the zone being passed (-1: none)
   physics::Vec2 waypoint_ = physics::Vec2::Zero();
+  HelixMotion motion_;
 };
 
 }  // namespace hemiroll::autopilot

@@ -6,20 +6,9 @@
 #include <utility>
 #include <vector>
 
+#include "engine/physics/NormalDraws.h"
+
 namespace hemiroll::autopilot {
-
-double NormalDraws::operator()() {
-  const double u1 = (static_cast<double>(next() >> 11) + 0.5) * 0x1.0p-53;
-  const double u2 = static_cast<double>(next() >> 11) * 0x1.0p-53;
-  return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * M_PI * u2);
-}
-
-std::uint64_t NormalDraws::next() {
-  std::uint64_t z = (state_ += 0x9e3779b97f4a7c15ULL);
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-  return z ^ (z >> 31);
-}
 
 std::optional<LandingShape> searchLandingShape(const LandingSearchDef& def, const ScoreShapes& score) {
   constexpr int n = 2 * LandingShape::kKnots;
@@ -28,7 +17,7 @@ std::optional<LandingShape> searchLandingShape(const LandingSearchDef& def, cons
   const std::size_t batch = static_cast<std::size_t>(std::max(1, def.batch));
   Vector mean{}, spread{};
   spread.fill(def.spread);
-  NormalDraws normal(def.seed);
+  physics::NormalDraws normal(def.seed);
   std::vector<std::pair<double, Vector>> samples(static_cast<std::size_t>(def.population));
   const auto shapeOf = [](const Vector& theta) {
     LandingShape shape;

@@ -47,15 +47,4 @@ std::optional<LandingShape> searchLandingShape(const LandingSearchDef& def, cons
 // One shape a call (the batch is 1).
 std::optional<LandingShape> searchLandingShape(const LandingSearchDef& def, const ScoreShape& score);
 
-// Standard normal draws from splitmix64 and Box-Muller.
-class NormalDraws {
- public:
-  explicit NormalDraws(std::uint64_t seed) : state_(seed) {}
-  double operator()();
-
- private:
-  std::uint64_t next();
-  std::uint64_t state_;
-};
-
 }  // namespace hemiroll::autopilot

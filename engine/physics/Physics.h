@@ -27,6 +27,7 @@
 #include "engine/physics/GaussLegendre.h"
 #include "engine/physics/HemisphereParams.h"
 #include "engine/physics/Integrator.h"
+#include "engine/physics/NormalDraws.h"
 #include "engine/physics/Orientation.h"
 #include "engine/physics/PrescribedDriveSystem.h"
 #include "engine/physics/RollingDynamics.h"

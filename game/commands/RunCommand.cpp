@@ -83,10 +83,11 @@ int runRunCommand(const std::vector<std::string>& args) {
     script::LevelLoadOptions levelOptions;
     levelOptions.seed = options.seed;
     level = script::LevelLoader(levelOptions).loadFile(options.levelPath);
-    AutopilotBotOptions autopilotOptions;
-    autopilotOptions.budget = options.autopilotBudget;
-    autopilotOptions.plannerThread = options.realtime;
-    bot = makeBot(options.botPath, options.seed, autopilotOptions);
+    BuiltinBotOptions builtin;
+    builtin.autopilot.budget = options.autopilotBudget;
+    builtin.autopilot.plannerThread = options.realtime;
+    builtin.human = options.human;
+    bot = makeBot(options.botPath, options.seed, builtin);
   } catch (const script::ScriptError& e) {
     return badInput(e.what());
   }

@@ -1,13 +1,19 @@
 #include "game/commands/RunOptions.h"
 
+#include <string>
+
 #include "game/cli/ArgumentReader.h"
+#include "game/commands/HumanFlags.h"
 
 namespace hemiroll::game {
 
 const char* runUsage() {
-  return "usage: hemiroll run LEVEL.lua --bot BOT.lua|autopilot [--seed N] [--record DIR] [--realtime]\n"
+  static const std::string usage = std::string(
+         "usage: hemiroll run LEVEL.lua --bot BOT.lua|autopilot|passive-hand|human [--seed N] [--record DIR]\n"
+         "                    [--realtime]\n"
          "                    [--autopilot-budget X] [--guidance KIND [--guidance-stiffness K]\n"
-         "                    [--guidance-damping C]]\n"
+         "                    [--guidance-damping C]] [--human-delay S] [--human-interval S]\n"
+         "                    [--human-noise X] [--human-device mouse|haptic] [--human-aids]\n"
          "\n"
          "Plays a level with a bot (a Lua module, e.g. scripts/bots/rose.lua) and prints one\n"
          "JSON line: level, bot, outcome, reason, time, score, medal, ticks, wall_time\n"
@@ -16,7 +22,8 @@ const char* runUsage() {
          "\n"
          "  --bot BOT.lua   the bot that plays (required); \"autopilot\" is the built-in\n"
          "                  planner (docs/AUTOPILOT.md), \"passive-hand\" a hand that only\n"
-         "                  yields to the device's force\n"
+         "                  yields to the device's force, \"human\" a simulated person\n"
+         "                  (docs/HUMAN_MODEL.md)\n"
          "  --autopilot-budget X  the autopilot's planning effort, 0.25 to 4 (default 1):\n"
          "                  more tries per decision and a longer look ahead\n"
          "  --seed N        seed of the level's and the bot's hemiroll.random and the\n"
@@ -29,10 +36,11 @@ const char* runUsage() {
          "                  \"none\" (default); try it with --bot passive-hand\n"
          "  --guidance-stiffness K  the guidance spring [N/m] (default 200)\n"
          "  --guidance-damping C    the guidance damper [N s/m] (default 10)\n"
-         "  --help          print this help\n"
+         "  --help          print this help\n") + kHumanFlagsUsage + std::string(
          "\n"
          "Exit codes: 0 success, 1 failure (the trial failed, or the recording could not\n"
-         "be written), 2 bad input (a flag, or a level or bot that cannot be loaded).\n";
+         "be written), 2 bad input (a flag, or a level or bot that cannot be loaded).\n");
+  return usage.c_str();
 }
 
 RunOptionsResult parseRunOptions(const std::vector<std::string>& args) {
@@ -51,6 +59,7 @@ RunOptionsResult parseRunOptions(const std::vector<std::string>& args) {
       .option("--autopilot-budget", cli::positiveNumber(o.autopilotBudget, "a planning effort from 0.25 to 4"))
       // Lua integers are signed 64-bit, and the bot receives the seed as one.
       .option("--seed", cli::unsignedUpTo(o.seed, 0x7fffffffffffffffULL, "a whole number from 0 to 9223372036854775807"));
+  addHumanFlags(reader, o.human, o.humanDevice);
   result.error = reader.read(args);
   if (!result.error.empty() || o.help) return result;
   if (o.levelPath.empty()) result.error = "missing the level file";
@@ -59,6 +68,8 @@ RunOptionsResult parseRunOptions(const std::vector<std::string>& args) {
     result.error = "--autopilot-budget needs a planning effort from 0.25 to 4";
   else if (o.guidance != "none" && o.guidance != "autopilot" && o.guidance != "error_augmentation")
     result.error = "--guidance needs none, autopilot or error_augmentation, not '" + o.guidance + "'";
+  else
+    result.error = checkHumanFlags(o.human, o.humanDevice);
   return result;
 }
 

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "game/trial/HumanBot.h"
+
 namespace hemiroll::game {
 
 struct RunOptions {
@@ -21,6 +23,9 @@ struct RunOptions {
   std::string guidance = "none";
   double guidanceStiffness = 200.0;
   std::optional<double> guidanceDamping;
+  // --human-*: the human model's settings (HumanFlags.h).
+  HumanBotOptions human;
+  std::string humanDevice;
   bool help = false;                       // --help
 };
 

@@ -5,15 +5,18 @@
 
 namespace hemiroll::game {
 
-bool isBuiltinBot(const std::string& name) { return name == kAutopilotBotName || name == kPassiveHandBotName; }
+bool isBuiltinBot(const std::string& name) {
+  return name == kAutopilotBotName || name == kPassiveHandBotName || name == kHumanBotName;
+}
 
 std::unique_ptr<script::BotPolicy> makeBot(const std::string& nameOrPath, std::uint64_t seed,
-                                           const AutopilotBotOptions& autopilot) {
-  if (nameOrPath == kAutopilotBotName) return std::make_unique<AutopilotBot>(autopilot);
+                                           const BuiltinBotOptions& options) {
+  if (nameOrPath == kAutopilotBotName) return std::make_unique<AutopilotBot>(options.autopilot);
   if (nameOrPath == kPassiveHandBotName) return std::make_unique<PassiveHandBot>();
-  script::BotLoadOptions options;
-  options.seed = seed;
-  return std::make_unique<script::BotScript>(nameOrPath, options);
+  if (nameOrPath == kHumanBotName) return std::make_unique<HumanBot>(options.human);
+  script::BotLoadOptions loadOptions;
+  loadOptions.seed = seed;
+  return std::make_unique<script::BotScript>(nameOrPath, loadOptions);
 }
 
 }  // namespace hemiroll::game

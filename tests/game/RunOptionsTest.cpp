@@ -81,5 +81,20 @@ TEST(RunOptions, TheAutopilotTakesABudgetWithinItsRange) {
             std::string::npos);
 }
 
+TEST(RunOptions, ReadsTheHumanModelsFlagsAndRefusesABadDevice) {
+  const RunOptionsResult r = parseRunOptions({"l.lua", "--bot", "human", "--human-delay", "0.25", "--human-interval=0.3",
+                                              "--human-noise", "0.15", "--human-device", "haptic", "--human-aids"});
+  ASSERT_EQ(r.error, "");
+  EXPECT_EQ(r.options.human.human.visualDelay, 0.25);
+  EXPECT_EQ(r.options.human.human.interval, 0.3);
+  EXPECT_EQ(r.options.human.human.noise, 0.15);
+  EXPECT_EQ(r.options.human.human.device, human::HandDevice::Haptic);
+  EXPECT_TRUE(r.options.human.aids);
+  EXPECT_THAT(parseRunOptions({"l.lua", "--bot", "human", "--human-device", "glove"}).error,
+              HasSubstr("--human-device needs mouse or haptic, not 'glove'"));
+  EXPECT_THAT(parseRunOptions({"l.lua", "--bot", "human", "--human-delay", "-1"}).error,
+              HasSubstr("--human-delay needs a delay from 0 to 2 s"));
+}
+
 }  // namespace
 }  // namespace hemiroll::game

@@ -1,0 +1,57 @@
+#pragma once
+// A person at a device, as numbers: how late they see, how often they
+// correct, how noisy and how fast their hand is, and what the hand is made
+// of. Every default is a figure from the motor-control literature
+// (docs/HUMAN_MODEL.md gives the source of each); none is tuned to make the
+// game's aids look good. The measuring stick's floor: tests and benchmarks
+// use no delay under kMinDelay, no interval under kMinInterval and no less
+// noise than kDefaultNoise.
+
+namespace hemiroll::human {
+
+// What the hand holds. A mouse renders no force: nothing pushes the hand.
+// A haptic device renders the coupling force: it pushes the hand at once,
+// with no neural delay, through the limb's own mechanics.
+enum class HandDevice { Mouse, Haptic };
+
+const char* handDeviceName(HandDevice device);
+// "mouse" or "haptic"; false for anything else.
+bool parseHandDevice(const char* name, HandDevice& out);
+
+// The hand and arm as a point mass held by a spring and a damper towards
+// where the person means it to be (the intent): the muscles' stiffness and
+// viscosity about the posture they command.
+struct LimbDef {
+  double mass = 0.3;        // effective mass of hand, stylus and forearm at the fingertips [kg]
+  double stiffness = 300.0; // [N/m]
+  double damping = 15.0;    // [N s/m]
+};
+
+struct HumanDef {
+  static constexpr double kMinDelay = 0.2;       // [s]
+  static constexpr double kMinInterval = 0.25;   // [s]
+  static constexpr double kDefaultNoise = 0.1;   // [-]
+
+  // Seeing to acting: a correction uses what the screen showed this long ago.
+  double visualDelay = kMinDelay;    // [s]
+  // Intermittent control: a new correction at most this often.
+  double interval = kMinInterval;    // [s]
+  // Signal-dependent motor noise: a move of size s ends with a standard
+  // deviation of noise x s (in each of its two directions on the plane);
+  // a circle's radius and pace vary by the same fraction.
+  double noise = kDefaultNoise;      // [-]
+  // What a still hand still does (a floor under the signal-dependent part):
+  // standard deviation of where a hold ends [m].
+  double steadiness = 0.0002;        // [m]
+  // Event-triggered intermittency: a correction is made only when what the
+  // person wants differs from what the hand is doing by more than this (the
+  // hand's centre or hold point moves, or a circle's radius changes, by more
+  // than this), or the kind of movement changes [m].
+  double deadZone = 0.0005;          // [m]
+  // The fastest the hand is carried to a new place [m/s].
+  double maxSpeed = 0.5;             // [m/s]
+  LimbDef limb;
+  HandDevice device = HandDevice::Mouse;
+};
+
+}  // namespace hemiroll::human

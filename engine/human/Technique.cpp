@@ -1,0 +1,121 @@
+#include "engine/human/Technique.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "engine/physics/PlaneVectors.h"
+
+namespace hemiroll::human {
+
+using physics::Vec2;
+
+namespace {
+
+// sin(tilt) towards the face's low side, as a vector on the floor [-].
+Vec2 leanOf(const physics::Vec3& normal) { return {normal.x(), normal.y()}; }
+
+}  // namespace
+
+Vec2 uprightContactSeen(const ScreenView& view, double radius) {
+  const double horizontal = std::hypot(view.normal.x(), view.normal.y());
+  const double tilt = std::atan2(horizontal, view.normal.z());
+  const double scale = horizontal > 1e-9 ? tilt / horizontal : 1.0;
+  return view.contact - radius * scale * leanOf(view.normal);
+}
+
+Movement Technique::stir(const ScreenView& view, const Vec2& error, double radius) const {
+  // The drift runs about aimAngle from the aim, to the side the hemisphere
+  // turns (measured: docs/HUMAN_MODEL.md); aim that far the other way.
+  const double distance = error.norm();
+  const Vec2 towards = distance > 1e-9 ? Vec2(error / distance) : Vec2::Zero();
+  const double aim = spinSeen_ >= 0.0 ? def_.aimAngle : -def_.aimAngle;
+  Movement m;
+  m.kind = Movement::Kind::Stir;
+  m.centre = view.contact + std::min(def_.aimLimit, def_.aimGain * distance) * physics::turnedBy(towards, aim);
+  m.radius = radius;
+  m.rate = def_.stirRate;
+  return m;
+}
+
+Movement Technique::lean(const ScreenView& view) {
+  // The mass point held R sin(tilt) off the face's centre leans the
+  // hemisphere about that far; what that misses, the nudge makes up.
+  const Vec2 want = leanOf(view.leanTarget);
+  nudge_ = physics::limitedTo(nudge_ + def_.leanGain * (want - leanOf(view.normal)), 1.0);
+  Movement m;
+  m.kind = Movement::Kind::Hold;
+  m.centre = view.contact + radius_ * physics::limitedTo(want + nudge_, 0.9);
+  return m;
+}
+
+Movement Technique::leanOnto(const ScreenView& view) {
+  nudge_ = physics::limitedTo(nudge_ + def_.nudgeGain * (view.contactTarget - view.contact), 0.5 * radius_);
+  Movement m;
+  m.kind = Movement::Kind::Hold;
+  m.centre = view.contactTarget + nudge_;
+  return m;
+}
+
+Movement Technique::settle(const ScreenView& view, const Vec2& upright, const Vec2& target) {
+  if (view.contactTargetSet) nudge_ = physics::limitedTo(nudge_ + def_.nudgeGain * (view.contactTarget - view.contact), 0.5 * radius_);
+  Movement m;
+  m.kind = Movement::Kind::Hold;
+  m.centre = upright + physics::limitedTo(target - upright, def_.holdReach) + nudge_;
+  return m;
+}
+
+bool Technique::reachLeaning(const ScreenView& view) const {
+  return view.contactTargetSet && !view.uprightRequired && !view.leanTargetSet &&
+         (phase_ == Phase::Lean || (view.contactTarget - view.contact).norm() < def_.leanReach);
+}
+
+Movement Technique::hold(const ScreenView& view) {
+  if (reachLeaning(view)) return leanOnto(view);
+  const Vec2 upright = uprightContactSeen(view, radius_);
+  return settle(view, upright, view.contactTargetSet ? view.contactTarget : upright);
+}
+
+Movement Technique::decide(const ScreenView& view, double interval) {
+  spinSeen_ += std::min(1.0, interval / def_.spinLag) * (view.spin - spinSeen_);
+  if (view.stage != stage_) {  // a new stage: start over from the stir (or the lean)
+    stage_ = view.stage;
+    phase_ = Phase::Stir;
+    nudge_ = Vec2::Zero();
+  }
+  if (view.leanTargetSet && !view.contactTargetSet) {
+    phase_ = Phase::Lean;
+    return lean(view);
+  }
+  if (reachLeaning(view)) {
+    phase_ = Phase::Lean;
+    return leanOnto(view);
+  }
+  const Vec2 upright = uprightContactSeen(view, radius_);
+  const Vec2 target = view.contactTargetSet ? view.contactTarget : upright;
+  const Vec2 error = target - upright;
+  const double distance = error.norm();
+  switch (phase_) {
+    case Phase::Stir:
+    case Phase::Lean:
+      if (!view.contactTargetSet || distance < def_.landReach) {
+        phase_ = Phase::Land;
+        fading_ = view.contactTargetSet ? def_.stirRadius : 0.0;
+      }
+      break;
+    case Phase::Land:
+      fading_ = std::max(0.0, fading_ - def_.fadeRate * interval);
+      break;
+    case Phase::Settle:
+      if (distance > def_.restirReach || view.time - settledAt_ > def_.settlePatience) phase_ = Phase::Stir;
+      break;
+  }
+  if (phase_ == Phase::Land && fading_ <= 0.0) {
+    phase_ = Phase::Settle;
+    settledAt_ = view.time;
+    nudge_ = Vec2::Zero();
+  }
+  if (phase_ == Phase::Settle) return settle(view, upright, target);
+  return stir(view, error, phase_ == Phase::Land ? fading_ : def_.stirRadius);
+}
+
+}  // namespace hemiroll::human

@@ -1,0 +1,28 @@
+#pragma once
+// The human model's flags, shared by every command that can seat a
+// simulated person (`run --bot human`, `session --bot human`):
+//   --human-delay S       visual delay [s] (default 0.2)
+//   --human-interval S    shortest time between corrections [s] (default 0.25)
+//   --human-noise X       signal-dependent motor noise, SD per unit of move size (default 0.1)
+//   --human-device D      mouse (default) or haptic
+//   --human-aids          the game's aids on: the hint at a person's bandwidth, the force cue
+
+#include <string>
+
+#include "game/cli/ArgumentReader.h"
+#include "game/trial/HumanBot.h"
+
+namespace hemiroll::game {
+
+void addHumanFlags(cli::ArgumentReader& reader, HumanBotOptions& options, std::string& device);
+// After reading: "" or the sentence that says what is wrong.
+std::string checkHumanFlags(HumanBotOptions& options, const std::string& device);
+
+inline constexpr const char* kHumanFlagsUsage =
+    "  --human-delay S    the human model's visual delay [s] (default 0.2)\n"
+    "  --human-interval S its shortest time between two corrections [s] (default 0.25)\n"
+    "  --human-noise X    its motor noise, SD per unit of move size (default 0.1)\n"
+    "  --human-device D   what its hand holds: mouse (default) or haptic\n"
+    "  --human-aids       give it the game's aids (the hint, the force cue)\n";
+
+}  // namespace hemiroll::game

@@ -1,0 +1,92 @@
+#include "game/trial/HumanBot.h"
+
+#include "engine/physics/Orientation.h"
+#include "engine/physics/StateKinematics.h"
+#include "engine/physics/StateLayout.h"
+#include "engine/script/ScriptError.h"
+#include "game/trial/HintCoach.h"
+
+namespace hemiroll::game {
+
+using physics::Vec2;
+using physics::Vec3;
+
+namespace {
+
+// The face's normal in the scene for a state (eq. 6 applied to k).
+Vec3 faceNormalOf(const physics::ForceDrivenState& x) {
+  using namespace physics::force_slot;
+  return physics::makeOrientation(x[u_o], x[v_o], x[psi]).faceNormal();
+}
+
+}  // namespace
+
+human::ScreenView screenViewOf(const script::BotObservation& obs) {
+  using namespace physics::force_slot;
+  human::ScreenView v;
+  v.time = obs.time;
+  v.contact = Vec2(obs.contact[0], obs.contact[1]);
+  v.normal = physics::vec3Of(obs.normal);
+  v.mass = physics::vec3Of(obs.mass);
+  v.proxy = physics::vec3Of(obs.proxy);
+  v.spin = obs.state[w_z];
+  v.engaged = obs.engaged;
+  v.contactTargetSet = obs.targetSet[u_a] || obs.targetSet[v_a];
+  if (v.contactTargetSet) {
+    // A band on one coordinate only: the other is wherever the contact is.
+    v.contactTarget = Vec2(obs.targetSet[u_a] ? obs.target[u_a] : obs.contact[0],
+                           obs.targetSet[v_a] ? obs.target[v_a] : obs.contact[1]);
+    v.contactTolerance = obs.targetSet[u_a] ? obs.tolerance[u_a] : obs.tolerance[v_a];
+  }
+  v.uprightRequired = obs.targetSet[x_p] || obs.targetSet[y_p] || obs.targetSet[u_o] || obs.targetSet[v_o];
+  if (obs.targetSet[u_o] || obs.targetSet[v_o]) {
+    // The lean the task asks for, as the face's normal would show it: the
+    // state with the target's u_co (a band on one angle: the other as is).
+    physics::ForceDrivenState at = physics::forceStateOf(obs.state);
+    if (obs.targetSet[u_o]) at[u_o] = obs.target[u_o];
+    if (obs.targetSet[v_o]) at[v_o] = obs.target[v_o];
+    v.leanTargetSet = true;
+    v.leanTarget = faceNormalOf(at);
+    v.leanTolerance = obs.targetSet[u_o] ? obs.tolerance[u_o] : obs.tolerance[v_o];
+  }
+  v.stage = obs.stage;
+  return v;
+}
+
+HumanBot::HumanBot(const HumanBotOptions& options) : options_(options) {}
+HumanBot::~HumanBot() = default;
+
+void HumanBot::init(const script::BotLevelInfo& info, std::int64_t seed) {
+  radius_ = info.radius;
+  model_.emplace(options_.human, options_.technique, info.radius, info.dt, static_cast<std::uint64_t>(seed));
+  holding_ = false;
+  coach_.reset();
+  if (options_.aids) {
+    coach_ = std::make_unique<HintCoach>();
+    coach_->init(info, seed);
+  }
+}
+
+script::BotAction HumanBot::act(const script::BotObservation& obs) {
+  if (!model_) throw script::ScriptError("human: act before init");
+  if (!holding_) {  // takes hold where the mass point is, as a player clicking on it
+    holding_ = true;
+    model_->takeHold(physics::vec3Of(obs.mass));
+  }
+  human::ScreenView view = screenViewOf(obs);
+  if (coach_) {
+    view.hint = coach_->hint(obs);
+    view.forceCueShown = true;
+    view.forceCue = physics::vec3Of(obs.force);
+  }
+  const human::HandPose hand = model_->act(view, physics::vec3Of(obs.deviceForce));
+  script::BotAction action;
+  action.position = physics::tripleOf(hand.position);
+  action.velocity = physics::tripleOf(hand.velocity);
+  action.hasVelocity = true;
+  return action;
+}
+
+std::string HumanBot::giveUpReason() const { return {}; }
+
+}  // namespace hemiroll::game

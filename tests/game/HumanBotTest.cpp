@@ -1,0 +1,95 @@
+// game/trial/HumanBot through the real trial loop (HeadlessTrial: servo
+// loop, coupling, ramp, safety, judge): the simulated person wins the first
+// two tutorials as a person with a mouse does, plays the same per seed, and
+// sees the task as the screen shows it.
+
+#include "game/trial/HumanBot.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "engine/script/LevelLoader.h"
+#include "game/trial/HeadlessTrial.h"
+
+namespace hemiroll::game {
+namespace {
+
+using script::TrialOutcome;
+
+const std::string kLevels = std::string(HEMIROLL_SOURCE_DIR) + "/levels/";
+
+TrialResult play(const std::string& file, std::uint64_t seed, const HumanBotOptions& options = {}) {
+  script::LevelLoadOptions loadOptions;
+  loadOptions.seed = seed;
+  script::LoadedLevel level = script::LevelLoader(loadOptions).loadFile(kLevels + file);
+  HumanBot bot(options);
+  TrialSettings settings;
+  settings.seed = seed;
+  return HeadlessTrial(level, bot, settings).run();
+}
+
+// A person is not a machine: judged over seeds, at the model's floor (the
+// default delay, interval and noise: HumanDef::kMin*, kDefaultNoise). The
+// rates measured over 20 seeds are in docs/HUMAN_MODEL.md; 4 of 5 is the
+// floor of what they allow.
+void expectMostlyWon(const std::string& file) {
+  int won = 0;
+  std::string lost;
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    const TrialResult r = play(file, seed);
+    if (r.outcome == TrialOutcome::Success) ++won;
+    else lost += " seed " + std::to_string(seed) + ": " + r.reason + ";";
+  }
+  EXPECT_GE(won, 4) << file << lost;
+}
+
+TEST(HumanBot, WinsTutorialOneOnAMouse) { expectMostlyWon("tutorial_01_tilt_and_return.lua"); }
+
+TEST(HumanBot, WinsTutorialTwoOnAMouse) { expectMostlyWon("tutorial_02_roll_a_short_distance.lua"); }
+
+TEST(HumanBot, TheSameSeedPlaysTheSameTrialAndAnotherSeedAnother) {
+  const TrialResult a = play("tutorial_01_tilt_and_return.lua", 3);
+  const TrialResult b = play("tutorial_01_tilt_and_return.lua", 3);
+  const TrialResult c = play("tutorial_01_tilt_and_return.lua", 4);
+  EXPECT_EQ(a.ticks, b.ticks);
+  EXPECT_EQ(a.time, b.time);
+  EXPECT_NE(a.ticks, c.ticks);
+}
+
+TEST(HumanBot, SeesTheTaskAsTheScreenShowsIt) {
+  script::BotObservation obs;
+  obs.time = 1.5;
+  obs.contact = {0.01, -0.02, 0.0};
+  obs.targetSet[7] = obs.targetSet[8] = true;
+  obs.target[7] = -0.04;
+  obs.target[8] = -0.04;
+  obs.tolerance[7] = obs.tolerance[8] = 0.004;
+  obs.targetSet[0] = true;  // a band on p: upright at the end
+  obs.state[6] = 0.3;
+  const human::ScreenView v = screenViewOf(obs);
+  EXPECT_EQ(v.time, 1.5);
+  EXPECT_EQ(v.contact, physics::Vec2(0.01, -0.02));
+  EXPECT_TRUE(v.contactTargetSet);
+  EXPECT_EQ(v.contactTarget, physics::Vec2(-0.04, -0.04));
+  EXPECT_EQ(v.contactTolerance, 0.004);
+  EXPECT_TRUE(v.uprightRequired);
+  EXPECT_FALSE(v.leanTargetSet);
+  EXPECT_EQ(v.spin, 0.3);
+  EXPECT_EQ(v.hint.kind, human::HintKind::None);  // no aids unless asked for
+}
+
+TEST(HumanBot, ALeanTheTaskAsksForIsShownAsTheNormalItWouldHave) {
+  script::BotObservation obs;
+  obs.targetSet[9] = true;
+  obs.target[9] = -0.08;  // u_o: the tutorial's lean towards +x
+  obs.tolerance[9] = 0.03;
+  const human::ScreenView v = screenViewOf(obs);
+  ASSERT_TRUE(v.leanTargetSet);
+  EXPECT_NEAR(v.leanTarget.x(), std::sin(0.08), 1e-12);
+  EXPECT_NEAR(v.leanTarget.y(), 0.0, 1e-12);
+  EXPECT_EQ(v.leanTolerance, 0.03);
+}
+
+}  // namespace
+}  // namespace hemiroll::game

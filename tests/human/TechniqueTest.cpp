@@ -1,0 +1,94 @@
+// engine/human/Technique: c_up read off the screen agrees with the
+// autopilot's (an independent formula), and the decisions are the
+// technique's: stir far from the target, aim to the side the hemisphere
+// turns, let the stir die away near it, then hold; lean for a lean.
+
+#include "engine/human/Technique.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "engine/autopilot/UprightContact.h"
+#include "engine/physics/HemisphereParams.h"
+#include "engine/physics/Orientation.h"
+
+namespace hemiroll::human {
+namespace {
+
+using physics::Vec2;
+using physics::Vec3;
+
+ScreenView viewOf(const physics::ForceDrivenState& x) {
+  ScreenView v;
+  v.contact = Vec2(x[7], x[8]);
+  v.normal = physics::makeOrientation(x[9], x[10], x[11]).faceNormal();
+  v.spin = x[6];
+  return v;
+}
+
+TEST(Technique, TheUprightContactSeenIsTheAutopilots) {
+  physics::HemisphereParams params;
+  const physics::ModelConstants constants(params);
+  physics::ForceDrivenState x = physics::ForceDrivenState::Zero();
+  x[7] = 0.013, x[8] = -0.021, x[9] = 0.31, x[10] = -0.17, x[11] = 1.3;
+  const Vec2 seen = uprightContactSeen(viewOf(x), params.radius);
+  const Vec2 truth = autopilot::uprightContact(constants, x).point;
+  EXPECT_LT((seen - truth).norm(), 1e-12);
+}
+
+TEST(Technique, FarFromTheTargetItStirsAimingToTheSideTheHemisphereTurns) {
+  TechniqueDef def;
+  ScreenView v;
+  v.contactTargetSet = true;
+  v.uprightRequired = true;
+  v.contactTarget = Vec2(0.05, 0.0);
+  for (const double spin : {0.3, -0.3}) {
+    Technique t(def, 0.04);
+    v.spin = spin;
+    Movement m;
+    for (int i = 0; i < 8; ++i) m = t.decide(v, 0.25);  // long enough to tell the sense
+    EXPECT_EQ(m.kind, Movement::Kind::Stir);
+    EXPECT_DOUBLE_EQ(m.radius, def.stirRadius);
+    const Vec2 aim = m.centre - v.contact;
+    EXPECT_NEAR(aim.norm(), def.aimLimit, 1e-12);
+    EXPECT_NEAR(std::atan2(aim.y(), aim.x()), spin > 0 ? def.aimAngle : -def.aimAngle, 1e-12);
+  }
+}
+
+TEST(Technique, NearTheTargetTheStirDiesAwayThenTheHandHoldsOverTheSpot) {
+  TechniqueDef def;
+  Technique t(def, 0.04);
+  ScreenView v;
+  v.contactTargetSet = true;
+  v.uprightRequired = true;
+  v.contactTarget = Vec2(0.0005, 0.0);  // within landReach of c_up (the origin, upright)
+  double last = def.stirRadius;
+  Movement m;
+  for (int i = 0; i < 40 && t.phase() != Technique::Phase::Settle; ++i) {
+    m = t.decide(v, 0.25);
+    if (m.kind == Movement::Kind::Stir) {
+      EXPECT_LE(m.radius, last + 1e-15);
+      last = m.radius;
+    }
+  }
+  EXPECT_EQ(t.phase(), Technique::Phase::Settle);
+  m = t.decide(v, 0.25);
+  EXPECT_EQ(m.kind, Movement::Kind::Hold);
+  EXPECT_LT((m.centre - v.contactTarget).norm(), def.holdReach + 1e-9);
+}
+
+TEST(Technique, ALeanTheTaskAsksForIsHeldTheWayTheLeanShouldGo) {
+  Technique t(TechniqueDef{}, 0.04);
+  ScreenView v;
+  v.leanTargetSet = true;
+  v.leanTarget = Vec3(std::sin(0.08), 0.0, std::cos(0.08));  // 0.08 rad towards +x
+  const Movement m = t.decide(v, 0.25);
+  EXPECT_EQ(t.phase(), Technique::Phase::Lean);
+  EXPECT_EQ(m.kind, Movement::Kind::Hold);
+  EXPECT_GT(m.centre.x(), 0.0);
+  EXPECT_NEAR(m.centre.y(), 0.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace hemiroll::human
