@@ -15,11 +15,12 @@ local last_stage = nil  -- level state lives in locals of this file
 
 return {
   name = "03 Precess",
-  description = "Lean the hemisphere (mass point about 1.8 cm off the middle), then carry the " ..
-    "mass point round the middle, anticlockwise, like stirring a pot: the lean goes round with it " ..
-    "and the contact point runs through four gates on a small circle, right, ahead, left and " ..
-    "behind (the green arrow points to the next). Then bring it upright and still: it will have " ..
-    "turned about the vertical. A steady circle, about 8 s per turn.",
+  description = "Stir: move the mouse in small quick circles, about 6 mm across and a turn every two " ..
+    "seconds, anticlockwise, round the contact point (where the hemisphere touches the floor). " ..
+    "The hemisphere leans and turns with your stir. Aim the circles a little off the contact point " ..
+    "and the contact point wanders through four gates on a small circle, right, ahead, left and " ..
+    "behind (the green arrow points to the next). Then let the circles die away and hold still: " ..
+    "it stands up, turned a little about the vertical.",
   author = "hemiroll",
   difficulty = 2,
   version = "1",
@@ -55,7 +56,7 @@ return {
     rate = 10,
     on_start = function(state)
       last_stage = nil
-      hemiroll.message("Lean it, then stir the mass point round, anticlockwise, 8 s a turn", 5)
+      hemiroll.message("Stir small quick circles round the contact point, a turn every 2 s", 5)
     end,
     on_update = function(state)
       if state.stage ~= last_stage then

@@ -25,11 +25,11 @@ local last_stage = nil
 
 return {
   name = "05 The helix",
-  description = "Go 2 cm to the right, further than leaning alone can take you, the way the " ..
-    "paper's players did: lean the hemisphere towards the target, then stir the mass point round " ..
-    "(tutorial 3), steadily. Each turn carries the contact point one loop along: the dashed blue " ..
-    "path on the floor shows three loops, with a gate after each. At the target, bring the mass " ..
-    "point to the middle and let everything settle. Stuck? H shows the autopilot's next move.",
+  description = "Go 2 cm to the right, further than a lean can take you, the way the paper's " ..
+    "players did: stir small quick circles round the contact point (tutorial 3), aimed a little " ..
+    "off it (tutorial 4). The contact point spirals along, a loop a turn: the dashed blue path on " ..
+    "the floor shows three loops, with a gate after each. At the target let the circles die away, " ..
+    "then hold still over the spot. Stuck? H shows the autopilot's hint.",
   author = "hemiroll",
   difficulty = 3,
   version = "1",
@@ -65,14 +65,14 @@ return {
     rate = 10,
     on_start = function(state)
       last_stage = 1
-      hemiroll.message("Lean it to the right, then stir the mass point round: one loop a turn", 6)
+      hemiroll.message("Stir small quick circles, aimed a little off the contact point: a loop a turn", 6)
     end,
     on_update = function(state)
       if state.stage ~= last_stage then
         last_stage = state.stage
         if state.stage == 2 then hemiroll.message("First gate. Keep stirring, steadily", 4) end
         if state.stage == 3 then
-          hemiroll.message("Last loop onto the target; then the mass point to the middle, and settle", 5)
+          hemiroll.message("Last loop onto the target; then let the circles die away and hold still", 5)
         end
       end
     end,
