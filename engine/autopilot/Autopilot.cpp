@@ -54,11 +54,31 @@ Autopilot::Autopilot(const AutopilotDef& def)
       model_(def.params, def.coupling, def.dt),
       domain_(def.params) {
   def_.budget = std::clamp(def_.budget, 0.25, 4.0);
+  def_.helix.stiffen = stiffeningFor(def_.params, def_.coupling, 1.0);
+  policy_.params().stiffen = def_.helix.stiffen;
+  work_ = policy_;
   stats_.decisionWall.reserve(4096);
   if (def_.plannerThread) worker_ = std::make_unique<PlannerWorker>([this](const PlanJob& j) { return plan(j); });
 }
 
 Autopilot::~Autopilot() = default;
+
+double stiffeningFor(const physics::HemisphereParams& params, const physics::CouplingDef& coupling, double share) {
+  // Upright, a still proxy holds the mass point on top only while the
+  // spring's pull beats the point's weight over the face's lever: k_r R >
+  // m_p g (the paper's body stands at the edge: m_p g / (k_r R) = 0.98, and
+  // the law was shaped there). A weaker spring lets it fall off within a
+  // second (measured: 7 of 7 generated tasks with the ratio at 1.16-1.43,
+  // none below 1); the hand makes up the difference, so that the law sees
+  // at most kStiffestRatio. While the engagement ramp fades the force in,
+  // such a body is held up by the hand alone, all the more the less of the
+  // force acts (at most kMostStiffening times).
+  constexpr double kStiffestRatio = 0.95, kMostStiffening = 20.0;
+  const double full = params.pointMass * params.gravity / (coupling.stiffness * params.radius);
+  if (full <= 1.0) return 0.0;
+  const double ratio = full / std::max(share, 1e-3);
+  return std::min(ratio / kStiffestRatio - 1.0, kMostStiffening);
+}
 
 Vec3 Autopilot::deliverable(const Vec3& wanted, const Vec3& last, long long ticks) const {
   // A hand moves the stylus smoothly: at most kMaxProxySpeed, far below the
@@ -126,6 +146,7 @@ ProxyCommand Autopilot::act(const AutopilotInput& input) {
     lastProxy_ = out.position;
     return out;
   }
+  policy_.params().stiffen = stiffeningFor(def_.params, def_.coupling, input.forceShare);
   if (given_.set[11] && !turningPsi_ && normalisedError(goal_, input.state) <= 1.0) {
     turningPsi_ = true;
     goal_ = given_;

@@ -91,6 +91,7 @@ struct AutopilotInput {
   physics::Vec3 massPosition = physics::Vec3::Zero();                    // scene [m]
   physics::Vec3 massVelocity = physics::Vec3::Zero();                    // scene [m/s]
   bool engaged = false;  // the coupling holds the mass point
+  double forceShare = 1.0;  // the share of the coupling's force acting (the engagement ramp) [-]
   Goal goal;             // the current stage's bands
   int stage = 0;
 };
@@ -108,6 +109,11 @@ struct PlannerStats {
 };
 
 class PlannerWorker;
+
+// How much the hand stiffens the coupling for this body (HelixParams::stiffen)
+// when `share` of the coupling's force acts (the engagement ramp): 0 where
+// the spring alone holds the mass point on top.
+double stiffeningFor(const physics::HemisphereParams& params, const physics::CouplingDef& coupling, double share);
 
 class Autopilot {
  public:

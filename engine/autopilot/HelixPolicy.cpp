@@ -5,6 +5,7 @@
 
 #include "engine/autopilot/UprightContact.h"
 #include "engine/physics/PlaneVectors.h"
+#include "engine/physics/StateKinematics.h"
 
 namespace hemiroll::autopilot {
 
@@ -194,10 +195,18 @@ Vec3 HelixPolicy::proxyFor(const physics::ForceDrivenState& x) {
   // last_ keeps the path; the landing shape rides on it.
   last_ = proxy;
   motion_.phase = phase_;
-  if (phase_ == HelixPhase::Travel) return proxy;
-  const Vec2 shaped = shape_.at(landingTime_);
-  landingTime_ += dt_;
-  return proxy + despin(x) + Vec3(shaped.x(), shaped.y(), 0.0);
+  if (phase_ != HelixPhase::Travel) {
+    const Vec2 shaped = shape_.at(landingTime_);
+    landingTime_ += dt_;
+    proxy += despin(x) + Vec3(shaped.x(), shaped.y(), 0.0);
+  }
+  return stiffened(proxy, x);
+}
+
+Vec3 HelixPolicy::stiffened(const Vec3& proxy, const physics::ForceDrivenState& x) const {
+  if (params_.stiffen == 0.0) return proxy;
+  const Vec3 mass = physics::massPointPosition(x, constants_->params.radius);
+  return proxy + params_.stiffen * (proxy - mass);
 }
 
 }  // namespace hemiroll::autopilot

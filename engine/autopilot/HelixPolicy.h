@@ -46,6 +46,11 @@ struct HelixParams {
   // integral was gated by the contact's band; 28.4 s with it since); taking spin out is
   // mostly the landing shape's job. 0 turns it off.
   double despinGain = 0.0;     // [m s/rad]
+  // The coupling made stiffer by the hand itself: the proxy is put
+  // `stiffen` times its offset from the mass point further out, so the
+  // spring and damper act as (1 + stiffen) times theirs (Autopilot.h:
+  // chosen from the body and coupling). 0: as the level has them.
+  double stiffen = 0.0;        // [-]
 };
 
 enum class HelixPhase { Travel, Land, Settle };
@@ -110,6 +115,7 @@ class HelixPolicy {
   double contactBandError(const physics::ForceDrivenState& x) const;
   physics::Vec3 despin(const physics::ForceDrivenState& x);
   physics::Vec2 detour(const physics::Vec2& contact, const physics::Vec2& land);
+  physics::Vec3 stiffened(const physics::Vec3& proxy, const physics::ForceDrivenState& x) const;
 
   const physics::ModelConstants* constants_;
   HelixParams params_;

@@ -30,6 +30,9 @@ struct BotObservation {
   Triple3 deviceForce{};
   double proxyDistance = 0.0;        // proxy to mass point [m]
   bool engaged = false;              // the coupling is on (the proxy came within reach after engage)
+  // The share of the coupling's force acting now: 0 before engagement, then
+  // rising to 1 over the engagement ramp (the HUD's "holding, force 50%").
+  double forceShare = 0.0;
   // The task (filled from the level's judge; zero and unset without one).
   std::array<double, 12> target{};
   std::array<double, 12> tolerance{};

@@ -28,7 +28,7 @@ constexpr const char* kVectorNames[kVectorCount] = {"mass",   "mass_velocity", "
 // Field codes (the `codes` table maps each name to one). A view of kind k
 // answers only the codes that belong to it; anything else reads as nil.
 enum Code : int {
-  kTime = 1, kProxyDistance, kEngaged, kHeld, kStage, kTimeLimit, kHoldTime,
+  kTime = 1, kProxyDistance, kEngaged, kHeld, kStage, kTimeLimit, kHoldTime, kForceShare,
   kNested0 = 20,     // + 0..12: state, target, tolerance, mass, ..., force, device_force
   kSlot0 = 100,      // + state slot 0..11
   kComponent0 = 200  // + 0..2: x, y, z
@@ -65,6 +65,7 @@ int observationIndex(lua_State* L) {
       case kStage: lua_pushinteger(L, o->stage + 1); return 1;  // Lua counts from 1
       case kTimeLimit: lua_pushnumber(L, o->timeLimit); return 1;
       case kHoldTime: lua_pushnumber(L, o->holdTime); return 1;
+      case kForceShare: lua_pushnumber(L, o->forceShare); return 1;
       default:
         if (code >= kNested0 && code < kNested0 + kNestedCount) {
           lua_rawgeti(L, LUA_REGISTRYINDEX, views->nested[code - kNested0]);
@@ -175,8 +176,8 @@ void BotScript::buildObservation() {
     lua_pushinteger(L, value);
     lua_setfield(L, codes, name);
   };
-  const char* scalars[] = {"time", "proxy_distance", "engaged", "held", "stage", "time_limit", "hold_time"};
-  for (int i = 0; i < 7; ++i) code(scalars[i], kTime + i);
+  const char* scalars[] = {"time", "proxy_distance", "engaged", "held", "stage", "time_limit", "hold_time", "force_share"};
+  for (int i = 0; i < 8; ++i) code(scalars[i], kTime + i);
   const char* nested[kNestedCount] = {"state", "target", "tolerance"};
   for (int i = 0; i < kVectorCount; ++i) nested[3 + i] = kVectorNames[i];
   for (int i = 0; i < kNestedCount; ++i) code(nested[i], kNested0 + i);

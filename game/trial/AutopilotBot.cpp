@@ -53,6 +53,7 @@ script::BotAction AutopilotBot::act(const script::BotObservation& obs) {
   input_.massPosition = physics::vec3Of(obs.mass);
   input_.massVelocity = physics::vec3Of(obs.massVelocity);
   input_.engaged = obs.engaged;
+  input_.forceShare = obs.forceShare;
   input_.stage = obs.stage;
   autopilot::Goal& goal = input_.goal;
   goal.target = obs.target;

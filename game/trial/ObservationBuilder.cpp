@@ -43,6 +43,7 @@ void ObservationBuilder::fillKinematics(double time, const physics::ForceDrivenS
   out.deviceForce = triple(mapping_.forceToScene(haptics::Vec3(f[0], f[1], f[2])));
   out.proxyDistance = snapshot.proxyDistance;
   out.engaged = snapshot.engagement == haptics::Engagement::Engaged;
+  out.forceShare = snapshot.rampScale;
 }
 
 void ObservationBuilder::fillTask(const script::TaskJudge& judge, script::BotObservation& out) {

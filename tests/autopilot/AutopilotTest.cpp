@@ -51,8 +51,7 @@ struct Played {
 // Plays `goal` from `start` for up to `limit` seconds; at `shoveAt` the mass
 // point's in-face velocity jumps by `shove` (an impulse on the mass point).
 Played play(const Goal& goal, const physics::ForceDrivenState& start, double limit, double shoveAt = -1.0,
-            const physics::Vec2& shove = physics::Vec2::Zero()) {
-  AutopilotDef def;
+            const physics::Vec2& shove = physics::Vec2::Zero(), const AutopilotDef& def = {}) {
   Autopilot pilot(def);
   PlantModel plant(def.params, def.coupling, def.dt);
   plant.reset(start, 0.0);
@@ -191,6 +190,31 @@ TEST(Autopilot, RecoversFromAShove) {
   // The shove mattered: the unshoved run ends elsewhere and at another time.
   const Played calm = play(paperGoal(), physics::ForceDrivenState::Zero(), 120.0);
   EXPECT_NE(p.time, calm.time);
+}
+
+TEST(Autopilot, TheHandStiffensOnlyACouplingTooWeakToHoldTheMassPointOnTop) {
+  physics::HemisphereParams paper;  // m_p g / (k_r R) = 0.98 at k_r = 250
+  physics::CouplingDef coupling;
+  EXPECT_EQ(stiffeningFor(paper, coupling, 1.0), 0.0);
+  EXPECT_EQ(stiffeningFor(paper, coupling, 0.3), 0.0);  // the paper's body rides the ramp out as it always has
+  coupling.stiffness = 175.0;  // ratio 1.40
+  const double full = stiffeningFor(paper, coupling, 1.0);
+  EXPECT_NEAR((1.0 + full) * coupling.stiffness, paper.pointMass * paper.gravity / (0.95 * paper.radius), 1e-9);
+  EXPECT_GT(stiffeningFor(paper, coupling, 0.5), full);      // half the force: the hand makes up more
+  EXPECT_EQ(stiffeningFor(paper, coupling, 0.0), 20.0);      // and at most 20 times
+}
+
+TEST(Autopilot, BalancesACouplingTooWeakToHoldTheMassPointOnTop) {
+  // The paper's body on M2 at 175 N/m (a generated task that fell off the
+  // face within a second before the hand stiffened the coupling).
+  AutopilotDef def;
+  def.coupling.method = physics::ForceMethod::M2;
+  def.coupling.stiffness = 175.0;
+  def.coupling.damping = 7.0;
+  def.coupling.alpha = 1.0;
+  ASSERT_GT(stiffeningFor(def.params, def.coupling, 1.0), 0.0);
+  const Played p = play(paperGoal(), physics::ForceDrivenState::Zero(), 120.0, -1.0, physics::Vec2::Zero(), def);
+  EXPECT_TRUE(p.success) << p.failure << " t = " << p.time;
 }
 
 TEST(Autopilot, GivesUpAtOnceOnAnUnreachableTarget) {

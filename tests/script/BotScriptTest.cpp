@@ -72,6 +72,15 @@ TEST(BotScript, ForceAndDeviceForceAreSeparateVectors) {
   EXPECT_EQ(bot.act(obs).position, (Triple3{1.5, -0.25, 4.5}));
 }
 
+// The engagement ramp, as the HUD shows it ("holding, force 50%").
+TEST(BotScript, TheForceShareIsAScalarOfTheObservation) {
+  const BotFile file("return {name = 'share', act = function(t, obs) return obs.force_share, 0, 0 end}");
+  BotScript bot(file.path);
+  BotObservation obs;
+  obs.forceShare = 0.375;
+  EXPECT_EQ(bot.act(obs).position, (Triple3{0.375, 0.0, 0.0}));
+}
+
 TEST(BotScript, SixValuesGiveAVelocity) {
   const BotFile file("return {name = 'v', act = function(t, obs) return 1, 2, 3, 4, 5, 6 end}");
   BotScript bot(file.path);
