@@ -83,6 +83,10 @@ struct AutopilotDef {
   // planLead: in real time a plan that wants one asks for it, and the next
   // plan is made this far ahead and given 80 % of it to search.
   double refineLead = 1.5;  // [s]
+  // The autopilot holds the proxy itself, so its hand may stiffen or soften
+  // the coupling (HelixParams::stiffen, stiffeningFor). Off where another
+  // hand holds the proxy and the plan is only a guide or a hint.
+  bool handStiffens = true;
 };
 
 struct AutopilotInput {
@@ -130,6 +134,9 @@ class Autopilot {
   const PlannerStats& stats() const { return stats_; }
   // The running law as of the last act (act's thread).
   const HelixPolicy& policy() const { return policy_; }
+  // Whether the autopilot's own hand holds the proxy from now on
+  // (AutopilotDef::handStiffens; act's thread).
+  void setHandStiffens(bool on) { def_.handStiffens = on; }
 
   // What one plan decides, applied to the running policy.
   struct Decision {

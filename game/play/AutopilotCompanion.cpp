@@ -10,9 +10,10 @@ namespace hemiroll::game {
 
 namespace {
 
-AutopilotBotOptions plannerOnItsOwnThread() {
+AutopilotBotOptions plannerOnItsOwnThread(bool drives) {
   AutopilotBotOptions o;
   o.plannerThread = true;
+  o.holdsProxy = drives;  // watching: its own hand holds the proxy; hint and guide: another's
   return o;
 }
 
@@ -25,7 +26,7 @@ AutopilotCompanion::AutopilotCompanion(const script::LevelDef& level, haptics::S
       hand_(hand),
       guide_(guide),
       observer_(level.params, mapping),
-      autopilot_(plannerOnItsOwnThread()) {
+      autopilot_(plannerOnItsOwnThread(hand != nullptr)) {
   driving_.store(hand != nullptr);
   try {
     autopilot_.init(botLevelInfo(level, level.source), static_cast<std::int64_t>(seed));
@@ -80,6 +81,12 @@ void AutopilotCompanion::step() {
   // then this tick's kinematics over it. No plan before the first frame
   // has published the goal.
   if (!tasks_.read(obs_)) return;
+  // Once the player has taken over, the plan only hints or guides: the
+  // autopilot's hand no longer holds the proxy (on this thread, as act).
+  if (hand_ != nullptr && !driving() && !letGo_) {
+    autopilot_.letGoOfProxy();
+    letGo_ = true;
+  }
   observer_.fillKinematics(snapshot_.time, physics::forceStateOf(snapshot_.state), snapshot_, obs_);
   const haptics::GuideSample plan = guideSampleOf(autopilot_, obs_);
   if (!plan.valid) {

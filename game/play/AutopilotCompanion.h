@@ -64,6 +64,7 @@ class AutopilotCompanion {
   HandoffBotDevice* hand_;
   bool guide_;
   ObservationBuilder observer_;
+  bool letGo_ = false;  // companion thread: letGoOfProxy done
   AutopilotBot autopilot_;
   std::string initError_;
   haptics::TripleBuffer<script::BotObservation> tasks_;

@@ -43,6 +43,7 @@ void AutopilotBot::init(const script::BotLevelInfo& info, std::int64_t seed) {
   def.budget = options_.budget;
   def.seed = static_cast<std::uint64_t>(seed);
   def.plannerThread = options_.plannerThread;
+  def.handStiffens = options_.holdsProxy;
   autopilot_ = std::make_unique<autopilot::Autopilot>(def);
 }
 
@@ -79,6 +80,11 @@ script::BotAction AutopilotBot::act(const script::BotObservation& obs) {
   action.velocity = physics::tripleOf(command.velocity);
   action.hasVelocity = true;
   return action;
+}
+
+void AutopilotBot::letGoOfProxy() {
+  options_.holdsProxy = false;
+  if (autopilot_) autopilot_->setHandStiffens(false);
 }
 
 std::string AutopilotBot::giveUpReason() const {

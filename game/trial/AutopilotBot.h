@@ -19,6 +19,9 @@ inline constexpr const char* kAutopilotBotName = "autopilot";
 struct AutopilotBotOptions {
   double budget = 1.0;  // planning effort (AutopilotDef::budget)
   bool plannerThread = false;  // plan beside the trial's thread (real-time play)
+  // The autopilot holds the proxy itself (a bot, watch mode); false for a
+  // guide or a hint, whose plan another hand follows (AutopilotDef::handStiffens).
+  bool holdsProxy = true;
 };
 
 class AutopilotBot final : public script::BotPolicy {
@@ -33,6 +36,8 @@ class AutopilotBot final : public script::BotPolicy {
 
   // Null before init.
   const autopilot::Autopilot* autopilot() const { return autopilot_.get(); }
+  // Another hand has taken the proxy over (watch mode, the player took over).
+  void letGoOfProxy();
 
  private:
   AutopilotBotOptions options_;

@@ -50,7 +50,9 @@ TrialResult HeadlessTrial::run() {
 
   std::unique_ptr<AutopilotBot> guide;
   if (settings_.guidance.active()) {
-    guide = std::make_unique<AutopilotBot>();
+    AutopilotBotOptions guiding;
+    guiding.holdsProxy = false;  // the bot's hand holds the proxy; the plan only guides it
+    guide = std::make_unique<AutopilotBot>(guiding);
     try {
       guide->init(botLevelInfo(def, def.source), settings_.seed);
     } catch (const script::ScriptError& e) {

@@ -14,6 +14,7 @@ void HintCoach::init(const script::BotLevelInfo& info, std::int64_t seed) {
   // Half the planning effort: the hint is a coarse cue a person follows
   // late, and 0.5 still wins every shipped level (0.25 loses tutorial 02).
   options.budget = 0.5;
+  options.holdsProxy = false;  // the person holds the proxy; the plan is a hint
   autopilot_ = std::make_unique<AutopilotBot>(options);
   autopilot_->init(info, seed);
   dt_ = info.dt;

@@ -45,6 +45,7 @@ TrialResult runRealtimeTrial(script::LoadedLevel& level, script::BotPolicy& bot,
   if (settings.guidance.active()) {
     AutopilotBotOptions options;
     options.plannerThread = true;
+    options.holdsProxy = false;  // the bot's hand holds the proxy; the plan only guides it
     guide = std::make_unique<AutopilotBot>(options);
     try {
       guide->init(botLevelInfo(def, def.source), static_cast<std::int64_t>(settings.seed));

@@ -192,12 +192,15 @@ TEST(Autopilot, RecoversFromAShove) {
   EXPECT_NE(p.time, calm.time);
 }
 
-TEST(Autopilot, TheHandStiffensOnlyACouplingTooWeakToHoldTheMassPointOnTop) {
-  physics::HemisphereParams paper;  // m_p g / (k_r R) = 0.98 at k_r = 250
+TEST(Autopilot, TheHandMakesEveryCouplingActAsOneAtTheLawsRatio) {
+  physics::HemisphereParams paper;  // m_p g / (k_r R) = 0.981 at k_r = 250
   physics::CouplingDef coupling;
-  EXPECT_EQ(stiffeningFor(paper, coupling, 1.0), 0.0);
-  EXPECT_EQ(stiffeningFor(paper, coupling, 0.3), 0.0);  // the paper's body rides the ramp out as it always has
-  coupling.stiffness = 175.0;  // ratio 1.40
+  const double ratio = paper.pointMass * paper.gravity / (coupling.stiffness * paper.radius);
+  EXPECT_NEAR(stiffeningFor(paper, coupling, 1.0), ratio / 0.95 - 1.0, 1e-15);
+  EXPECT_EQ(stiffeningFor(paper, coupling, 0.3), stiffeningFor(paper, coupling, 1.0));  // it holds: the ramp is ridden out
+  coupling.stiffness = 500.0;  // twice as stiff: softened by about half
+  EXPECT_NEAR(1.0 + stiffeningFor(paper, coupling, 1.0), ratio / 2.0 / 0.95, 1e-12);
+  coupling.stiffness = 175.0;  // ratio 1.40: too weak to hold the mass point on top
   const double full = stiffeningFor(paper, coupling, 1.0);
   EXPECT_NEAR((1.0 + full) * coupling.stiffness, paper.pointMass * paper.gravity / (0.95 * paper.radius), 1e-9);
   EXPECT_GT(stiffeningFor(paper, coupling, 0.5), full);      // half the force: the hand makes up more
