@@ -70,7 +70,7 @@ ResearchSession::ResearchSession(const SessionRequest& request) {
   std::optional<SessionManifest> previous;
   if (fs::exists(manifestPath, ec)) {
     try {
-      previous = SessionManifest::fromJson(record::readWholeFile(manifestPath), manifestPath.string());
+      previous = SessionManifest::fromJson(record::readWholeFile(manifestPath, files::kSessionManifest), manifestPath.string());
     } catch (const std::exception& e) {
       environment(e.what());
     }

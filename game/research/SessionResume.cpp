@@ -42,7 +42,7 @@ bool sidecarComplete(const fs::path& sidecar) {
   try {
     record::TrialMeta meta;
     record::SidecarStatus status;
-    record::Sidecar::fromJson(record::readWholeFile(sidecar), sidecar.string(), meta, status);
+    record::Sidecar::fromJson(record::readWholeFile(sidecar, files::kSidecar), sidecar.string(), meta, status);
     return status.complete;
   } catch (const record::RecordError&) {
     return false;  // unreadable: treated as interrupted, and moved aside
