@@ -38,9 +38,11 @@ struct LevelFacts {
   double timeLimit = 0.0;
 };
 
-LevelFacts factsOf(const std::string& path) {
+LevelFacts factsOf(const std::string& path, const script::SandboxLimits& limits) {
   try {
-    const script::LoadedLevel level = script::LevelLoader().loadFile(path);
+    script::LevelLoadOptions options;
+    options.limits = limits;
+    const script::LoadedLevel level = script::LevelLoader(options).loadFile(path);
     return {level.def.name, record::fileContentHash(path), level.def.coupling, level.def.task.timeLimit};
   } catch (const script::ScriptError& e) {
     badInput(e.what());
@@ -56,6 +58,7 @@ ResearchSession::ResearchSession(const SessionRequest& request) {
   try {
     script::ProtocolLoadOptions options;
     options.levelsDir = request.levelsDir;
+    options.limits = request.loadLimits;
     protocol_ = script::ProtocolLoader(options).loadFile(request.protocolPath);
   } catch (const script::ScriptError& e) {
     badInput(e.what());
@@ -123,7 +126,7 @@ void ResearchSession::buildPlan(const SessionRequest& request, std::uint64_t see
   for (const script::PlannedTrial& p : plan.trials) {
     const script::ConditionDef& condition = script::ProtocolPlan::conditionOf(protocol_, p);
     auto found = levels.find(condition.levelPath);
-    if (found == levels.end()) found = levels.emplace(condition.levelPath, factsOf(condition.levelPath)).first;
+    if (found == levels.end()) found = levels.emplace(condition.levelPath, factsOf(condition.levelPath, request.loadLimits)).first;
     const LevelFacts& level = found->second;
     const physics::CouplingDef coupling = script::overriddenCoupling(condition.overrides, level.coupling);
     ManifestTrial t;

@@ -44,6 +44,9 @@ struct SessionRequest {
   std::string session = "1";
   std::filesystem::path dataRoot;         // "" = defaultSessionsRoot()
   std::optional<std::uint64_t> seed;      // none = the session's (resumed) or the protocol's
+  // What the protocol and its levels are loaded with (the window's screens
+  // give a listing's shorter limits; game/screens/ListingBudget.h).
+  script::SandboxLimits loadLimits;
 };
 
 class ResearchSession {

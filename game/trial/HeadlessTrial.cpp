@@ -41,6 +41,11 @@ TrialResult HeadlessTrial::run() {
   engage.kind = haptics::ServoCommandKind::Engage;
   loop.post(engage);
 
+  // Headless: each script's time in Lua, and the autopilot's planning, are
+  // bounded by multiples of the simulated time (TrialTiming.h).
+  const script::TrialTiming timing;
+  bot_.setTiming(timing);
+  level_.script->setTiming(timing);
   try {
     bot_.init(botLevelInfo(def, def.source), settings_.seed);
   } catch (const script::ScriptError& e) {
@@ -51,6 +56,7 @@ TrialResult HeadlessTrial::run() {
   std::unique_ptr<AutopilotBot> guide;
   if (settings_.guidance.active()) {
     guide = std::make_unique<AutopilotBot>();
+    guide->setTiming(timing);
     try {
       guide->init(botLevelInfo(def, def.source), settings_.seed);
     } catch (const script::ScriptError& e) {
