@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cstdio>
+#include <ctime>
 #include <cmath>
 
 #include "engine/autopilot/LandingSearch.h"
@@ -14,6 +16,18 @@ namespace hemiroll::autopilot {
 
 using physics::Vec2;
 using physics::Vec3;
+
+namespace {
+
+// This thread's CPU clock [ns]: what planning costs, whichever thread plans
+// (act's headless, the worker's in real time), without the time it waits.
+std::int64_t threadCpuNs() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<std::int64_t>(t.tv_sec) * 1'000'000'000 + t.tv_nsec;
+}
+
+}  // namespace
 
 namespace {
 
@@ -90,7 +104,22 @@ ProxyCommand Autopilot::act(const AutopilotInput& input) {
   ProxyCommand out;
   if (!started_) {
     lastProxy_ = input.massPosition;
+    firstActTime_ = input.time;
     started_ = true;
+  }
+  if (failure_.empty() && (def_.planningSeconds > 0.0 || def_.planningSecondsPerSimulatedSecond > 0.0)) {
+    const double simulated = input.time - firstActTime_;
+    const double allowed =
+        def_.budget * (def_.planningSeconds + def_.planningSecondsPerSimulatedSecond * std::max(0.0, simulated));
+    if (planningCpuSeconds() > allowed) {
+      char why[300];
+      std::snprintf(why, sizeof why,
+                    "planning has used %.1f s of CPU by %.1f s of simulated time, more than its budget (%g x (%g s + "
+                    "%g s per simulated second)): the task looks beyond it",
+                    planningCpuSeconds(), simulated, def_.budget, def_.planningSeconds,
+                    def_.planningSecondsPerSimulatedSecond);
+      failure_ = why;
+    }
   }
   if (!failure_.empty()) {  // hold still; the game ends the trial
     out.position = lastProxy_;
@@ -204,6 +233,7 @@ void Autopilot::apply(const Decision& d) {
 
 Autopilot::Decision Autopilot::plan(const PlanJob& job) {
   const auto start = std::chrono::steady_clock::now();
+  const std::int64_t cpuStart = threadCpuNs();
   AutopilotInput input = job.input;
   work_ = job.policy;
   planGoal_ = job.goal;
@@ -230,6 +260,7 @@ Autopilot::Decision Autopilot::plan(const PlanJob& job) {
     verifyLanding(input);
   }
   stats_.decisionWall.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  planningCpuNs_.fetch_add(threadCpuNs() - cpuStart, std::memory_order_relaxed);
   return decision_;
 }
 

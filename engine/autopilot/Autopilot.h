@@ -34,6 +34,7 @@
 // rollout through PlantModel alone, so the plans do not depend on it.
 // Headless plans run inside act(): same inputs, same outputs, bit for bit.
 
+#include <atomic>
 #include <cstdint>
 #include <chrono>
 #include <memory>
@@ -83,6 +84,15 @@ struct AutopilotDef {
   // planLead: in real time a plan that wants one asks for it, and the next
   // plan is made this far ahead and given 80 % of it to search.
   double refineLead = 1.5;  // [s]
+  // Planning's CPU per trial (issue 33): at most budget x (planningSeconds +
+  // planningSecondsPerSimulatedSecond x the simulated time since the first
+  // act), measured on the planning thread's CPU clock. Past it the autopilot
+  // gives up with the reason: a task it can neither win nor refuse up front
+  // (contradictory stages, a rest the bands rule out) planned at 2 s of CPU
+  // per simulated second, 8 minutes for a 240 s level. Won tasks use up to
+  // 0.2 s per simulated second (AUTOPILOT.md). 0 and 0: no budget.
+  double planningSeconds = 5.0;
+  double planningSecondsPerSimulatedSecond = 1.0;
 };
 
 struct AutopilotInput {
@@ -118,6 +128,10 @@ class Autopilot {
 
   ProxyCommand act(const AutopilotInput& input);
 
+  // CPU time spent planning so far [s] (any thread may read it).
+  double planningCpuSeconds() const {
+    return 1e-9 * static_cast<double>(planningCpuNs_.load(std::memory_order_relaxed));
+  }
   // Non-empty once the autopilot has given up ("the target ... is beyond ...").
   const std::string& failure() const { return failure_; }
   // Read it only while no plan is running (headless, or after the trial).
@@ -221,6 +235,9 @@ class Autopilot {
   physics::Vec3 lastProxy_ = physics::Vec3::Zero();
   std::string failure_;
   PlannerStats stats_;
+  // Planning's CPU, added by whichever thread plans, read by act's.
+  std::atomic<std::int64_t> planningCpuNs_{0};
+  double firstActTime_ = 0.0;
   std::uint64_t generation_ = 0;
   bool resetPlanner_ = false, holdSteer_ = false;
   bool refineNext_ = false;  // act's side: the next real-time plan gets refineLead

@@ -42,7 +42,7 @@ ServoLoop::ServoLoop(const ServoLoopDef& def, HapticDevice& device)
   if (!problem.empty()) throw std::invalid_argument("ServoLoop: " + problem);
   const std::string params = physics::validateParams(def.params, false);
   if (!params.empty()) throw std::invalid_argument("ServoLoop: " + params);
-  const std::string guidance = validateGuidance(def.guidance);
+  const std::string guidance = guidanceProblem(def.guidance, device.spec());
   if (!guidance.empty()) throw std::invalid_argument("ServoLoop: guidance." + guidance);
 }
 

@@ -1,5 +1,7 @@
 #include "engine/script/ProtocolLoader.h"
 
+#include "engine/physics/ForceCoupling.h"
+
 #include <lua.hpp>
 
 #include <algorithm>
@@ -108,6 +110,10 @@ GuidanceSpec readGuidance(const LuaTableReader& table) {
   g.stiffness = k.value_or(0.0);
   g.damping = readNonNegative(table, "damping", "N s/m").value_or(0.0);
   g.maxError = readPositive(table, "max_error", "m").value_or(g.maxError);
+  // The bounds of every gain, wherever it is given (physics/ForceCoupling.h).
+  if (g.stiffness > physics::kMaxStiffness) table.fail(spring, "must be at most 1e6 N/m");
+  if (g.damping > physics::kMaxDamping) table.fail("damping", "must be at most 1e4 N s/m");
+  if (g.maxError > physics::kMaxGuidanceError) table.fail("max_error", "must be at most 1 m");
   if (const auto fade = table.table("fade")) {
     rejectUnknownLevelKeys(*fade, {"from", "to", "over_trials"});
     g.fade.from = readFadeValue(*fade, "from", 1.0);
@@ -126,6 +132,13 @@ TrialOverrides readOverrides(const LuaTableReader& table) {
   o.damping = readNonNegative(table, "kv", "damping, N s/m");
   o.alpha = readPositive(table, "alpha", "the normal / in-face gain ratio");
   o.timeLimit = readPositive(table, "time_limit", "s");
+  // A level's bounds (TaskDef.h, ForceCoupling.h): an override may not give
+  // what the level itself could not (time_limit = 1e16 wrote 258 MB in 20 s).
+  if (o.timeLimit && *o.timeLimit > kMaxTimeLimit)
+    table.fail("time_limit", "must be at most " + std::to_string(static_cast<int>(kMaxTimeLimit)) +
+                                 " s (a day), as a level's");
+  if (const auto error = physics::couplingError(overriddenCoupling(o, physics::CouplingDef{})))
+    table.fail(error->field, error->message);
   if (const auto guidance = table.table("guidance")) o.guidance = readGuidance(*guidance);
   return o;
 }

@@ -225,6 +225,9 @@ std::string ResearchSession::couplingProblem(const haptics::DeviceSpec& device) 
     if (!problem.empty())
       return t.trialId + " (" + t.conditionLabel + ", " + t.levelFile + "): the " + device.name +
              " device cannot take this coupling: " + problem;
+    if (const std::string guidance = haptics::guidanceProblem(t.guidance, device); !guidance.empty())
+      return t.trialId + " (" + t.conditionLabel + ", " + t.levelFile + "): the " + device.name +
+             " device cannot take this guidance: " + guidance;
   }
   return "";
 }

@@ -51,8 +51,7 @@ struct Played {
 // Plays `goal` from `start` for up to `limit` seconds; at `shoveAt` the mass
 // point's in-face velocity jumps by `shove` (an impulse on the mass point).
 Played play(const Goal& goal, const physics::ForceDrivenState& start, double limit, double shoveAt = -1.0,
-            const physics::Vec2& shove = physics::Vec2::Zero()) {
-  AutopilotDef def;
+            const physics::Vec2& shove = physics::Vec2::Zero(), const AutopilotDef& def = {}) {
   Autopilot pilot(def);
   PlantModel plant(def.params, def.coupling, def.dt);
   plant.reset(start, 0.0);
@@ -200,6 +199,23 @@ TEST(Autopilot, GivesUpAtOnceOnAnUnreachableTarget) {
   EXPECT_FALSE(p.success);
   EXPECT_NE(p.failure.find("beyond its reach"), std::string::npos);
   EXPECT_LT(p.time, 0.01);
+}
+
+// Planning has a CPU budget per trial tied to the simulated time (issue 33):
+// spent, the autopilot gives up with the reason, as on a task it can neither
+// win nor refuse, instead of planning for as long as the level lasts. Here
+// the budget is made tiny (20 ms, nothing per simulated second) so that the
+// paper's task, which needs more, meets it.
+TEST(Autopilot, GivesUpWhenPlanningHasSpentItsCpuBudget) {
+  AutopilotDef def;
+  def.planningSeconds = 0.02;
+  def.planningSecondsPerSimulatedSecond = 0.0;
+  const Played p = play(paperGoal(), physics::ForceDrivenState::Zero(), 20.0, -1.0, physics::Vec2::Zero(), def);
+  EXPECT_FALSE(p.success);
+  EXPECT_NE(p.failure.find("planning has used"), std::string::npos) << p.failure;
+  EXPECT_NE(p.failure.find("more than its budget (1 x (0.02 s + 0 s per simulated second))"), std::string::npos)
+      << p.failure;
+  EXPECT_LT(p.time, 20.0);  // gave up, did not play on to the limit
 }
 
 TEST(Autopilot, SameInputsSameProxyBitForBit) {
