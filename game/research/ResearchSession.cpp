@@ -77,8 +77,11 @@ ResearchSession::ResearchSession(const SessionRequest& request) {
     } catch (const std::exception& e) {
       environment(e.what());
     }
-  } else if (fs::exists(folder_, ec) && !fs::is_empty(folder_, ec)) {
-    environment(folder_.string() + " holds files but no " + kManifestFile + ": it is not a session folder");
+  } else if (fs::exists(folder_, ec)) {
+    // A lock file alone is a session that ended before its manifest.
+    for (const fs::directory_entry& entry : fs::directory_iterator(folder_, ec))
+      if (entry.path().filename() != kLockFile)
+        environment(folder_.string() + " holds files but no " + kManifestFile + ": it is not a session folder");
   }
   if (previous && request.seed && *request.seed != previous->seed)
     badInput("session '" + request.session + "' of participant '" + request.participant + "' was started with seed " +
@@ -185,6 +188,20 @@ void ResearchSession::begin(const std::string& player) {
   std::error_code ec;
   fs::create_directories(folder_, ec);
   if (ec) environment("cannot create the session folder " + folder_.string() + ": " + ec.message());
+  lock_ = std::make_unique<SessionLock>(folder_, "hemiroll session of " + manifest_.experiment + " as " + player);
+  // What the constructor read may have changed before the lock was taken:
+  // another session may have run in the folder meanwhile.
+  const bool manifestNow = fs::exists(folder_ / kManifestFile, ec);
+  const bool changed = manifestNow != resumed_ ||
+                       (resumed_ && [&] {
+                         const ResumePoint now = findResumePoint(folder_, manifest_.plan);
+                         return now.done != done_ || now.interrupted != interrupted_;
+                       }());
+  if (changed) {
+    lock_.reset();
+    environment("the session folder " + folder_.string() +
+                " changed while this session was being opened (another session ran in it); run it again");
+  }
   for (const auto& [trialId, reason] : interrupted_) manifest_.aborted.push_back(moveTrialAside(folder_, trialId, reason));
   if (!resumed_) {
     manifest_.startTime = record::utcTimestamp();
@@ -196,6 +213,11 @@ void ResearchSession::begin(const std::string& player) {
   } catch (const record::RecordError& e) {
     environment(e.what());
   }
+}
+
+const std::string& ResearchSession::lockNote() const {
+  static const std::string none;
+  return lock_ ? lock_->note() : none;
 }
 
 const std::string& ResearchSession::instructionsOf(const ManifestTrial& trial) const {

@@ -69,9 +69,11 @@ TEST(SessionCommandTest, ABotPlaysEveryTrialIntoTheSessionFolder) {
       session({kDemo, "--participant", "p01", "--data", dir.path().string(), "--bot", kSolver});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const fs::path folder = dir.path() / "tutorial-demo" / "p01" / "1";
-  EXPECT_EQ(filesIn(folder), (std::set<std::string>{"session.json", "results.csv", "trial-001.csv", "trial-001.json",
-                                                    "trial-002.csv", "trial-002.json", "trial-003.csv",
-                                                    "trial-003.json"}));
+  // session.lock: the folder's lock, released (empty) at the end.
+  EXPECT_EQ(filesIn(folder), (std::set<std::string>{"session.json", "session.lock", "results.csv", "trial-001.csv",
+                                                    "trial-001.json", "trial-002.csv", "trial-002.json",
+                                                    "trial-003.csv", "trial-003.json"}));
+  EXPECT_EQ(TempDirectory::read(folder / "session.lock"), "");
   // One line per trial as it finished, then the summary.
   const std::vector<std::string> out = lines(r.out);
   ASSERT_EQ(out.size(), 4u) << r.out;
@@ -251,6 +253,13 @@ TEST(SessionCommandTest, KilledInTheSecondTrialResumesWithTheFirstUntouched) {
     const auto giveUp = std::chrono::steady_clock::now() + std::chrono::seconds(30);
     while (!fs::exists(folder / "trial-002.json") && child.running() && std::chrono::steady_clock::now() < giveUp)
       std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    // A second session on the same folder while the first runs (issue 33):
+    // refused at once, naming the holder, the folder untouched.
+    const ProcessResult second = runProcess(kBinary, args);
+    EXPECT_EQ(second.exitCode, 1) << second.err;
+    EXPECT_THAT(second.err, HasSubstr(" is in use by another session (process "));
+    EXPECT_THAT(second.err, HasSubstr("hemiroll session of crash as "));
+    EXPECT_FALSE(fs::exists(folder / "trial-002.csv.aborted-1"));
     // Into the trial: rows are being written (the recorder flushes every 0.5 s).
     std::this_thread::sleep_for(std::chrono::milliseconds(600));
     ASSERT_TRUE(child.running()) << "the session ended before the kill: " << child.err();
@@ -269,6 +278,9 @@ TEST(SessionCommandTest, KilledInTheSecondTrialResumesWithTheFirstUntouched) {
   const ProcessResult r = runProcess(kBinary, args);
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_THAT(r.err, HasSubstr("trial-002 was interrupted before it finished; its files were moved aside"));
+  // The killed session's lock went with it; its record is reported, taken over.
+  EXPECT_THAT(r.err, HasSubstr("took over the session folder's lock from a session that ended without releasing it "
+                               "(process "));
   EXPECT_THAT(r.out, HasSubstr("\"trials\":3,\"done\":3,\"kept\":1,\"ran\":2"));
   // The finished trial: the same bytes. The interrupted one: moved aside whole.
   EXPECT_EQ(hemiroll::test::TempDirectory::read(folder / "trial-001.csv"), firstCsv);
