@@ -6,11 +6,12 @@ namespace hemiroll::files {
 
 namespace {
 
-// The length of the valid UTF-8 sequence starting at text[i], or 0.
-std::size_t sequenceLength(std::string_view text, std::size_t i) {
+// The length of the valid UTF-8 sequence starting at text[i], or 0 (also
+// for a control character, unless `controls`).
+std::size_t sequenceLength(std::string_view text, std::size_t i, bool controls = false) {
   const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
   const unsigned char lead = byte(i);
-  if (lead < 0x80) return (lead < 0x20 || lead == 0x7F) ? 0 : 1;
+  if (lead < 0x80) return (!controls && (lead < 0x20 || lead == 0x7F)) ? 0 : 1;
   std::size_t length = 0;
   unsigned min = 0;
   unsigned code = 0;
@@ -30,8 +31,26 @@ std::size_t sequenceLength(std::string_view text, std::size_t i) {
   }
   if (code < min || code > 0x10FFFF || (code >= 0xD800 && code <= 0xDFFF)) return 0;
   // C1 controls (U+0080..U+009F) are controls too.
-  if (code >= 0x80 && code <= 0x9F) return 0;
+  if (!controls && code >= 0x80 && code <= 0x9F) return 0;
   return length;
+}
+
+std::string escaped(std::string_view text, bool controls) {
+  std::string out;
+  out.reserve(text.size());
+  for (std::size_t i = 0; i < text.size();) {
+    const std::size_t n = sequenceLength(text, i, controls);
+    if (n > 0) {
+      out.append(text.substr(i, n));
+      i += n;
+    } else {
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "\\x%02X", static_cast<unsigned char>(text[i]));
+      out += hex;
+      ++i;
+    }
+  }
+  return out;
 }
 
 }  // namespace
@@ -45,22 +64,8 @@ bool isPrintableUtf8(std::string_view text) {
   return true;
 }
 
-std::string printable(std::string_view text) {
-  std::string out;
-  out.reserve(text.size());
-  for (std::size_t i = 0; i < text.size();) {
-    const std::size_t n = sequenceLength(text, i);
-    if (n > 0) {
-      out.append(text.substr(i, n));
-      i += n;
-    } else {
-      char escaped[8];
-      std::snprintf(escaped, sizeof escaped, "\\x%02X", static_cast<unsigned char>(text[i]));
-      out += escaped;
-      ++i;
-    }
-  }
-  return out;
-}
+std::string printable(std::string_view text) { return escaped(text, false); }
+
+std::string validUtf8(std::string_view text) { return escaped(text, true); }
 
 }  // namespace hemiroll::files

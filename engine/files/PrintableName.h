@@ -18,6 +18,10 @@ bool isPrintableUtf8(std::string_view text);
 // `text` with every byte that is not part of a valid, printable UTF-8
 // sequence written as \xNN.
 std::string printable(std::string_view text);
+// `text` with every byte that is not part of a valid UTF-8 sequence written
+// as \xNN; control characters are kept (a JSON writer escapes those its
+// own way).
+std::string validUtf8(std::string_view text);
 inline std::string printablePath(const std::filesystem::path& path) { return printable(path.native()); }
 
 }  // namespace hemiroll::files

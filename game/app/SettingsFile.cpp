@@ -219,7 +219,7 @@ std::string settingsJson(const Settings& s) {
     keys[keyActionInfo(action).id] = s.keys.keyName(action);
   }
   json["keys"] = keys;
-  return json.dump(2) + "\n";
+  return json.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
 }
 
 std::string saveSettings(const std::filesystem::path& file, const Settings& settings) {

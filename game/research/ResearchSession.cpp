@@ -2,6 +2,7 @@
 
 #include <map>
 
+#include "engine/files/PrintableName.h"
 #include "engine/record/ContentHash.h"
 #include "engine/record/CsvRowFormat.h"
 #include "engine/record/DurableFile.h"
@@ -121,7 +122,8 @@ void ResearchSession::buildPlan(const SessionRequest& request, std::uint64_t see
   const script::ProtocolPlan plan = script::expandProtocol(protocol_, seed);
   manifest_.experiment = protocol_.experiment;
   manifest_.description = protocol_.description;
-  manifest_.protocolFile = request.protocolPath;
+  // Paths as text (JSON, CSV): a name that is not UTF-8 is shown with \xNN.
+  manifest_.protocolFile = files::printable(request.protocolPath);
   manifest_.protocolHash = record::fileContentHash(request.protocolPath);
   manifest_.protocolVersion = protocol_.version;
   manifest_.seed = seed;
@@ -141,7 +143,7 @@ void ResearchSession::buildPlan(const SessionRequest& request, std::uint64_t see
     t.repetition = p.repetition;
     t.condition = p.condition;
     t.conditionLabel = condition.label;
-    t.levelFile = condition.levelPath;
+    t.levelFile = files::printable(condition.levelPath);
     t.levelName = level.name;
     t.levelHash = level.hash;
     t.method = script::couplingMethodName(coupling);

@@ -11,6 +11,7 @@
 #include "engine/files/CheckedFile.h"
 #include "engine/files/FileReadError.h"
 #include "engine/files/LineReader.h"
+#include "engine/files/PrintableName.h"
 #include "engine/record/DurableFile.h"
 #include "engine/record/RecordError.h"
 #include "engine/record/ResultsFile.h"
@@ -92,7 +93,7 @@ SweepPartReport runSweepPart(const SweepPartRequest& r) {
 
   SweepManifest m;
   m.program = r.program;
-  m.specFile = r.specFile;
+  m.specFile = files::printable(r.specFile);  // text in JSON: \xNN for bytes that are not UTF-8
   m.description = r.def.description;
   m.specHash = specHash(r.def);
   m.specJson = specJson(r.def);

@@ -28,5 +28,10 @@ TEST(PrintableName, InvalidBytesAndControlsAreEscaped) {
   EXPECT_TRUE(isPrintableUtf8(printable(all)));
 }
 
+TEST(PrintableName, ValidUtf8KeepsControlsForWritersThatEscapeThem) {
+  EXPECT_EQ(validUtf8("a\xFF\nb\t"), "a\\xFF\nb\t");
+  EXPECT_EQ(validUtf8("\xC3\xA4"), "\xC3\xA4");
+}
+
 }  // namespace
 }  // namespace hemiroll::files
