@@ -217,6 +217,7 @@ void ServoLoop::tick(std::int64_t latenessNs) {
   in.tickLateness = static_cast<double>(latenessNs) * 1e-9;
   in.forceOff = paused_;  // a pause removes the force at once, not through the rate limit
   const Vec3 force = safety_.update(in);
+  device_.safetyState(static_cast<std::uint8_t>(safety_.fault()));
   device_.sendForce(force);
   lastRendered_ = force;
   lastClamped_ = safety_.lastClamped();

@@ -26,7 +26,11 @@ constexpr DataFileKind kProtocolFile{"protocol file", "protocol"};
 
 constexpr std::initializer_list<const char*> kMethods = {"M1", "M2", "M3", "visual"};
 constexpr int kMaxRepetitions = 10000;
-constexpr int kMaxTrials = 100000;  // a plan larger than this is a mistake (a loop gone wrong)
+// A plan larger than this is a mistake (a loop gone wrong): 10 000 trials
+// are weeks of sittings. It bounds what a session holds and writes for its
+// plan: a manifest of about 0.8 kB a trial, parsed back at every resume
+// (100 000 trials made a 77 MB manifest and 420-525 MB of memory; issue 33).
+constexpr int kMaxTrials = 10000;
 
 struct LevelFolders {
   std::string base;    // the protocol's folder

@@ -311,7 +311,7 @@ INSTANTIATE_TEST_SUITE_P(
                   "p.lua:2: seed: expected a whole number from 0 to 9223372036854775807, got number"},
         ErrorCase{"return { experiment = 'e',\n seed = 0.5, blocks = { { level = 'mine.lua' } } }", "p.lua:2: seed: expected a whole number"},
         ErrorCase{"return { experiment = 'e', blocks = {\n { level = 'mine.lua', repetitions = 10000, conditions = {\n {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {} } } } }",
-                  "p.lua:2: blocks[1].repetitions: the plan would exceed 100000 trials"},
+                  "p.lua:2: blocks[1].repetitions: the plan would exceed 10000 trials"},
         ErrorCase{"return { experiment = 'e', blocks = {\n { level = 'mine.lua',\n   guidance = { kind = 'autopilt', stiffness = 300 } } } }",
                   "p.lua:3: blocks[1].guidance.kind: unknown guidance kind 'autopilt' (did you mean 'autopilot'?)"},
         ErrorCase{"return { experiment = 'e', blocks = {\n { level = 'mine.lua',\n   guidance = { kind = 'autopilot', stifness = 300 } } } }",
