@@ -232,14 +232,7 @@ void BotScript::init(const BotLevelInfo& info, std::int64_t seed) {
   sandbox_->call(2, 0, at);
 }
 
-void BotScript::setTiming(const TrialTiming& timing) {
-  if (timing.realtime) {
-    sandbox_->setTickCpuLimit(timing.tickSeconds);
-  } else {
-    sandbox_->setTickCpuLimit(0.0);
-    sandbox_->startRun();
-  }
-}
+void BotScript::setTiming(const TrialTiming& timing) { sandbox_->setTiming(timing); }
 
 BotAction BotScript::act(const BotObservation& obs) {
   lua_State* L = sandbox_->state();

@@ -113,14 +113,7 @@ void LevelScript::refreshView(const TrialObservation& obs, const TaskJudge& judg
   lua_pop(L, 1);
 }
 
-void LevelScript::setTiming(const TrialTiming& timing) {
-  if (timing.realtime) {
-    sandbox_->setTickCpuLimit(timing.tickSeconds);
-  } else {
-    sandbox_->setTickCpuLimit(0.0);
-    sandbox_->startRun();
-  }
-}
+void LevelScript::setTiming(const TrialTiming& timing) { sandbox_->setTiming(timing); }
 
 bool LevelScript::call(int functionRef, const std::string& where, const TrialObservation& obs, TaskJudge& judge,
                        const char* reason, bool perTick) {

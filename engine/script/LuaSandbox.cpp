@@ -403,6 +403,16 @@ bool LuaSandbox::libraryCallReturned(char* why, std::size_t size) {
   return now < nextCheck_ || timeAllows(now, why, size);
 }
 
+void LuaSandbox::setTiming(const TrialTiming& timing) {
+  if (timing.realtime) {
+    setTickCpuLimit(timing.tickSeconds);
+    runBudget_ = false;
+  } else {
+    setTickCpuLimit(0.0);
+    startRun();
+  }
+}
+
 void LuaSandbox::startRun() {
   runBudget_ = true;
   runSpent_ = 0.0;

@@ -15,6 +15,7 @@
 #include <string_view>
 
 #include "engine/script/SandboxLimits.h"
+#include "engine/script/TrialTiming.h"
 
 struct lua_State;
 struct lua_Debug;
@@ -55,6 +56,9 @@ class LuaSandbox {
   // per simulated second inside Lua; advanceRun(t) says how far the
   // simulation is. startRun resets the time spent.
   void setTickCpuLimit(double seconds) { tickCpuLimit_ = seconds; }
+  // The budgets of a trial run as `timing` says: real time, the tick's CPU
+  // per per-tick call; headless, a run starting now.
+  void setTiming(const TrialTiming& timing);
   void startRun();
   void advanceRun(double simulatedSeconds) { simulatedSeconds_ = simulatedSeconds; }
   double runSecondsSpent() const { return runSpent_; }

@@ -31,6 +31,14 @@ int medalRank(const std::string& m) {
 ScoreStore::ScoreStore(std::filesystem::path file) : file_(file.empty() ? record::dataDirectory() / "scores.sqlite" : file) {
   std::error_code ec;
   std::filesystem::create_directories(file_.parent_path(), ec);
+  // SQLite opens read-write, which a FIFO does not refuse; its first read
+  // would then wait for ever. Anything but a regular file is left alone.
+  if (std::filesystem::exists(file_, ec) && !std::filesystem::is_regular_file(file_, ec)) {
+    notes_.push_back("the scores database " + file_.string() +
+                     " is not a regular file; this session's scores are kept in memory only and it is left as it is");
+    open(":memory:");
+    return;
+  }
   const Opened opened = open(file_);
   if (opened == Opened::Ok) return;
   if (opened == Opened::Busy) {

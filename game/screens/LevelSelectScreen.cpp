@@ -20,16 +20,10 @@ namespace hemiroll::game {
 
 std::vector<LevelEntry> scanLevels(const std::string& dir, const ListingBudget& budget) {
   std::vector<LevelEntry> out;
-  std::error_code ec;
-  std::vector<std::filesystem::path> files;
-  for (const auto& f : std::filesystem::directory_iterator(dir, ec))
-    if (f.is_regular_file(ec) && f.path().extension() == ".lua") files.push_back(f.path());
-  // In name order, so that the tutorials are reached first when time runs out.
-  std::sort(files.begin(), files.end());
   const ListingClock clock(budget);
   script::LevelLoadOptions options;
   options.limits = clock.limits();
-  for (const std::filesystem::path& file : files) {
+  for (const std::filesystem::path& file : luaFilesIn(dir)) {
     LevelEntry e;
     e.path = file.string();
     e.name = files::printable(file.filename().native());

@@ -1,8 +1,18 @@
 #include "game/screens/ListingBudget.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace hemiroll::game {
+
+std::vector<std::filesystem::path> luaFilesIn(const std::string& dir) {
+  std::vector<std::filesystem::path> files;
+  std::error_code ec;
+  for (const auto& f : std::filesystem::directory_iterator(dir, ec))
+    if (f.is_regular_file(ec) && f.path().extension() == ".lua") files.push_back(f.path());
+  std::sort(files.begin(), files.end());
+  return files;
+}
 
 ListingClock::ListingClock(const ListingBudget& budget) : budget_(budget), start_(std::chrono::steady_clock::now()) {
   limits_.chunkWallSeconds = budget.perFileSeconds;

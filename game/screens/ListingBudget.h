@@ -8,7 +8,9 @@
 // marked as not loaded, and load in full when chosen.
 
 #include <chrono>
+#include <filesystem>
 #include <string>
+#include <vector>
 
 #include "engine/script/SandboxLimits.h"
 
@@ -18,6 +20,10 @@ struct ListingBudget {
   double perFileSeconds = 0.5;  // wall clock for one file's chunk and each call it makes
   double totalSeconds = 4.0;    // for the whole listing
 };
+
+// The *.lua files directly in `dir` (regular files; links followed), in
+// name order, so that the tutorials are reached first when time runs out.
+std::vector<std::filesystem::path> luaFilesIn(const std::string& dir);
 
 class ListingClock {
  public:

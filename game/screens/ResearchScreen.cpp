@@ -33,15 +33,10 @@ void copyInto(std::array<char, N>& buffer, const std::string& text) {
 
 std::vector<ProtocolEntry> scanProtocols(const std::string& dir, const ListingBudget& budget) {
   std::vector<ProtocolEntry> out;
-  std::error_code ec;
-  std::vector<std::filesystem::path> files;
-  for (const auto& f : std::filesystem::directory_iterator(dir, ec))
-    if (f.is_regular_file(ec) && f.path().extension() == ".lua") files.push_back(f.path());
-  std::sort(files.begin(), files.end());
   const ListingClock clock(budget);
   script::ProtocolLoadOptions options;
   options.limits = clock.limits();
-  for (const std::filesystem::path& file : files) {
+  for (const std::filesystem::path& file : luaFilesIn(dir)) {
     ProtocolEntry e;
     e.path = file.string();
     e.experiment = files::printable(file.filename().native());

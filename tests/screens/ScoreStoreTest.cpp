@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <sqlite3.h>
+#include <sys/stat.h>
 
 #include <chrono>
 #include <cstdlib>
@@ -154,6 +155,19 @@ TEST(ScoreStoreTest, AForeignSchemaIsMovedAsideNamingWhatIsMissing) {
   EXPECT_NE(store.notes()[0].find("its trials table has no column 'success'"), std::string::npos) << store.notes()[0];
   EXPECT_TRUE(movedAside(dir.path()));
   EXPECT_TRUE(store.add(entry("ann", true, 3.0, std::nullopt, "none")));
+}
+
+// SQLite opens read-write, which a FIFO does not refuse; its first read then
+// waited for ever. Anything but a regular file is left alone.
+TEST(ScoreStoreTest, AFifoInTheDatabasesPlaceIsLeftAloneNotRead) {
+  test::TempDirectory dir;
+  const std::filesystem::path file = dir.path() / "scores.sqlite";
+  ASSERT_EQ(mkfifo(file.c_str(), 0600), 0);
+  ScoreStore store(file);
+  ASSERT_EQ(store.notes().size(), 1u);
+  EXPECT_NE(store.notes()[0].find("is not a regular file"), std::string::npos) << store.notes()[0];
+  EXPECT_TRUE(std::filesystem::is_fifo(file));
+  EXPECT_TRUE(store.add(entry("ann", true, 3.0, std::nullopt, "none")));  // in memory
 }
 
 }  // namespace

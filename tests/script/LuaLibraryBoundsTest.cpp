@@ -15,28 +15,15 @@
 
 #include "engine/script/LuaSandbox.h"
 #include "engine/script/ScriptError.h"
+#include "tests/script/support/RunChunk.h"
 
 namespace hemiroll::script {
 namespace {
 
 using ::testing::HasSubstr;
 
-std::string run(LuaSandbox& sandbox, const std::string& source) {
-  try {
-    sandbox.runChunk(source, "t.lua", 1);
-  } catch (const ScriptError& e) {
-    return std::string("ERROR: ") + e.what();
-  }
-  lua_State* L = sandbox.state();
-  std::string out = lua_isstring(L, -1) ? lua_tostring(L, -1) : lua_typename(L, lua_type(L, -1));
-  lua_pop(L, 1);
-  return out;
-}
-
-std::string runFresh(const std::string& source, const SandboxLimits& limits = {}) {
-  LuaSandbox sandbox(limits);
-  return run(sandbox, source);
-}
+using test::run;
+using test::runFresh;
 
 double secondsOf(const std::function<void()>& work) {
   const auto start = std::chrono::steady_clock::now();

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "engine/script/ScriptError.h"
+#include "tests/script/support/RunChunk.h"
 
 namespace hemiroll::script {
 namespace {
@@ -17,26 +18,8 @@ namespace {
 using ::testing::HasSubstr;
 using ::testing::Not;
 
-// Runs `source` as chunk "t.lua" and returns its single result as a string
-// (tostring-like), or the error message prefixed with "ERROR: ".
-std::string run(LuaSandbox& sandbox, const std::string& source) {
-  try {
-    sandbox.runChunk(source, "t.lua", 1);
-  } catch (const ScriptError& e) {
-    return std::string("ERROR: ") + e.what();
-  }
-  lua_State* L = sandbox.state();
-  std::string out = lua_type(L, -1) == LUA_TBOOLEAN ? (lua_toboolean(L, -1) ? "true" : "false")
-                    : lua_isstring(L, -1)           ? lua_tostring(L, -1)
-                                                    : lua_typename(L, lua_type(L, -1));
-  lua_pop(L, 1);
-  return out;
-}
-
-std::string runFresh(const std::string& source, const SandboxLimits& limits = {}) {
-  LuaSandbox sandbox(limits);
-  return run(sandbox, source);
-}
+using test::run;
+using test::runFresh;
 
 // Precompiled bytecode for `source`, made by an ordinary (unsandboxed) state.
 std::string bytecodeOf(const std::string& source) {
