@@ -143,8 +143,11 @@ std::string ScoreStore::schemaProblem() const {
     columns.emplace_back(name ? reinterpret_cast<const char*>(name) : "", type ? reinterpret_cast<const char*>(type) : "");
   }
   sqlite3_finalize(st);
-  for (const auto& [name, type] : kColumns) {
-    const auto found = std::find_if(columns.begin(), columns.end(), [&](const auto& c) { return c.first == name; });
+  for (const auto& column : kColumns) {
+    const char* name = column[0];
+    const char* type = column[1];
+    // (clang 14 captures no structured binding: plain names.)
+    const auto found = std::find_if(columns.begin(), columns.end(), [name](const auto& c) { return c.first == name; });
     if (found == columns.end()) return std::string("its trials table has no column '") + name + "'";
     if (found->second != type)
       return std::string("its trials table's column '") + name + "' is " + (found->second.empty() ? "untyped" : found->second) +
