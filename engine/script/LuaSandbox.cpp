@@ -26,6 +26,10 @@ namespace {
 // is read at least about every millisecond (adaptHookInterval).
 constexpr int kHookInterval = 1000;
 constexpr auto kHookTarget = std::chrono::milliseconds(1);
+// A call starts with the hook this close, so that a call whose very first
+// instructions are slow is checked after a hundred of them, not a thousand;
+// the first hook of ordinary code widens it to kHookInterval.
+constexpr int kFirstHookInterval = 100;
 
 // The calling thread's CPU clock [s]: a system call (about 0.25 us), so it
 // is read only when a CPU budget could have run out.
@@ -457,8 +461,8 @@ void LuaSandbox::arm(std::uint64_t quota, double wallSeconds, double cpuSeconds)
   // limit allows (a real-time tick's few milliseconds).
   stepCap_ = std::min(limits_.libraryStepBound,
                       limits_.libraryStepsPerSecond * (cpuSeconds > 0.0 ? std::min(cpuSeconds, wallSeconds) : wallSeconds));
-  hookInterval_ = kHookInterval;
-  lua_sethook(L_, &LuaSandbox::countHook, LUA_MASKCOUNT, kHookInterval);
+  hookInterval_ = kFirstHookInterval;
+  lua_sethook(L_, &LuaSandbox::countHook, LUA_MASKCOUNT, kFirstHookInterval);
   armed_ = true;
 }
 
