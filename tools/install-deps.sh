@@ -19,6 +19,7 @@ packages=(
   libepoxy-dev libassimp-dev libstb-dev
   xvfb xauth libgl1-mesa-dri libglx-mesa0 libegl-mesa0
   libimgui-dev libsqlite3-dev
+  libfftw3-dev
   libexpat1-dev
 )
 if [ "${1:-}" = "--fuzz" ]; then

@@ -1,5 +1,7 @@
 #include "engine/analysis/DominantTone.h"
 
+#include "engine/analysis/Periodogram.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -76,6 +78,24 @@ void periodogramPowers(std::span<const std::complex<double>> samples, std::span<
 
 namespace {
 
+// Relative difference under which two maxima of the FFT's periodogram are
+// told apart by the direct sum: far above the FFT's round-off (1e-15 x
+// log N), far below any difference between real peaks.
+constexpr double kNearTie = 1e-9;
+
+// The strongest interior local maximum (neighbours on the same grid, both
+// lower); freqs.size() when there is none.
+std::size_t strongestInteriorMaximum(const std::vector<double>& freqs, const std::vector<double>& powers, double df) {
+  std::size_t best = freqs.size();
+  for (std::size_t i = 1; i + 1 < freqs.size(); ++i) {
+    const bool neighbours = std::abs(freqs[i + 1] - freqs[i - 1] - 2.0 * df) < 1e-9 * df;
+    if (neighbours && powers[i] > powers[i - 1] && powers[i] >= powers[i + 1] &&
+        (best == freqs.size() || powers[i] > powers[best]))
+      best = i;
+  }
+  return best;
+}
+
 // Averages of consecutive blocks of k samples (the last, shorter block
 // dropped): a boxcar low-pass and resampling in one.
 std::vector<std::complex<double>> blockAverages(std::span<const std::complex<double>> signal, std::size_t k) {
@@ -143,16 +163,38 @@ Tone dominantTone(std::span<const std::complex<double>> signal, double dt, const
   }
   std::sort(freqs.begin(), freqs.end());
   powers.resize(freqs.size());
-  periodogramPowers(tapered, freqs, dt, powers);
-  // The strongest interior local maximum (neighbours on the same grid, both lower).
-  std::size_t best = freqs.size();
-  for (std::size_t i = 1; i + 1 < freqs.size(); ++i) {
-    const bool neighbours = std::abs(freqs[i + 1] - freqs[i - 1] - 2.0 * df) < 1e-9 * df;
-    if (neighbours && powers[i] > powers[i - 1] && powers[i] >= powers[i + 1] &&
-        (best == freqs.size() || powers[i] > powers[best]))
-      best = i;
+  if (search.directSum) {
+    periodogramPowers(tapered, freqs, dt, powers);
+  } else {
+    // By FFT (Periodogram.h): the grid is fMin + k df on each side, and
+    // df = 1 / (oversampling T) makes it the bins of a transform of
+    // oversampling x n points. Sorted, the negative side comes first,
+    // highest |f| first.
+    const std::size_t fftLength = static_cast<std::size_t>(std::max(search.oversampling, 1)) * n;
+    std::vector<double> side(steps + 1);
+    fftGridPowers(tapered, dt, fftLength, fMin, +1, steps + 1, side);
+    const std::size_t negatives = freqs.size() - (steps + 1);
+    for (std::size_t k = 0; k <= steps; ++k) powers[negatives + k] = side[k];
+    if (negatives > 0) {
+      fftGridPowers(tapered, dt, fftLength, fMin, -1, steps + 1, side);
+      const std::size_t first = fMin > 0.0 ? 0 : 1;  // f = 0 is on the positive side only
+      for (std::size_t k = first; k <= steps; ++k) powers[negatives - 1 - (k - first)] = side[k];
+    }
   }
+  std::size_t best = strongestInteriorMaximum(freqs, powers, df);
   if (best == freqs.size()) return tone;
+  if (!search.directSum) {
+    // The FFT's powers differ from the direct sum's in their last bits:
+    // where maxima are that close, the direct sum decides, as it always did.
+    const double top = powers[best];
+    std::vector<std::size_t> close;
+    for (std::size_t i = 1; i + 1 < freqs.size(); ++i)
+      if (powers[i] >= top * (1.0 - kNearTie)) close.push_back(i);
+    for (std::size_t i : close)
+      for (std::size_t j : {i - 1, i, i + 1}) powers[j] = power(tapered, freqs[j], dt);
+    best = strongestInteriorMaximum(freqs, powers, df);
+    if (best == freqs.size()) return tone;
+  }
   double f = freqs[best], peak = powers[best];
   const double a = powers[best - 1], b = powers[best], c = powers[best + 1];
   const double den = a - 2.0 * b + c;

@@ -2,6 +2,12 @@
 // The strongest periodic component of a sampled signal: the peak of its
 // periodogram over a band of frequencies, and how clearly it stands out.
 //
+// The periodogram's grid is computed by FFT (Periodogram.h: n log n, where
+// the direct sum over every grid frequency grew with the square of the
+// recording's length); the three powers about the peak that the refinement
+// uses, the refined peak's and any maximum within 1e-9 of the strongest are
+// the direct sum's, so a Tone has the bits it had before the FFT.
+//
 // The signal is complex (x + i y of a planar path, or of its velocity), so a
 // rotation has one frequency with a sign: positive for counter-clockwise.
 // Real signals pass y = 0 and search positive frequencies only.
@@ -31,6 +37,9 @@ struct ToneSearch {
   double maxFrequency = 5.0;   // [Hz] highest |f| searched (clamped to Nyquist)
   bool bothSigns = true;       // false: positive frequencies only (real signals)
   int oversampling = 4;
+  // The periodogram by the direct sum over every grid frequency (the way
+  // before the FFT, for tests and comparisons) instead of by FFT.
+  bool directSum = false;
 };
 
 struct Tone {
@@ -41,11 +50,13 @@ struct Tone {
   std::size_t samplesUsed = 0; // the signal's length after block averaging (kMaxToneWork)
 };
 
-// The periodogram costs (grid frequencies) x (samples), and both grow with
-// the recording's length: a long, finely sampled signal (100k rows) is first
-// averaged over blocks of k samples, the smallest k that brings the cost
-// under this many phasor steps and keeps the band below a quarter of the new
-// sampling rate. Shorter signals are used as they are.
+// A long, finely sampled signal (100k rows) is first averaged over blocks
+// of k samples, the smallest k that brings (grid frequencies) x (samples)
+// under this many steps and keeps the band below a quarter of the new
+// sampling rate; shorter signals are used as they are. (The rule is from the
+// direct sum's cost; kept so that features are what they were. Past the
+// band's limit the signal's length, and the FFT's, grows with the
+// recording's.)
 inline constexpr double kMaxToneWork = 5e7;
 
 Tone dominantTone(std::span<const std::complex<double>> signal, double dt, const ToneSearch& search);

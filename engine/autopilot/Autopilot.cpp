@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cstdio>
 #include <cmath>
 
 #include "engine/autopilot/LandingSearch.h"
@@ -115,7 +116,22 @@ ProxyCommand Autopilot::act(const AutopilotInput& input) {
   ProxyCommand out;
   if (!started_) {
     lastProxy_ = input.massPosition;
+    firstActTime_ = input.time;
     started_ = true;
+  }
+  if (failure_.empty() && (def_.planningRolloutSeconds > 0.0 || def_.planningRolloutSecondsPerSimulatedSecond > 0.0)) {
+    const double simulated = input.time - firstActTime_;
+    const double allowed = def_.budget * (def_.planningRolloutSeconds +
+                                          def_.planningRolloutSecondsPerSimulatedSecond * std::max(0.0, simulated));
+    if (plannedSeconds() > allowed) {
+      char why[300];
+      std::snprintf(why, sizeof why,
+                    "planning has rolled out %.0f s by %.1f s of simulated time, more than its budget (%g x (%g s + "
+                    "%g s per simulated second)): the task looks beyond it",
+                    plannedSeconds(), simulated, def_.budget, def_.planningRolloutSeconds,
+                    def_.planningRolloutSecondsPerSimulatedSecond);
+      failure_ = why;
+    }
   }
   if (!failure_.empty()) {  // hold still; the game ends the trial
     out.position = lastProxy_;
@@ -268,6 +284,7 @@ void Autopilot::predict(AutopilotInput& input, double lead) {
     const Vec3 proxy = deliverable(work_.proxyFor(model_.state()), planLastProxy_);
     const Vec3 velocity = (proxy - planLastProxy_) / def_.dt;
     planLastProxy_ = proxy;
+    plannedTicks_.fetch_add(1, std::memory_order_relaxed);
     if (model_.tick(proxy, velocity) != physics::DomainEvent::None) break;
   }
   input.time = model_.time();
@@ -379,6 +396,7 @@ std::vector<Autopilot::Outcome> Autopilot::rollouts(std::vector<HelixPolicy> pol
   out.reserve(n);
   for (Lane& lane : lanes) {
     stats_.rolloutSeconds += static_cast<double>(lane.k) * def_.dt;
+    plannedTicks_.fetch_add(lane.k, std::memory_order_relaxed);
     lane.o.meanUprightError = lane.meanCount > 0 ? lane.meanError / static_cast<double>(lane.meanCount) : 1e30;
     out.push_back(lane.o);
   }

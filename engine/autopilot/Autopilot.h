@@ -34,6 +34,7 @@
 // rollout through PlantModel alone, so the plans do not depend on it.
 // Headless plans run inside act(): same inputs, same outputs, bit for bit.
 
+#include <atomic>
 #include <cstdint>
 #include <chrono>
 #include <memory>
@@ -87,6 +88,20 @@ struct AutopilotDef {
   // the coupling (HelixParams::stiffen, stiffeningFor). Off where another
   // hand holds the proxy and the plan is only a guide or a hint.
   bool handStiffens = true;
+  // Planning's work per trial (issue 33): at most budget x
+  // (planningRolloutSeconds + planningRolloutSecondsPerSimulatedSecond x the
+  // simulated time since the first act), counted in seconds the planner's
+  // model simulated (rollouts and predictions), not on a clock, so that a
+  // headless trial ends the same on any machine however loaded. Past it the
+  // autopilot gives up with the reason: a task it can neither win nor refuse
+  // up front (contradictory stages, a rest the bands rule out) planned at
+  // about 2 s of CPU per simulated second, 8 minutes for a 240 s level. The
+  // model simulates about 3400 s per second of CPU (measured, AUTOPILOT.md),
+  // so the defaults are about 6 s + 0.9 s of CPU per simulated second; won
+  // tasks use up to 660 s per simulated second (full orientation). 0 and 0:
+  // no budget.
+  double planningRolloutSeconds = 20000.0;
+  double planningRolloutSecondsPerSimulatedSecond = 3000.0;
 };
 
 struct AutopilotInput {
@@ -128,6 +143,10 @@ class Autopilot {
 
   ProxyCommand act(const AutopilotInput& input);
 
+  // Time the planner's model has simulated so far [s] (any thread may read it).
+  double plannedSeconds() const {
+    return def_.dt * static_cast<double>(plannedTicks_.load(std::memory_order_relaxed));
+  }
   // Non-empty once the autopilot has given up ("the target ... is beyond ...").
   const std::string& failure() const { return failure_; }
   // Read it only while no plan is running (headless, or after the trial).
@@ -236,6 +255,9 @@ class Autopilot {
   physics::Vec3 lastProxy_ = physics::Vec3::Zero();
   std::string failure_;
   PlannerStats stats_;
+  // Model ticks the planner simulated, added by whichever thread plans, read by act's.
+  std::atomic<std::int64_t> plannedTicks_{0};
+  double firstActTime_ = 0.0;
   std::uint64_t generation_ = 0;
   bool resetPlanner_ = false, holdSteer_ = false;
   bool refineNext_ = false;  // act's side: the next real-time plan gets refineLead

@@ -1,5 +1,7 @@
 #include "engine/haptics/Guidance.h"
 
+#include <cstdio>
+
 #include <algorithm>
 #include <cmath>
 
@@ -25,10 +27,25 @@ bool parseGuidanceKind(const std::string& name, GuidanceKind& kind) {
 
 std::string validateGuidance(const GuidanceDef& def) {
   const auto nonNegative = [](double v) { return std::isfinite(v) && v >= 0.0; };
-  if (!nonNegative(def.stiffness)) return "stiffness: must be a finite number >= 0 [N/m]";
-  if (!nonNegative(def.damping)) return "damping: must be a finite number >= 0 [N s/m]";
+  if (!nonNegative(def.stiffness) || def.stiffness > physics::kMaxStiffness)
+    return "stiffness: must be a number from 0 to 1e6 [N/m]";
+  if (!nonNegative(def.damping) || def.damping > physics::kMaxDamping)
+    return "damping: must be a number from 0 to 1e4 [N s/m]";
   if (!(def.scale >= 0.0 && def.scale <= 1.0)) return "scale: must be in [0, 1]";
-  if (!(def.maxError > 0.0) || !std::isfinite(def.maxError)) return "max_error: must be a positive number [m]";
+  if (!(def.maxError > 0.0) || !(def.maxError <= physics::kMaxGuidanceError))
+    return "max_error: must be a positive number of at most 1 [m]";
+  return {};
+}
+
+std::string guidanceProblem(const GuidanceDef& def, const DeviceSpec& device) {
+  if (std::string problem = validateGuidance(def); !problem.empty()) return problem;
+  if (def.active() && device.hasForceOutput && def.stiffness > device.maxStiffness) {
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "stiffness: %g N/m is more than the %g N/m the %s device renders stably", def.stiffness,
+                  device.maxStiffness, device.name);
+    return text;
+  }
   return {};
 }
 

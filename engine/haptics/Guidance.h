@@ -22,7 +22,9 @@
 #include <cstdint>
 #include <string>
 
+#include "engine/haptics/DeviceSpec.h"
 #include "engine/haptics/HapticDevice.h"
+#include "engine/physics/ForceCoupling.h"
 
 namespace hemiroll::haptics {
 
@@ -41,8 +43,13 @@ struct GuidanceDef {
 // "none", "autopilot", "error_augmentation" (the protocol's names).
 const char* guidanceKindName(GuidanceKind kind);
 bool parseGuidanceKind(const std::string& name, GuidanceKind& kind);
-// Empty when `def` is usable, else what is wrong (naming the field).
+// Empty when `def` is usable, else what is wrong (naming the field): gains
+// within physics::kMaxStiffness and kMaxDamping (the bounds of every gain,
+// wherever given).
 std::string validateGuidance(const GuidanceDef& def);
+// validateGuidance, and for a device with force output a spring it renders
+// stably: at most its maxStiffness, as a coupling must be.
+std::string guidanceProblem(const GuidanceDef& def, const DeviceSpec& device);
 
 // One sample of the plan: where the planner wants the proxy at `time`.
 // Plain arrays: it crosses threads as bytes (TripleBuffer).

@@ -42,6 +42,11 @@ class HapticDevice {
   virtual DeviceReading read(double t) = 0;
   // Device coordinates [N]; already clamped by the safety layer.
   virtual void sendForce(const Vec3& force) = 0;
+  // Before each sendForce: the safety layer's fault this tick (0: none;
+  // haptics::SafetyFault as a number), so that a device can tell its user
+  // why the force is zero (the UDP bridge's status). Servo thread; must not
+  // block or allocate.
+  virtual void safetyState(std::uint8_t /*fault*/) {}
   // nullptr while healthy, else a static sentence (no allocation on report).
   virtual const char* error() const = 0;
   // Outside the servo loop: true once the device delivers samples, so that

@@ -42,7 +42,7 @@ ServoLoop::ServoLoop(const ServoLoopDef& def, HapticDevice& device)
   if (!problem.empty()) throw std::invalid_argument("ServoLoop: " + problem);
   const std::string params = physics::validateParams(def.params, false);
   if (!params.empty()) throw std::invalid_argument("ServoLoop: " + params);
-  const std::string guidance = validateGuidance(def.guidance);
+  const std::string guidance = guidanceProblem(def.guidance, device.spec());
   if (!guidance.empty()) throw std::invalid_argument("ServoLoop: guidance." + guidance);
 }
 
@@ -217,6 +217,7 @@ void ServoLoop::tick(std::int64_t latenessNs) {
   in.tickLateness = static_cast<double>(latenessNs) * 1e-9;
   in.forceOff = paused_;  // a pause removes the force at once, not through the rate limit
   const Vec3 force = safety_.update(in);
+  device_.safetyState(static_cast<std::uint8_t>(safety_.fault()));
   device_.sendForce(force);
   lastRendered_ = force;
   lastClamped_ = safety_.lastClamped();

@@ -163,10 +163,14 @@ void UdpBridgeDevice::sendForce(const Vec3& force) {
   m.sequence = ++forceSequence_;
   m.answers = current_.state.sequence;
   m.echoTimestampNs = current_.state.timestampNs;
-  // The client hears why its force is zero: silence, or its device's own fault.
+  // The client hears why its force is zero: silence, its device's own
+  // fault, or hemiroll's safety layer (naming the watchdog): never the
+  // status of a commanded zero force.
   m.status = h == Health::Stale         ? udp::BridgeStatus::Stale
              : h == Health::DeviceFault ? udp::BridgeStatus::DeviceFault
+             : safetyFault_ != 0        ? udp::BridgeStatus::SafetyStop
                                         : udp::BridgeStatus::Ok;
+  if (m.status == udp::BridgeStatus::SafetyStop) m.safetyFault = safetyFault_;
   // The safety layer already clamped; the bridge clamps again so that no
   // path through it can exceed the spec, and sends nothing but zero while
   // its watchdog holds.

@@ -83,6 +83,8 @@ class UdpBridgeDevice final : public HapticDevice {
   void close() override;
   DeviceReading read(double t) override;
   void sendForce(const Vec3& force) override;
+  // A safety stop is sent to the client as status SafetyStop with the fault.
+  void safetyState(std::uint8_t fault) override { safetyFault_ = fault; }
   const char* error() const override;
 
   std::uint16_t port() const { return socket_.localPort(); }
@@ -102,6 +104,7 @@ class UdpBridgeDevice final : public HapticDevice {
     UdpEndpoint client;
     std::uint64_t serial = 0;  // accepted count; a change means a fresh sample
   };
+  std::uint8_t safetyFault_ = 0;  // the servo thread's, set before each sendForce
   enum class Health { NotOpen, NoClient, Ok, Stale, DeviceFault };
 
   void receiveLoop();

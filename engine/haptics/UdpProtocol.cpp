@@ -107,7 +107,8 @@ std::size_t encodeForce(const ForceMessage& m, std::uint8_t* out) {
   put64(p, m.echoTimestampNs);
   put3(p, m.force);
   put8(p, static_cast<std::uint8_t>(m.status));
-  for (int i = 0; i < 3; ++i) put8(p, 0);  // reserved
+  put8(p, m.safetyFault);
+  for (int i = 0; i < 2; ++i) put8(p, 0);  // reserved
   return static_cast<std::size_t>(p - out);
 }
 
@@ -135,6 +136,7 @@ DecodeError decodeForce(const std::uint8_t* data, std::size_t length, ForceMessa
   m.echoTimestampNs = get64(p);
   m.force = get3(p);
   m.status = static_cast<BridgeStatus>(get8(p));
+  m.safetyFault = get8(p);
   if (!finite3(m.force)) return DecodeError::NonFinite;
   out = m;
   return DecodeError::None;

@@ -35,6 +35,7 @@ enum class BridgeStatus : std::uint8_t {
   Stale = 1,    // the bridge's watchdog tripped (no state for 10 ms): the force is zero
   Closing = 2,  // the bridge is shutting down: the force is zero and stays so
   DeviceFault = 3,  // the client's device reported a fault (its status byte): the force is zero
+  SafetyStop = 4,   // hemiroll's safety layer holds the force at zero; ForceMessage::safetyFault says why
 };
 
 struct StateMessage {
@@ -52,6 +53,9 @@ struct ForceMessage {
   std::uint64_t echoTimestampNs = 0; // that state's timestampNs, for round-trip times
   std::array<double, 3> force{};     // device frame [N]
   BridgeStatus status = BridgeStatus::Ok;
+  // With SafetyStop: which watchdog holds the force (haptics::SafetyFault as
+  // a number, 1 device error .. 9 position jump; UDP_BRIDGE.md), else 0.
+  std::uint8_t safetyFault = 0;
 };
 
 enum class DecodeError {

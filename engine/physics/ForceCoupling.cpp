@@ -7,10 +7,13 @@ namespace hemiroll::physics {
 std::optional<FieldError> couplingError(const CouplingDef& def) {
   if (!std::isfinite(def.stiffness) || def.stiffness < 0.0)
     return FieldError{"kr", "(stiffness) must be a finite, non-negative N/m"};
+  if (def.stiffness > kMaxStiffness) return FieldError{"kr", "(stiffness) must be at most 1e6 N/m"};
   if (!std::isfinite(def.damping) || def.damping < 0.0)
     return FieldError{"kv", "(damping) must be a finite, non-negative N s/m"};
+  if (def.damping > kMaxDamping) return FieldError{"kv", "(damping) must be at most 1e4 N s/m"};
   if (!std::isfinite(def.alpha) || def.alpha <= 0.0)
     return FieldError{"alpha", "(normal/in-face gain ratio) must be positive"};
+  if (def.alpha > kMaxAlpha) return FieldError{"alpha", "(normal/in-face gain ratio) must be at most 100"};
   return std::nullopt;
 }
 

@@ -29,6 +29,18 @@ struct CouplingDef {
   bool visualOnly = false;   // drive the model, render no force
 };
 
+// The largest gains any input may give, wherever it is given (a level's
+// force table, a scenario's drive, a protocol's kr/kv/alpha and guidance,
+// the command line): far above what a device renders (1000 N/m) or a model
+// needs, and small enough that gain times error stays far from overflow (a
+// guidance stiffness of 1e300 made forces of 1e297 N).
+inline constexpr double kMaxStiffness = 1e6;  // [N/m]
+inline constexpr double kMaxDamping = 1e4;    // [N s/m]
+inline constexpr double kMaxAlpha = 100.0;    // [-]
+// A guidance spring's reach (its max_error) may be at most this [m]: a
+// reach beyond the scene is no reach at all.
+inline constexpr double kMaxGuidanceError = 1.0;
+
 // Nothing when valid, else the first offending gain ("kr", as a level's
 // force table or a scenario's drive writes it) and what is wrong with it.
 std::optional<FieldError> couplingError(const CouplingDef& def);

@@ -1,9 +1,9 @@
 #include "engine/record/ContentHash.h"
 
 #include <cstdio>
-#include <fstream>
-#include <iterator>
 
+#include "engine/files/CheckedFile.h"
+#include "engine/files/FileReadError.h"
 #include "engine/record/ReplayFormat.h"
 
 namespace hemiroll::record {
@@ -16,10 +16,11 @@ std::string contentHash(std::string_view bytes) {
 }
 
 std::string fileContentHash(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return "";
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  return contentHash(bytes);
+  try {
+    return contentHash(files::readCheckedFile(path, files::kLuaSource));
+  } catch (const files::FileReadError&) {
+    return "";
+  }
 }
 
 }  // namespace hemiroll::record

@@ -9,7 +9,8 @@
 namespace hemiroll::record {
 
 std::string contentHash(std::string_view bytes);
-// contentHash of the file's bytes; "" when it cannot be read.
+// contentHash of a Lua file's bytes (levels, protocols: read as
+// files::kLuaSource); "" when it cannot be read.
 std::string fileContentHash(const std::string& path);
 
 }  // namespace hemiroll::record

@@ -5,9 +5,9 @@
 
 #include <cerrno>
 #include <cstring>
-#include <fstream>
-#include <sstream>
 
+#include "engine/files/CheckedFile.h"
+#include "engine/files/FileReadError.h"
 #include "engine/record/RecordError.h"
 
 namespace hemiroll::record {
@@ -98,6 +98,11 @@ void writeFileAtomically(const std::filesystem::path& path, std::string_view con
   syncDirectory(path.parent_path());
 }
 
+void moveFileDurably(const std::filesystem::path& from, const std::filesystem::path& to) {
+  if (std::rename(from.c_str(), to.c_str()) != 0) throw RecordError(systemError(to, "cannot replace"));
+  syncDirectory(to.parent_path());
+}
+
 void appendDurably(const std::filesystem::path& path, std::string_view content) {
   const int fd = ::open(path.c_str(), O_WRONLY | O_APPEND | O_CREAT | O_CLOEXEC, 0644);
   if (fd < 0) throw RecordError(systemError(path, "cannot open for appending"));
@@ -111,13 +116,12 @@ void appendDurably(const std::filesystem::path& path, std::string_view content) 
   if (!error.empty()) throw RecordError(error);
 }
 
-std::string readWholeFile(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw RecordError(path.string() + ": cannot open for reading");
-  std::ostringstream s;
-  s << in.rdbuf();
-  if (in.bad()) throw RecordError(path.string() + ": read failed");
-  return s.str();
+std::string readWholeFile(const std::filesystem::path& path, const files::FileKind& kind) {
+  try {
+    return files::readCheckedFile(path, kind);
+  } catch (const files::FileReadError& e) {
+    throw RecordError(e.what());
+  }
 }
 
 }  // namespace hemiroll::record

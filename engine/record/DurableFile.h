@@ -10,6 +10,8 @@
 #include <string>
 #include <string_view>
 
+#include "engine/files/FileKinds.h"
+
 namespace hemiroll::record {
 
 class DurableFile {
@@ -42,9 +44,14 @@ class DurableFile {
 
 // Replaces path's content atomically. Throws RecordError naming the file.
 void writeFileAtomically(const std::filesystem::path& path, std::string_view content);
+// Renames `from` to `to` (replacing it) and syncs the directory: a file
+// written and flushed under a temporary name becomes durable under its own.
+// Throws RecordError.
+void moveFileDurably(const std::filesystem::path& from, const std::filesystem::path& to);
 // Appends in one write() and fsyncs (O_APPEND). Throws RecordError.
 void appendDurably(const std::filesystem::path& path, std::string_view content);
-// The whole file as bytes. Throws RecordError naming it.
-std::string readWholeFile(const std::filesystem::path& path);
+// The whole file as bytes, read through the checked reader (engine/files:
+// a regular file within `kind`'s cap). Throws RecordError naming it.
+std::string readWholeFile(const std::filesystem::path& path, const files::FileKind& kind);
 
 }  // namespace hemiroll::record

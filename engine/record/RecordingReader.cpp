@@ -2,67 +2,72 @@
 
 #include <string_view>
 
+#include "engine/files/CheckedFile.h"
+#include "engine/files/FileReadError.h"
+#include "engine/files/LineReader.h"
+#include "engine/files/PrintableName.h"
 #include "engine/record/CsvRowFormat.h"
 #include "engine/record/DurableFile.h"
 #include "engine/record/RecordError.h"
 
 namespace hemiroll::record {
 
-namespace {
-
-std::string_view withoutCarriageReturn(std::string_view line) {
-  return !line.empty() && line.back() == '\r' ? line.substr(0, line.size() - 1) : line;
+bool RecordingReader::forEachRow(const std::filesystem::path& csvPath, const ReadOptions& options,
+                                 const std::function<void(const haptics::RecordRow&)>& row) {
+  const std::string where = files::printablePath(csvPath) + ": line ";
+  try {
+    files::CheckedFile file(csvPath, files::kSampleTable);
+    files::LineReader lines(file, kMaxLineBytes);
+    std::string_view line;
+    bool complete = false;
+    if (!lines.next(line, complete) || !complete)
+      throw RecordError(where + "1: missing or incomplete header (an empty or cut-off file)");
+    const auto is = [&line](const std::string& header) {
+      return line == std::string_view(header).substr(0, header.size() - 1);
+    };
+    if (!is(CsvRowFormat::header()) && !is(CsvRowFormat::headerBeforeGuidance()))
+      throw RecordError(where + "1: the header is not this build's trial CSV header");
+    haptics::RecordRow parsed;
+    while (lines.next(line, complete)) {
+      if (!complete) {
+        // No newline: the writer was interrupted in the middle of this row.
+        if (!options.allowTruncatedTail)
+          throw RecordError(where + std::to_string(lines.lineNumber()) +
+                            ": incomplete last line (the file ends mid-row: an interrupted recording?)");
+        return true;
+      }
+      parsed = haptics::RecordRow{};
+      const std::string problem = CsvRowFormat::parse(line, parsed);
+      if (!problem.empty()) throw RecordError(where + std::to_string(lines.lineNumber()) + ": " + problem);
+      row(parsed);
+    }
+    return false;
+  } catch (const files::FileReadError& e) {
+    throw RecordError(e.what());
+  }
 }
-
-}  // namespace
 
 std::vector<haptics::RecordRow> RecordingReader::loadCsv(const std::filesystem::path& csvPath,
                                                          const ReadOptions& options, bool* truncatedTail) {
-  const std::string text = readWholeFile(csvPath);
-  const std::string where = csvPath.string() + ": line ";
-  const std::size_t headerEnd = text.find('\n');
-  if (headerEnd == std::string::npos)
-    throw RecordError(where + "1: missing or incomplete header (an empty or cut-off file)");
-  const std::string_view firstLine = withoutCarriageReturn(std::string_view(text).substr(0, headerEnd));
-  const auto is = [&firstLine](const std::string& header) {
-    return firstLine == std::string_view(header).substr(0, header.size() - 1);
-  };
-  if (!is(CsvRowFormat::header()) && !is(CsvRowFormat::headerBeforeGuidance()))
-    throw RecordError(where + "1: the header is not this build's trial CSV header");
-
   std::vector<haptics::RecordRow> rows;
-  if (truncatedTail) *truncatedTail = false;
-  std::size_t lineNumber = 1;
-  for (std::size_t start = headerEnd + 1; start < text.size();) {
-    ++lineNumber;
-    const std::size_t end = text.find('\n', start);
-    if (end == std::string::npos) {
-      // No newline: the writer was interrupted in the middle of this row.
-      if (!options.allowTruncatedTail)
-        throw RecordError(where + std::to_string(lineNumber) +
-                          ": incomplete last line (the file ends mid-row: an interrupted recording?)");
-      if (truncatedTail) *truncatedTail = true;
-      break;
-    }
-    haptics::RecordRow row;
-    const std::string problem =
-        CsvRowFormat::parse(withoutCarriageReturn(std::string_view(text).substr(start, end - start)), row);
-    if (!problem.empty()) throw RecordError(where + std::to_string(lineNumber) + ": " + problem);
-    rows.push_back(row);
-    start = end + 1;
-  }
+  const bool cut = forEachRow(csvPath, options, [&rows](const haptics::RecordRow& r) { rows.push_back(r); });
+  if (truncatedTail) *truncatedTail = cut;
   return rows;
+}
+
+void RecordingReader::loadSidecar(const std::filesystem::path& csvPath, TrialMeta& meta, SidecarStatus& status) {
+  std::filesystem::path sidecarPath = csvPath;
+  sidecarPath.replace_extension(".json");
+  Sidecar::fromJson(readWholeFile(sidecarPath, files::kSidecar), files::printablePath(sidecarPath), meta, status);
 }
 
 Recording RecordingReader::load(const std::filesystem::path& csvPath, const ReadOptions& options) {
   Recording r;
-  std::filesystem::path sidecarPath = csvPath;
-  sidecarPath.replace_extension(".json");
-  Sidecar::fromJson(readWholeFile(sidecarPath), sidecarPath.string(), r.meta, r.status);
+  loadSidecar(csvPath, r.meta, r.status);
   r.rows = loadCsv(csvPath, options, &r.truncatedTail);
   if (r.status.complete && r.status.rows != r.rows.size())
-    throw RecordError(csvPath.string() + ": holds " + std::to_string(r.rows.size()) + " rows, its sidecar says " +
-                      std::to_string(r.status.rows));
+    throw RecordError(files::printablePath(csvPath) + ": holds " + std::to_string(r.rows.size()) +
+                      " rows, its sidecar says " + std::to_string(r.status.rows));
   return r;
 }
 

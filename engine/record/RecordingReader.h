@@ -9,6 +9,7 @@
 // without it, such a file is an error.
 
 #include <filesystem>
+#include <functional>
 #include <vector>
 
 #include "engine/haptics/RecordRow.h"
@@ -34,6 +35,17 @@ class RecordingReader {
   static Recording load(const std::filesystem::path& csvPath, const ReadOptions& options = {});
   static std::vector<haptics::RecordRow> loadCsv(const std::filesystem::path& csvPath, const ReadOptions& options,
                                                  bool* truncatedTail = nullptr);
+  // The CSV's rows one at a time, read as a stream (a recording of a day
+  // need not fit in memory as rows): `row` gets each parsed row. The file is
+  // read through the checked reader (files::kSampleTable); a line longer
+  // than kMaxLineBytes is refused. Returns whether a cut-off last line was
+  // dropped (only with allowTruncatedTail; an error otherwise).
+  static bool forEachRow(const std::filesystem::path& csvPath, const ReadOptions& options,
+                         const std::function<void(const haptics::RecordRow&)>& row);
+  // The sidecar beside `csvPath` (files::kSidecar).
+  static void loadSidecar(const std::filesystem::path& csvPath, TrialMeta& meta, SidecarStatus& status);
+  // A row is about 1.2 kB (45 shortest round-trip numbers); ten times that.
+  static constexpr std::size_t kMaxLineBytes = 16 * 1024;
 };
 
 }  // namespace hemiroll::record

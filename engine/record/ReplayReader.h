@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <vector>
 
+#include "engine/files/CheckedFile.h"
 #include "engine/haptics/RecordRow.h"
 #include "engine/record/ReplayFormat.h"
 
@@ -20,7 +21,9 @@ struct ReplayLog {
 
 class ReplayReader {
  public:
+  // Read through the checked reader (files::kReplayLog).
   static ReplayLog load(const std::filesystem::path& path);
+  static ReplayLog load(files::CheckedFile& file);
 };
 
 }  // namespace hemiroll::record

@@ -7,10 +7,12 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "engine/files/FileKinds.h"
 #include "engine/record/TrialMeta.h"
 
 namespace hemiroll::record {
@@ -43,7 +45,10 @@ std::optional<std::vector<std::string>> parseCsvLine(const std::string& line);
 
 class ResultsFile {
  public:
-  explicit ResultsFile(std::filesystem::path path) : path_(std::move(path)) {}
+  // `kind`: the cap on the file's size (results.csv, or a sweep's table,
+  // which has the same format); it is read as a stream of records.
+  explicit ResultsFile(std::filesystem::path path, const files::FileKind& kind = files::kResults)
+      : path_(std::move(path)), kind_(kind) {}
 
   // Throws RecordError naming the file on an I/O error or a column mismatch.
   void append(const TrialResult& result) const;
@@ -58,11 +63,19 @@ class ResultsFile {
   // fields than the header, or a last row without its line end (a write cut
   // short: appends are single writes, so only a power cut leaves one).
   ResultsTable read() const;
+  // The same, one row at a time: `row` is called with each row's fields
+  // (the header's are in `columns` by then) and may throw to stop. Memory
+  // stays at one record, however long the file. A record longer than
+  // kMaxRecordBytes is refused with its line.
+  void forEachRow(std::vector<std::string>& columns,
+                  const std::function<void(const std::vector<std::string>& fields, int line)>& row) const;
+  static constexpr std::size_t kMaxRecordBytes = std::size_t{1} << 20;
 
   static std::vector<std::string> columns(const TrialResult& result);
 
  private:
   std::filesystem::path path_;
+  files::FileKind kind_;
 };
 
 }  // namespace hemiroll::record

@@ -1,5 +1,7 @@
 #include "engine/render/MeshLoader.h"
 
+#include "engine/files/CheckedFile.h"
+
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
@@ -35,6 +37,12 @@ void normalise(MeshData& m) {
 
 LoadedMesh loadMeshFile(const std::string& path, Rgba color) {
   LoadedMesh out;
+  // Checked as every file read is (engine/files) before assimp opens it: a
+  // FIFO would hang its open, a device or a huge file its read.
+  if (const files::CheckedRead check = files::checkedSize(path.c_str(), files::kAsset); !check.ok) {
+    out.error = check.error;
+    return out;
+  }
   Assimp::Importer importer;
   const aiScene* scene = importer.ReadFile(
       path, aiProcess_Triangulate | aiProcess_GenSmoothNormals | aiProcess_PreTransformVertices |

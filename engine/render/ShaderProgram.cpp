@@ -3,10 +3,11 @@
 #include <epoxy/gl.h>
 
 #include <cctype>
-#include <fstream>
 #include <sstream>
 #include <utility>
 
+#include "engine/files/CheckedFile.h"
+#include "engine/files/FileReadError.h"
 #include "engine/render/RenderError.h"
 
 namespace hemiroll::render {
@@ -50,13 +51,14 @@ unsigned compileStage(unsigned type, const ShaderSource& source) {
   return shader;
 }
 
+// Through the checked reader, as every file: a shader is an asset.
 bool readFile(const std::string& path, std::string& text) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return false;
-  std::ostringstream s;
-  s << in.rdbuf();
-  text = s.str();
-  return true;
+  try {
+    text = files::readCheckedFile(path, files::kAsset);
+    return true;
+  } catch (const files::FileReadError&) {
+    return false;
+  }
 }
 
 }  // namespace

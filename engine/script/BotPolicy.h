@@ -8,6 +8,7 @@
 #include <string>
 
 #include "engine/script/BotObservation.h"
+#include "engine/script/TrialTiming.h"
 
 namespace hemiroll::script {
 
@@ -21,6 +22,10 @@ class BotPolicy {
  public:
   virtual ~BotPolicy() = default;
   virtual const std::string& name() const = 0;
+  // Before init: how the trial runs, so that the policy can keep its own
+  // computation within the trial's budgets (a Lua bot's time in Lua, the
+  // autopilot's planning). A policy that ignores it has no budget.
+  virtual void setTiming(const TrialTiming& /*timing*/) {}
   // Once per trial, before the first act. Throws ScriptError on failure.
   virtual void init(const BotLevelInfo& info, std::int64_t seed) = 0;
   // Once per tick. Throws ScriptError on failure.

@@ -233,6 +233,8 @@ void BotScript::init(const BotLevelInfo& info, std::int64_t seed) {
   sandbox_->call(2, 0, at);
 }
 
+void BotScript::setTiming(const TrialTiming& timing) { sandbox_->setTiming(timing); }
+
 BotAction BotScript::act(const BotObservation& obs) {
   lua_State* L = sandbox_->state();
   const int base = lua_gettop(L);
@@ -243,7 +245,8 @@ BotAction BotScript::act(const BotObservation& obs) {
   views_->current = &obs;
   int count = 0;
   try {
-    count = sandbox_->call(2, LUA_MULTRET, actAt_);
+    sandbox_->advanceRun(obs.time);
+    count = sandbox_->callPerTick(2, LUA_MULTRET, actAt_);
   } catch (const ScriptError& e) {
     views_->current = nullptr;
     throw ScriptError(std::string(e.what()) + " (in act, t = " + formatCallTime(obs.time) + ")");

@@ -55,6 +55,10 @@ class BotScript final : public BotPolicy {
   const std::string& path() const { return path_; }
   LuaSandbox& sandbox() { return *sandbox_; }
 
+  // Headless: the bot's Lua gets the trial's time budget (SandboxLimits::
+  // trialSeconds and per simulated second, from the start of this trial);
+  // real time: every act the tick's CPU budget.
+  void setTiming(const TrialTiming& timing) override;
   // Calls init(level_info, seed) when the bot has one.
   void init(const BotLevelInfo& info, std::int64_t seed) override;
   // Calls act(obs.time, obs) with obs reading `obs` (only during this call).

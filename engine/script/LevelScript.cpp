@@ -113,8 +113,10 @@ void LevelScript::refreshView(const TrialObservation& obs, const TaskJudge& judg
   lua_pop(L, 1);
 }
 
+void LevelScript::setTiming(const TrialTiming& timing) { sandbox_->setTiming(timing); }
+
 bool LevelScript::call(int functionRef, const std::string& where, const TrialObservation& obs, TaskJudge& judge,
-                       const char* reason) {
+                       const char* reason, bool perTick) {
   if (functionRef == LUA_NOREF) return true;
   lua_State* L = sandbox_->state();
   refreshView(obs, judge);
@@ -130,7 +132,11 @@ bool LevelScript::call(int functionRef, const std::string& where, const TrialObs
   activeTime_ = obs.time;
   ++callbackCalls_;
   try {
-    sandbox_->call(nargs, 0, where);
+    sandbox_->advanceRun(obs.time);
+    if (perTick)
+      sandbox_->callPerTick(nargs, 0, where);
+    else
+      sandbox_->call(nargs, 0, where);
   } catch (const ScriptError& e) {
     activeJudge_ = nullptr;
     scriptError_ = std::string("script error: ") + e.what();
@@ -159,7 +165,7 @@ void LevelScript::update(const TrialObservation& obs, TaskJudge& judge) {
     // host that ticks slower than the rate gets one call per tick.
     while (startTime_ + static_cast<double>(updateIndex_ + 1) * period_ <= obs.time + 1e-9) ++updateIndex_;
     nextUpdate_ = startTime_ + static_cast<double>(updateIndex_ + 1) * period_;
-    call(onUpdateRef_, whereUpdate_, obs, judge, nullptr);
+    call(onUpdateRef_, whereUpdate_, obs, judge, nullptr, /*perTick=*/true);
   }
   if (judge.finished() && !endReported_) {
     endReported_ = true;

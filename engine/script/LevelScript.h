@@ -35,6 +35,7 @@
 #include "engine/script/LuaSandbox.h"
 #include "engine/script/TaskJudge.h"
 #include "engine/script/TrialSummary.h"
+#include "engine/script/TrialTiming.h"
 
 namespace hemiroll::script {
 
@@ -73,6 +74,10 @@ class LevelScript {
   // raise "only inside a callback" until a LevelScript calls back).
   static void installApi(LuaSandbox& sandbox);
 
+  // How the trial runs (TrialTiming.h): headless, the level's Lua gets the
+  // trial's time budget from now on; real time, on_update the tick's CPU
+  // budget. Set by the trial runner before start.
+  void setTiming(const TrialTiming& timing);
   // on_start; arms the on_update schedule at obs.time.
   void start(const TrialObservation& obs, TaskJudge& judge);
   // Call every tick after judging it. Runs on_update when due, then
@@ -98,7 +103,7 @@ class LevelScript {
 
  private:
   bool call(int functionRef, const std::string& where, const TrialObservation& obs, TaskJudge& judge,
-            const char* reason);
+            const char* reason, bool perTick = false);
   void refreshView(const TrialObservation& obs, const TaskJudge& judge);
   void buildView();
   void installApi();

@@ -5,6 +5,7 @@
 #include <cctype>
 #include <cstddef>
 #include <cstring>
+#include <string_view>
 
 namespace hemiroll::script {
 
@@ -12,11 +13,21 @@ namespace {
 
 enum class Kind { Name, String, Number, Op, End };
 
+// A token's text is a view into the source (names, numbers, operators; a
+// short string's contents as written, escapes not undone): the map of a
+// 4 MiB file must not cost hundreds of megabytes (issue 33).
 struct Token {
   Kind kind;
-  std::string text;  // names, operators, the contents of short strings
+  std::string_view text;
   int line;
 };
+
+// The map is for error messages; its cost is bounded whatever the text: past
+// these it stops reading or building, and lines it did not reach fall back
+// to the return's line (or line 1). A few tens of megabytes at most.
+constexpr std::size_t kMaxTokens = 1'000'000;
+constexpr std::size_t kMaxConstructors = 100'000;
+constexpr std::size_t kMaxFields = 500'000;
 
 // Level of a long bracket "[==[" starting at i ('[' at i), or -1.
 int longBracketLevel(std::string_view s, std::size_t i) {
@@ -43,7 +54,7 @@ std::vector<Token> tokenize(std::string_view s) {
   std::vector<Token> out;
   int line = 1;
   std::size_t i = 0;
-  while (i < s.size()) {
+  while (i < s.size() && out.size() < kMaxTokens) {
     const char c = s[i];
     if (c == '\n') { ++line; ++i; continue; }
     if (std::isspace(static_cast<unsigned char>(c))) { ++i; continue; }
@@ -67,25 +78,37 @@ std::vector<Token> tokenize(std::string_view s) {
     }
     if (c == '"' || c == '\'') {
       const int startLine = line;
-      std::string text;
-      ++i;
+      const std::size_t start = ++i;
       while (i < s.size() && s[i] != c && s[i] != '\n') {
         if (s[i] == '\\' && i + 1 < s.size()) {
-          if (s[i + 1] == '\n') ++line;
-          text += s[i + 1];
+          // "\z" skips the white space after it, line breaks included; a
+          // backslash before a line break continues the string on the next
+          // line. Both move the line count on (issue 33: after a "\z" every
+          // error pointed at line 1).
+          if (s[i + 1] == 'z') {
+            i += 2;
+            while (i < s.size() && std::isspace(static_cast<unsigned char>(s[i]))) line += s[i++] == '\n';
+            continue;
+          }
+          if (s[i + 1] == '\n' || s[i + 1] == '\r') {
+            ++line;
+            i += 2;
+            if (i < s.size() && (s[i] == '\n' || s[i] == '\r') && s[i] != s[i - 1]) ++i;  // \r\n or \n\r
+            continue;
+          }
           i += 2;
           continue;
         }
-        text += s[i++];
+        ++i;
       }
+      out.push_back({Kind::String, s.substr(start, std::min(i, s.size()) - start), startLine});
       ++i;
-      out.push_back({Kind::String, text, startLine});
       continue;
     }
     if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {
       std::size_t j = i;
       while (j < s.size() && (std::isalnum(static_cast<unsigned char>(s[j])) || s[j] == '_')) ++j;
-      out.push_back({Kind::Name, std::string(s.substr(i, j - i)), line});
+      out.push_back({Kind::Name, s.substr(i, j - i), line});
       i = j;
       continue;
     }
@@ -97,18 +120,18 @@ std::vector<Token> tokenize(std::string_view s) {
         if (!(std::isalnum(static_cast<unsigned char>(d)) || d == '.' || exponentSign)) break;
         ++j;
       }
-      out.push_back({Kind::Number, std::string(s.substr(i, j - i)), line});
+      out.push_back({Kind::Number, s.substr(i, j - i), line});
       i = j;
       continue;
     }
     // Operators: the two- and three-character ones matter only so that "=="
     // is never read as "=".
     static const char* const kLong[] = {"...", "==", "~=", "<=", ">=", "//", "::", "<<", ">>", ".."};
-    std::string op(1, c);
+    std::size_t length = 1;
     for (const char* candidate : kLong)
-      if (s.substr(i, std::strlen(candidate)) == candidate) { op = candidate; break; }
-    out.push_back({Kind::Op, op, line});
-    i += op.size();
+      if (s.substr(i, std::strlen(candidate)) == candidate) { length = std::strlen(candidate); break; }
+    out.push_back({Kind::Op, s.substr(i, length), line});
+    i += length;
   }
   out.push_back({Kind::End, "", line});
   return out;
@@ -148,7 +171,7 @@ class Builder {
   // sources nested deeper than ~200 levels before any line is asked for;
   // the guard keeps the recursion bounded for any text.
   std::size_t parse(std::size_t i, const Constructor** made, int depth = 0) {
-    if (depth > kMaxDepth) return skipConstructor(i);
+    if (depth > kMaxDepth || all_.size() >= kMaxConstructors) return skipConstructor(i);
     auto node = std::make_unique<Constructor>();
     Constructor* self = node.get();
     all_.push_back(std::move(node));
@@ -167,23 +190,23 @@ class Builder {
         std::string key;
         std::size_t value = i;
         if (tok.kind == Kind::Name && isOp(t_(i + 1), "=") && blockDelta(tok) == 0) {
-          key = tok.text;
+          key = std::string(tok.text);
           value = i + 2;
         } else if (isOp(tok, "[") && t_(i + 2).kind != Kind::End && isOp(t_(i + 2), "]") && isOp(t_(i + 3), "=")) {
-          key = t_(i + 1).kind == Kind::Number ? bracketed(t_(i + 1).text) : t_(i + 1).text;
+          key = t_(i + 1).kind == Kind::Number ? bracketed(std::string(t_(i + 1).text)) : std::string(t_(i + 1).text);
           value = i + 4;
         } else {
           key = positionKey(++position);
         }
         const Constructor* child = nullptr;
         if (isOp(t_(value), "{")) {
-          self->fields.push_back({key, tok.line, nullptr});
+          const bool kept = addField(*self, key, tok.line);
           const std::size_t after = parse(value, &child, depth + 1);
-          self->fields.back().child = child;
+          if (kept) self->fields.back().child = child;
           i = after;
           continue;
         }
-        self->fields.push_back({key, tok.line, nullptr});
+        addField(*self, key, tok.line);
         i = value;
         continue;
       }
@@ -199,6 +222,14 @@ class Builder {
 
  private:
   static constexpr int kMaxDepth = 400;
+
+  bool addField(Constructor& c, const std::string& key, int line) {
+    if (fields_ >= kMaxFields) return false;
+    ++fields_;
+    c.fields.push_back({key, line, nullptr});
+    return true;
+  }
+  std::size_t fields_ = 0;
 
   // Past the '}' matching the '{' at i, without building anything.
   std::size_t skipConstructor(std::size_t i) const {
@@ -261,13 +292,13 @@ LevelSourceMap::LevelSourceMap(std::string_view source) {
         i = builder.parse(i + 1, &returned);
         continue;
       }
-      if (at(i + 1).kind == Kind::Name) returnedName = at(i + 1).text;
+      if (at(i + 1).kind == Kind::Name) returnedName = std::string(at(i + 1).text);
     }
     if (isOp(tok, "{")) {
       const Constructor* made = nullptr;
       const bool assignment = i >= 2 && isOp(tokens[i - 1], "=") && tokens[i - 2].kind == Kind::Name;
       const std::size_t after = builder.parse(i, &made);
-      if (assignment && depth == 0) assigned.emplace_back(tokens[i - 2].text, made);
+      if (assignment && depth == 0) assigned.emplace_back(std::string(tokens[i - 2].text), made);
       i = after;
       continue;
     }

@@ -1,15 +1,17 @@
 #include "engine/script/LuaSandbox.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <fstream>
 #include <lua.hpp>
 #include <sstream>
 
-#include "engine/script/LuaPatternBound.h"
+#include "engine/script/LuaLibraryBounds.h"
 #include "engine/script/ScriptError.h"
 #include "engine/script/ScriptSourceFile.h"
 
@@ -19,7 +21,23 @@ namespace {
 
 // The count hook runs every this many VM instructions: cheap enough to leave
 // on for every call, fine-grained enough that the quota overshoots by < 0.1%.
+// Where instructions are slow (a comparison of two 30 MB strings is one),
+// the hook comes more often, down to every instruction, so that the clock
+// is read at least about every millisecond (adaptHookInterval).
 constexpr int kHookInterval = 1000;
+constexpr auto kHookTarget = std::chrono::milliseconds(1);
+// A call starts with the hook this close, so that a call whose very first
+// instructions are slow is checked after a hundred of them, not a thousand;
+// the first hook of ordinary code widens it to kHookInterval.
+constexpr int kFirstHookInterval = 100;
+
+// The calling thread's CPU clock [s]: a system call (about 0.25 us), so it
+// is read only when a CPU budget could have run out.
+double threadCpuSeconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
 
 // ---- C functions that run inside Lua. They must hold no C++ objects with
 // destructors, because any Lua API call in them may raise (longjmp).
@@ -83,47 +101,6 @@ int sandboxXpcall(lua_State* L) {
   lua_pushboolean(L, 0);
   lua_insert(L, -2);
   return 2;
-}
-
-// string.find, match, gmatch and gsub, refused before they run when the
-// pattern's worst case on the subject is beyond the sandbox's bound
-// (LuaPatternBound.h). Upvalue 1: the library's own function; upvalue 2:
-// the name, for the message.
-int boundedPatternFunction(lua_State* L) {
-  std::size_t subjectLength = 0, patternLength = 0;
-  luaL_checklstring(L, 1, &subjectLength);
-  const char* pattern = luaL_checklstring(L, 2, &patternLength);
-  const char* name = lua_tostring(L, lua_upvalueindex(2));
-  const bool find = std::strcmp(name, "find") == 0;
-  const bool plain = find && lua_toboolean(L, 4);
-  const bool anchoredSearch = std::strcmp(name, "gmatch") != 0;
-  if (!plain) {
-    const double bound = patternStepBound({pattern, patternLength}, subjectLength, anchoredSearch);
-    if (bound > LuaSandbox::of(L).limits().patternStepBound) {
-      char message[256];  // lua_pushfstring knows no %e
-      std::snprintf(message, sizeof message,
-                    "string.%s: the pattern has %d repeated items and the subject %zu characters: it may take %.1e "
-                    "matcher steps, more than the sandbox allows (anchor it with '^', use fewer repeats or a "
-                    "shorter subject)",
-                    name, repeatedItems({pattern, patternLength}), subjectLength, bound);
-      return luaL_error(L, "%s", message);
-    }
-  }
-  lua_pushvalue(L, lua_upvalueindex(1));
-  lua_insert(L, 1);
-  lua_call(L, lua_gettop(L) - 1, LUA_MULTRET);
-  return lua_gettop(L);
-}
-
-// Replaces the pattern functions of the string library at `lib` with
-// bounded ones, in place.
-void boundPatternFunctions(lua_State* L, int lib) {
-  for (const char* name : {"find", "match", "gmatch", "gsub"}) {
-    lua_getfield(L, lib, name);
-    lua_pushstring(L, name);
-    lua_pushcclosure(L, boundedPatternFunction, 2);
-    lua_setfield(L, lib, name);
-  }
 }
 
 // Makes every error a one-line string that starts with "file:line:". Errors
@@ -209,9 +186,9 @@ int openSandbox(lua_State* L) {
   lua_pushcfunction(L, sandboxXpcall);
   lua_setfield(L, env, "xpcall");
 
-  // Before the copy: scripts' string table and strings' methods (the
-  // original library, through the string metatable) are both bounded.
-  boundPatternFunctions(L, stringLib);
+  // Before the copy: scripts' libraries and strings' methods (the original
+  // string library, through the string metatable) are all bounded.
+  installLibraryBounds(L, stringLib, tableLib, utf8Lib, env);
   static const char* const kNothing[] = {nullptr};
   static const char* const kStringExcluded[] = {"dump", nullptr};  // bytecode out
   static const char* const kMathExcluded[] = {"random", "randomseed", nullptr};  // runs must be reproducible
@@ -311,23 +288,139 @@ void* LuaSandbox::allocate(void* ud, void* block, std::size_t oldSize, std::size
 
 void LuaSandbox::countHook(lua_State* L, lua_Debug* ar) {
   LuaSandbox& self = of(L);
-  self.instructionsUsed_ += kHookInterval;
-  if (std::chrono::steady_clock::now() > self.deadline_) {
-    lua_sethook(L, &LuaSandbox::countHook, LUA_MASKCOUNT, 1);
+  if (self.limitReached_) {
     lua_getinfo(L, "Sl", ar);
-    lua_pushfstring(L, "%s:%d: wall-clock limit of %f s exceeded", ar->short_src, ar->currentline,
-                    static_cast<lua_Number>(self.wallSeconds_));
+    lua_pushfstring(L, "%s:%d: %s", ar->short_src, ar->currentline, self.limitMessage_);
     lua_error(L);
   }
-  if (self.instructionsUsed_ <= self.instructionBudget_) return;
-  // From now on fire on every instruction: a script that catches the error
-  // with its own pcall fails again at its very next instruction, so it
-  // cannot swallow the quota and carry on.
+  self.instructionsUsed_ += static_cast<std::uint64_t>(self.hookInterval_);
+  const Clock::time_point now = Clock::now();
+  char why[sizeof self.limitMessage_];
+  if (now >= self.nextCheck_ && !self.timeAllows(now, why, sizeof why)) raiseLimit(L, why);
+  if (self.instructionsUsed_ > self.instructionBudget_) {
+    std::snprintf(why, sizeof why, "instruction quota of %llu instructions exceeded (endless loop?)",
+                  static_cast<unsigned long long>(self.instructionBudget_));
+    raiseLimit(L, why);
+  }
+  self.adaptHookInterval(L, now);
+}
+
+void LuaSandbox::adaptHookInterval(lua_State* L, Clock::time_point now) {
+  const Clock::duration since = now - lastHook_;
+  lastHook_ = now;
+  int next = hookInterval_;
+  if (since > kHookTarget && next > 1)
+    next = std::max(1, next / 10);
+  else if (since < kHookTarget / 20 && next < kHookInterval)
+    next = std::min(kHookInterval, next * 10);
+  if (next != hookInterval_) {
+    hookInterval_ = next;
+    lua_sethook(L, &LuaSandbox::countHook, LUA_MASKCOUNT, next);
+  }
+}
+
+void LuaSandbox::raiseLimit(lua_State* L, const char* message) {
+  LuaSandbox& self = of(L);
+  if (message != self.limitMessage_) std::snprintf(self.limitMessage_, sizeof self.limitMessage_, "%s", message);
+  self.limitReached_ = true;
+  // From now on the hook fires on every instruction: a script that catches
+  // the error with its own pcall fails again at its very next instruction,
+  // so it cannot swallow the limit and carry on.
+  self.hookInterval_ = 1;
   lua_sethook(L, &LuaSandbox::countHook, LUA_MASKCOUNT, 1);
-  lua_getinfo(L, "Sl", ar);
-  lua_pushfstring(L, "%s:%d: instruction quota of %I instructions exceeded (endless loop?)", ar->short_src,
-                  ar->currentline, static_cast<lua_Integer>(self.instructionBudget_));
+  lua_Debug ar;
+  for (int level = 0; lua_getstack(L, level, &ar); ++level) {
+    lua_getinfo(L, "Sl", &ar);
+    if (ar.currentline > 0) {
+      lua_pushfstring(L, "%s:%d: %s", ar.short_src, ar.currentline, self.limitMessage_);
+      lua_error(L);
+    }
+  }
+  lua_pushstring(L, self.limitMessage_);
   lua_error(L);
+  std::abort();  // lua_error does not return
+}
+
+bool LuaSandbox::timeAllows(Clock::time_point now, char* why, std::size_t size) {
+  if (now >= wallDeadline_) {
+    std::snprintf(why, size, wallSeconds_ == std::floor(wallSeconds_) ? "wall-clock limit of %.1f s exceeded"
+                                                                       : "wall-clock limit of %g s exceeded",
+                  wallSeconds_);
+    return false;
+  }
+  if (runBudget_ && now >= runDeadline_) {
+    const double spent = runSpent_ + std::chrono::duration<double>(now - armedAt_).count();
+    std::snprintf(why, size,
+                  "the trial's Lua time budget is spent: %.2f s in Lua by %.3f s of simulated time (a trial run "
+                  "headless allows %g s + %g s per simulated second)",
+                  spent, simulatedSeconds_, limits_.trialSeconds, limits_.trialSecondsPerSimulatedSecond);
+    return false;
+  }
+  if (cpuSeconds_ > 0.0 && now >= cpuCheck_) {
+    const double used = threadCpuSeconds() - cpuStart_;
+    if (used > cpuSeconds_) {
+      std::snprintf(why, size, "used more than its %g ms of CPU per tick (a real-time tick's deadline)",
+                    1e3 * cpuSeconds_);
+      return false;
+    }
+    // Wall time runs at least as fast as the thread's CPU time: the budget
+    // cannot run out before the rest of it has passed on the wall clock.
+    cpuCheck_ = now + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(cpuSeconds_ - used));
+  }
+  nextCheck_ = std::min(wallDeadline_, cpuSeconds_ > 0.0 ? cpuCheck_ : Clock::time_point::max());
+  if (runBudget_) nextCheck_ = std::min(nextCheck_, runDeadline_);
+  return true;
+}
+
+LuaSandbox::LibraryVerdict LuaSandbox::admitLibraryCall(const char* name, double worstSteps, double chargeSteps,
+                                                        const char* detail, char* why, std::size_t size) {
+  if (limitReached_) {
+    std::snprintf(why, size, "%s", limitMessage_);
+    return LibraryVerdict::LimitReached;
+  }
+  if (!armed_) return LibraryVerdict::Run;  // host-side use between calls: nothing to meter
+  if (!(worstSteps <= stepCap_)) {
+    std::snprintf(why, size, "%s: %s may take up to %.1e steps, more than the %.1e one library call may take %s",
+                  name, detail[0] != '\0' ? detail : "this call", worstSteps, stepCap_,
+                  stepCap_ < limits_.libraryStepBound ? "within this call's time limit" : "in the sandbox");
+    return LibraryVerdict::Refused;
+  }
+  const Clock::time_point now = Clock::now();
+  if (now >= nextCheck_ && !timeAllows(now, why, size)) return LibraryVerdict::LimitReached;
+  chargedSteps_ += chargeSteps / limits_.libraryStepsPerInstruction;
+  if (chargedSteps_ >= 1.0) {
+    const double whole = std::floor(chargedSteps_);
+    chargedSteps_ -= whole;
+    instructionsUsed_ += whole >= 1e18 ? std::uint64_t{1} << 60 : static_cast<std::uint64_t>(whole);
+  }
+  if (instructionsUsed_ > instructionBudget_) {
+    std::snprintf(why, size, "instruction quota of %llu instructions exceeded (with the work of %s)",
+                  static_cast<unsigned long long>(instructionBudget_), name);
+    return LibraryVerdict::LimitReached;
+  }
+  return LibraryVerdict::Run;
+}
+
+bool LuaSandbox::libraryCallReturned(char* why, std::size_t size) {
+  if (!armed_) return true;
+  const Clock::time_point now = Clock::now();
+  return now < nextCheck_ || timeAllows(now, why, size);
+}
+
+void LuaSandbox::setTiming(const TrialTiming& timing) {
+  if (timing.realtime) {
+    setTickCpuLimit(timing.tickSeconds);
+    runBudget_ = false;
+  } else {
+    setTickCpuLimit(0.0);
+    startRun();
+  }
+}
+
+void LuaSandbox::startRun() {
+  runBudget_ = true;
+  runSpent_ = 0.0;
+  simulatedSeconds_ = 0.0;
 }
 
 bool LuaSandbox::spendPrintBudget(std::size_t bytes) {
@@ -342,22 +435,45 @@ bool LuaSandbox::spendPrintBudget(std::size_t bytes) {
   return false;
 }
 
-void LuaSandbox::arm(std::uint64_t quota, double wallSeconds) {
+void LuaSandbox::arm(std::uint64_t quota, double wallSeconds, double cpuSeconds) {
   instructionBudget_ = quota;
   instructionsUsed_ = 0;
+  chargedSteps_ = 0.0;
+  limitReached_ = false;
   wallSeconds_ = wallSeconds;
-  deadline_ = std::chrono::steady_clock::now() +
-              std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(wallSeconds));
-  lua_sethook(L_, &LuaSandbox::countHook, LUA_MASKCOUNT, kHookInterval);
+  cpuSeconds_ = cpuSeconds;
+  armedAt_ = lastHook_ = Clock::now();
+  const auto after = [this](double seconds) {
+    return armedAt_ + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(std::max(0.0, seconds)));
+  };
+  wallDeadline_ = after(wallSeconds);
+  if (cpuSeconds > 0.0) {
+    cpuStart_ = threadCpuSeconds();
+    cpuCheck_ = after(cpuSeconds);
+  }
+  if (runBudget_) {
+    const double allowed = limits_.trialSeconds + limits_.trialSecondsPerSimulatedSecond * simulatedSeconds_;
+    runDeadline_ = after(std::min(allowed - runSpent_, 1e9));
+  }
+  nextCheck_ = std::min(wallDeadline_, cpuSeconds > 0.0 ? cpuCheck_ : Clock::time_point::max());
+  if (runBudget_) nextCheck_ = std::min(nextCheck_, runDeadline_);
+  // What one library call may take: the bound, or what this call's time
+  // limit allows (a real-time tick's few milliseconds).
+  stepCap_ = std::min(limits_.libraryStepBound,
+                      limits_.libraryStepsPerSecond * (cpuSeconds > 0.0 ? std::min(cpuSeconds, wallSeconds) : wallSeconds));
+  hookInterval_ = kFirstHookInterval;
+  lua_sethook(L_, &LuaSandbox::countHook, LUA_MASKCOUNT, kFirstHookInterval);
   armed_ = true;
 }
 
 void LuaSandbox::disarm() {
+  if (armed_ && runBudget_) runSpent_ += std::chrono::duration<double>(Clock::now() - armedAt_).count();
   armed_ = false;
+  limitReached_ = false;
   lua_sethook(L_, nullptr, 0, 0);
 }
 
-int LuaSandbox::protectedCall(int nargs, int nresults, std::uint64_t quota, double wallSeconds,
+int LuaSandbox::protectedCall(int nargs, int nresults, std::uint64_t quota, double wallSeconds, double cpuSeconds,
                               std::string_view where, std::string& error) {
   lua_State* L = L_;
   const int function = lua_gettop(L) - nargs;
@@ -368,14 +484,18 @@ int LuaSandbox::protectedCall(int nargs, int nresults, std::uint64_t quota, doub
   }
   lua_pushcfunction(L, messageHandler);
   lua_insert(L, function);
-  arm(quota, wallSeconds);
+  arm(quota, wallSeconds, cpuSeconds);
   const int status = lua_pcall(L, nargs, nresults, function);
   disarm();
   if (status == LUA_OK) {
     lua_remove(L, function);
     return LUA_OK;
   }
-  if (status == LUA_ERRMEM) {
+  // A memory error passed on by a bounded library call (LuaLibraryBounds)
+  // arrives as an ordinary error with Lua's memory message.
+  const bool memory = status == LUA_ERRMEM || (lua_type(L, -1) == LUA_TSTRING &&
+                                                std::string_view(lua_tostring(L, -1)).ends_with("not enough memory"));
+  if (memory) {
     error = std::string(where) + ": memory limit of " + describeBytes(limits_.memoryLimitBytes) + " exceeded";
   } else if (lua_type(L, -1) == LUA_TSTRING) {
     error = lua_tostring(L, -1);
@@ -396,7 +516,7 @@ void LuaSandbox::runChunk(std::string_view source, const std::string& chunkName,
   if (!lua_checkstack(L, nresults + 4)) throw ScriptError(chunkName + ": Lua stack overflow");
 
   const std::string name = "@" + chunkName;
-  arm(limits_.chunkInstructionQuota, limits_.chunkWallSeconds);  // the memory cap also bounds what the parser may build
+  arm(limits_.chunkInstructionQuota, limits_.chunkWallSeconds, 0.0);  // the memory cap also bounds what the parser may build
   const int loaded = luaL_loadbufferx(L, source.data(), source.size(), name.c_str(), "t");
   disarm();
   if (loaded != LUA_OK) {
@@ -422,7 +542,8 @@ void LuaSandbox::runChunk(std::string_view source, const std::string& chunkName,
   if (lua_setupvalue(L, -2, 1) == nullptr) lua_pop(L, 1);
 
   std::string error;
-  if (protectedCall(0, nresults, limits_.chunkInstructionQuota, limits_.chunkWallSeconds, chunkName, error) != LUA_OK)
+  if (protectedCall(0, nresults, limits_.chunkInstructionQuota, limits_.chunkWallSeconds, 0.0, chunkName, error) !=
+      LUA_OK)
     throw ScriptError(error);
 }
 
@@ -433,7 +554,17 @@ void LuaSandbox::runFile(const std::string& path, int nresults) {
 int LuaSandbox::call(int nargs, int nresults, std::string_view where) {
   const int base = lua_gettop(L_) - nargs - 1;
   std::string error;
-  if (protectedCall(nargs, nresults, limits_.callInstructionQuota, limits_.callWallSeconds, where, error) != LUA_OK)
+  if (protectedCall(nargs, nresults, limits_.callInstructionQuota, limits_.callWallSeconds, 0.0, where, error) !=
+      LUA_OK)
+    throw ScriptError(error);
+  return lua_gettop(L_) - base;
+}
+
+int LuaSandbox::callPerTick(int nargs, int nresults, std::string_view where) {
+  const int base = lua_gettop(L_) - nargs - 1;
+  std::string error;
+  if (protectedCall(nargs, nresults, limits_.callInstructionQuota, limits_.callWallSeconds, tickCpuLimit_, where,
+                    error) != LUA_OK)
     throw ScriptError(error);
   return lua_gettop(L_) - base;
 }

@@ -1,5 +1,7 @@
 #include "engine/script/ProtocolLoader.h"
 
+#include "engine/physics/ForceCoupling.h"
+
 #include <lua.hpp>
 
 #include <algorithm>
@@ -24,7 +26,11 @@ constexpr DataFileKind kProtocolFile{"protocol file", "protocol"};
 
 constexpr std::initializer_list<const char*> kMethods = {"M1", "M2", "M3", "visual"};
 constexpr int kMaxRepetitions = 10000;
-constexpr int kMaxTrials = 100000;  // a plan larger than this is a mistake (a loop gone wrong)
+// A plan larger than this is a mistake (a loop gone wrong): 10 000 trials
+// are weeks of sittings. It bounds what a session holds and writes for its
+// plan: a manifest of about 0.8 kB a trial, parsed back at every resume
+// (100 000 trials made a 77 MB manifest and 420-525 MB of memory; issue 33).
+constexpr int kMaxTrials = 10000;
 
 struct LevelFolders {
   std::string base;    // the protocol's folder
@@ -108,6 +114,10 @@ GuidanceSpec readGuidance(const LuaTableReader& table) {
   g.stiffness = k.value_or(0.0);
   g.damping = readNonNegative(table, "damping", "N s/m").value_or(0.0);
   g.maxError = readPositive(table, "max_error", "m").value_or(g.maxError);
+  // The bounds of every gain, wherever it is given (physics/ForceCoupling.h).
+  if (g.stiffness > physics::kMaxStiffness) table.fail(spring, "must be at most 1e6 N/m");
+  if (g.damping > physics::kMaxDamping) table.fail("damping", "must be at most 1e4 N s/m");
+  if (g.maxError > physics::kMaxGuidanceError) table.fail("max_error", "must be at most 1 m");
   if (const auto fade = table.table("fade")) {
     rejectUnknownLevelKeys(*fade, {"from", "to", "over_trials"});
     g.fade.from = readFadeValue(*fade, "from", 1.0);
@@ -126,6 +136,13 @@ TrialOverrides readOverrides(const LuaTableReader& table) {
   o.damping = readNonNegative(table, "kv", "damping, N s/m");
   o.alpha = readPositive(table, "alpha", "the normal / in-face gain ratio");
   o.timeLimit = readPositive(table, "time_limit", "s");
+  // A level's bounds (TaskDef.h, ForceCoupling.h): an override may not give
+  // what the level itself could not (time_limit = 1e16 wrote 258 MB in 20 s).
+  if (o.timeLimit && *o.timeLimit > kMaxTimeLimit)
+    table.fail("time_limit", "must be at most " + std::to_string(static_cast<int>(kMaxTimeLimit)) +
+                                 " s (a day), as a level's");
+  if (const auto error = physics::couplingError(overriddenCoupling(o, physics::CouplingDef{})))
+    table.fail(error->field, error->message);
   if (const auto guidance = table.table("guidance")) o.guidance = readGuidance(*guidance);
   return o;
 }

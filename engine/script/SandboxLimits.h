@@ -23,11 +23,30 @@ struct SandboxLimits {
   // for a chunk, 400x for a call).
   double chunkWallSeconds = 10.0;
   double callWallSeconds = 2.0;
-  // The string library's pattern functions (find, match, gmatch, gsub) may
-  // backtrack for as long as they like inside C, where no hook runs: a
-  // pattern whose worst case on its subject exceeds this many matcher steps
-  // is refused before it runs (LuaPatternBound.h).
-  double patternStepBound = 2e8;
+  // Library functions that loop or allocate inside C (string.rep,
+  // table.move, the pattern functions, ...) run where no hook does: one
+  // call's worst case is worked out before it runs and the call refused when
+  // it exceeds this many steps (LuaLibraryBounds.h; a step is a character
+  // scanned, compared or copied, an element moved, a class tested). s:find
+  // of "%b()" on 14 000 unbalanced characters is 2e8 steps and 0.13 s.
+  double libraryStepBound = 2e8;
+  // ... or what the call's own time limit allows at this many steps a
+  // second (a real-time tick's 2 ms: 2e5), so that no single library call
+  // outlasts its budget by more than it.
+  double libraryStepsPerSecond = 1e8;
+  // The part of a library call's work that is certain (the bytes it reads
+  // and writes, the elements it moves) is charged to the instruction quota
+  // at this many steps an instruction: a loop of large calls meets the
+  // quota as a loop of instructions does (a VM instruction takes about as
+  // long as 16 bytes decoded or compared).
+  double libraryStepsPerInstruction = 16.0;
+  // A trial run headless (bit-for-bit, no clock in the loop) lets each of
+  // its scripts (the bot's, the level's) spend this long inside Lua in all,
+  // plus this much per simulated second (docs/RUN.md); past it the trial
+  // ends with the reason. In real time each tick's call has the tick's
+  // deadline instead (TrialTiming).
+  double trialSeconds = 2.0;
+  double trialSecondsPerSimulatedSecond = 1.0;
   // What print() may write to stderr over the sandbox's life [bytes]; then
   // one line says so and the rest is dropped (a bot printing every tick
   // wrote 19.8 GB in a minute).

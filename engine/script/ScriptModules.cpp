@@ -1,7 +1,5 @@
 #include "engine/script/ScriptModules.h"
 
-#include <sys/stat.h>
-
 #include <climits>
 #include <cstdio>
 #include <cstdlib>
@@ -11,6 +9,7 @@
 #include <new>
 #include <type_traits>
 
+#include "engine/files/CheckedFile.h"
 #include "engine/script/EngineRandom.h"
 
 namespace hemiroll::script {
@@ -67,9 +66,14 @@ int sandboxRequire(lua_State* L) {
     return luaL_error(L, "require('%s'): modules are not available here (no scripts directory)", name);
   const char* relative = luaL_gsub(L, name, ".", "/");                        // 2
   const char* path = lua_pushfstring(L, "%s/%s.lua", directory, relative);  // 3
-  struct stat info;
-  if (stat(path, &info) != 0 || !S_ISREG(info.st_mode))
-    return luaL_error(L, "require('%s'): no module file %s", name, path);
+  // Checked as every file read is (engine/files): a regular file (a FIFO
+  // would hang the read) within the Lua file cap.
+  const files::CheckedRead sized = files::checkedSize(path, files::kLuaSource);
+  if (!sized.ok) {
+    if (std::strstr(sized.error, ": no such file") != nullptr)
+      return luaL_error(L, "require('%s'): no module file %s", name, path);
+    return luaL_error(L, "require('%s'): %s", name, sized.error);
+  }
   // The file must be inside the scripts folder once links are followed: a
   // link out of it (to /etc/shadow, say) would be read and its text shown in
   // the syntax error.
@@ -79,14 +83,12 @@ int sandboxRequire(lua_State* L) {
   const std::size_t directoryLength = std::strlen(realDirectory);
   if (std::strncmp(realFile, realDirectory, directoryLength) != 0 || realFile[directoryLength] != '/')
     return luaL_error(L, "require('%s'): %s leads outside the scripts folder (a link?)", name, path);
-  const std::size_t size = static_cast<std::size_t>(info.st_size);
-  if (size > (std::size_t{16} << 20)) return luaL_error(L, "require('%s'): %s is larger than 16 MiB", name, path);
+  const std::size_t size = static_cast<std::size_t>(sized.size);
   char* buffer = static_cast<char*>(lua_newuserdatauv(L, size + 1, 0));  // 4 (may raise: nothing open yet)
-  std::FILE* file = std::fopen(path, "rb");
-  if (file == nullptr) return luaL_error(L, "require('%s'): cannot open %s", name, path);
-  const std::size_t got = std::fread(buffer, 1, size, file);
-  std::fclose(file);
-  if (got != size) return luaL_error(L, "require('%s'): cannot read %s", name, path);
+  // Read from the resolved file: the same one the check above looked at.
+  const files::CheckedRead read = files::readCheckedInto(realFile, files::kLuaSource, buffer, size);
+  if (!read.ok) return luaL_error(L, "require('%s'): %s", name, read.error);
+  if (read.size != size) return luaL_error(L, "require('%s'): %s changed while it was read", name, path);
   const char* text = buffer;
   std::size_t textSize = size;
   if (textSize >= 3 && static_cast<unsigned char>(text[0]) == 0xEF && static_cast<unsigned char>(text[1]) == 0xBB &&

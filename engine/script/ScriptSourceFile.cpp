@@ -1,13 +1,24 @@
 #include "engine/script/ScriptSourceFile.h"
 
 #include <algorithm>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 
+#include "engine/files/CheckedFile.h"
+#include "engine/files/FileReadError.h"
+#include "engine/files/PrintableName.h"
 #include "engine/script/ScriptError.h"
 
 namespace hemiroll::script {
+
+namespace {
+
+// The checked reader's sentence without the path it starts with: script
+// errors put "path:1: " in front themselves.
+std::string shortReason(const std::string& message, const std::string& path) {
+  const std::string prefix = files::printable(path) + ": ";
+  return message.rfind(prefix, 0) == 0 ? message.substr(prefix.size()) : message;
+}
+
+}  // namespace
 
 void skipInterpreterPrefix(std::string& text) {
   if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);
@@ -17,23 +28,20 @@ void skipInterpreterPrefix(std::string& text) {
 
 std::string readScriptText(const std::string& path, const char* what, std::uintmax_t maxBytes,
                            const char* limitName) {
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error))
-    throw ScriptError(path + ":1: " + (std::filesystem::exists(path, error) ? "not a regular file" : "no such file"));
   const std::uintmax_t limit = std::min(maxBytes, kMaxScriptFileBytes);
-  const std::uintmax_t size = std::filesystem::file_size(path, error);
-  if (error) throw ScriptError(path + ":1: cannot read the " + what);
-  if (size > limit)
-    throw ScriptError(path + ":1: file is larger than the " + (limit < kMaxScriptFileBytes ? limitName : "4 MiB limit of a Lua file"));
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ScriptError(path + ":1: cannot open the " + what);
-  // At most one byte past the limit, whatever the file grew to since.
-  std::string text(static_cast<std::size_t>(limit) + 1, '\0');
-  in.read(text.data(), static_cast<std::streamsize>(text.size()));
-  if (in.bad()) throw ScriptError(path + ":1: cannot read the " + what);
-  text.resize(static_cast<std::size_t>(in.gcount()));
+  std::string text;
+  try {
+    files::CheckedFile file(path, {what, files::kLuaSource.maxBytes});
+    if (file.size() > limit)
+      throw ScriptError(files::printablePath(path) + ":1: file is larger than the " +
+                        (limit < kMaxScriptFileBytes ? limitName : "4 MiB limit of a Lua file"));
+    text = file.readAll();
+  } catch (const files::FileReadError& e) {
+    throw ScriptError(files::printable(path) + ":1: " + shortReason(e.what(), path));
+  }
   if (text.size() > limit)
-    throw ScriptError(path + ":1: file is larger than the " + (limit < kMaxScriptFileBytes ? limitName : "4 MiB limit of a Lua file"));
+    throw ScriptError(files::printablePath(path) + ":1: file is larger than the " +
+                      (limit < kMaxScriptFileBytes ? limitName : "4 MiB limit of a Lua file"));
   skipInterpreterPrefix(text);
   return text;
 }

@@ -8,15 +8,18 @@
 #include <cstdint>
 #include <string>
 
+#include "engine/files/FileKinds.h"
+
 namespace hemiroll::script {
 
 // The most any Lua file hemiroll reads may hold (levels, bots, protocols,
 // sweep specs, scenarios are kilobytes): checked before a byte is read, so
 // that a huge or endless file (/dev/zero, a 3 GB sparse file) costs nothing.
-inline constexpr std::uintmax_t kMaxScriptFileBytes = std::uintmax_t{4} << 20;
+inline constexpr std::uintmax_t kMaxScriptFileBytes = files::kLuaSource.maxBytes;
 
-// The file's text as above. Throws ScriptError "path:1: ..." when it is
-// missing, not a regular file (a FIFO would block the open), larger than
+// The file's text as above, read through the checked reader (engine/files).
+// Throws ScriptError "path:1: ..." when it is missing, not a regular file
+// (a FIFO, a device), larger than
 // min(maxBytes, kMaxScriptFileBytes) or unreadable; `what` names the kind of
 // file in those messages ("level file"), `limitName` the limit maxBytes is
 // ("the memory limit").

@@ -109,7 +109,7 @@ std::string featuresJson(const TrialData& trial, const analysis::TrialFeatures& 
     j["guidance"] = {{"work_J", guidance.work},
                      {"opposed_share", guidance.opposedShare},
                      {"guided_time_s", guidance.guidedTime}};
-  return j.dump(2) + "\n";
+  return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 
 }  // namespace hemiroll::game

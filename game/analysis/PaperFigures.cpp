@@ -82,7 +82,7 @@ OutputFiles paperFigures(const FigureRun& run, const analysis::TrialFeatures& f)
   j["run"] = {{"drive", "rose"},           {"r1_m", run.rose.r1},          {"r2_m", run.rose.r2},
               {"k", run.rose.k},           {"Omega_rad_per_s", run.rose.omega}, {"time_step_s", run.timeStep},
               {"integrator", run.integrator}, {"start", run.start}, {"event", run.event.empty() ? nlohmann::json() : nlohmann::json(run.event)}};
-  files.emplace_back("figures_features.json", j.dump(2) + "\n");
+  files.emplace_back("figures_features.json", j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
   files.emplace_back("figures_features.md", "# Features of the `hemiroll figures` run\n\n" + paperFiguresMarkdown(run, f));
   return files;
 }

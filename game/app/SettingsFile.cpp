@@ -138,20 +138,23 @@ std::filesystem::path configDirectory() {
   return std::filesystem::path(".hemiroll");
 }
 
-// Far more than any settings file holds (a few hundred bytes).
-constexpr std::uintmax_t kMaxSettingsFileBytes = std::uintmax_t{1} << 20;
-
 LoadedSettings loadSettings(const std::filesystem::path& file) {
   LoadedSettings out;
   std::error_code ec;
-  if (!std::filesystem::exists(file, ec)) return out;
+  if (!std::filesystem::exists(file, ec) && !std::filesystem::is_symlink(file, ec)) return out;
   Json json;
   // Settings are a few hundred bytes; a file far larger (or not a file) is
-  // not read at all, so that it cannot cost gigabytes of parsing.
-  const std::uintmax_t size = std::filesystem::file_size(file, ec);
-  const bool readable = !ec && std::filesystem::is_regular_file(file, ec) && size <= kMaxSettingsFileBytes;
+  // not read at all (the checked reader, files::kSettings), so that it
+  // cannot cost gigabytes of parsing or hang on a FIFO.
+  bool readable = true;
+  std::string text;
   try {
-    if (readable) json = Json::parse(record::readWholeFile(file));
+    text = record::readWholeFile(file, files::kSettings);
+  } catch (const std::exception&) {
+    readable = false;
+  }
+  try {
+    if (readable) json = Json::parse(text);
   } catch (const std::exception& e) {
     json = nullptr;
   }
@@ -216,7 +219,7 @@ std::string settingsJson(const Settings& s) {
     keys[keyActionInfo(action).id] = s.keys.keyName(action);
   }
   json["keys"] = keys;
-  return json.dump(2) + "\n";
+  return json.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
 }
 
 std::string saveSettings(const std::filesystem::path& file, const Settings& settings) {

@@ -98,6 +98,8 @@ int runRunCommand(const std::vector<std::string>& args) {
   haptics::parseGuidanceKind(options.guidance, settings.guidance.kind);  // checked by parseRunOptions
   settings.guidance.stiffness = options.guidanceStiffness;
   settings.guidance.damping = options.guidanceDamping.value_or(10.0);
+  if (const std::string problem = haptics::guidanceProblem(settings.guidance, botDeviceSpec()); !problem.empty())
+    return badInput("--guidance-" + problem);
   std::unique_ptr<TrialRecording> recording;
   TrialResult result;
   try {

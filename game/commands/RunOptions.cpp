@@ -2,6 +2,8 @@
 
 #include <string>
 
+#include "engine/physics/ForceCoupling.h"
+
 #include "game/cli/ArgumentReader.h"
 #include "game/commands/HumanFlags.h"
 
@@ -54,8 +56,11 @@ RunOptionsResult parseRunOptions(const std::vector<std::string>& args) {
       .option("--bot", cli::text(o.botPath, "a bot file"))
       .option("--record", cli::text(o.recordDir, "a directory"))
       .option("--guidance", cli::text(o.guidance, "none, autopilot or error_augmentation"))
-      .option("--guidance-stiffness", cli::positiveNumber(o.guidanceStiffness, "a stiffness in N/m"))
-      .option("--guidance-damping", cli::positiveNumber(o.guidanceDamping, "a damping in N s/m"))
+      // The bounds a protocol's guidance has (one rule: 0 is allowed for both).
+      .option("--guidance-stiffness",
+              cli::numberIn(o.guidanceStiffness, 0.0, physics::kMaxStiffness, "a stiffness from 0 to 1e6 N/m"))
+      .option("--guidance-damping",
+              cli::numberIn(o.guidanceDamping, 0.0, physics::kMaxDamping, "a damping from 0 to 1e4 N s/m"))
       .option("--autopilot-budget", cli::positiveNumber(o.autopilotBudget, "a planning effort from 0.25 to 4"))
       // Lua integers are signed 64-bit, and the bot receives the seed as one.
       .option("--seed", cli::unsignedUpTo(o.seed, 0x7fffffffffffffffULL, "a whole number from 0 to 9223372036854775807"));

@@ -122,6 +122,7 @@ int runSessionCommand(const std::vector<std::string>& args) {
     if (const std::string problem = session.couplingProblem(botDeviceSpec()); !problem.empty())
       return fail(kExitUsage, problem);
     session.begin(*o.botPath);
+    if (!session.lockNote().empty()) std::cerr << "hemiroll session: " << session.lockNote() << "\n";
     for (const auto& [trialId, reason] : session.interrupted())
       std::cerr << "hemiroll session: " << trialId << " was " << reason << "; its files were moved aside (*.aborted-N)\n";
     while (!session.complete() && !session.stopsHere()) {

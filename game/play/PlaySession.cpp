@@ -85,6 +85,9 @@ bool PlaySession::startLoopWhenReady() {
   waitingFor_.clear();
   if (!judgeStarted_) {
     judgeStarted_ = true;
+    // The level's callbacks run on the window's thread, once per frame for
+    // the ticks it drains: each on_update has a frame's CPU as its deadline.
+    level_.script->setTiming({.realtime = true, .tickSeconds = kWindowLuaTickSeconds});
     judging_.start(initial_);
   }
   if (judging_.finished()) return true;   // on_start ended it

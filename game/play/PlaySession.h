@@ -48,6 +48,10 @@
 
 namespace hemiroll::game {
 
+// The CPU one call of a level's on_update may take in the window: a frame
+// at 60 Hz (the judge runs the callbacks of a frame's ticks once per frame).
+inline constexpr double kWindowLuaTickSeconds = 1.0 / 60.0;
+
 struct PlaySessionDef {
   std::string device = "mouse";        // "mouse", "joystick" or "udp" (DeviceFactory names)
   haptics::DeviceOptions deviceOptions;  // the joystick's index, the bridge's port, ...

@@ -2,6 +2,7 @@
 
 #include <map>
 
+#include "engine/files/PrintableName.h"
 #include "engine/record/ContentHash.h"
 #include "engine/record/CsvRowFormat.h"
 #include "engine/record/DurableFile.h"
@@ -38,9 +39,11 @@ struct LevelFacts {
   double timeLimit = 0.0;
 };
 
-LevelFacts factsOf(const std::string& path) {
+LevelFacts factsOf(const std::string& path, const script::SandboxLimits& limits) {
   try {
-    const script::LoadedLevel level = script::LevelLoader().loadFile(path);
+    script::LevelLoadOptions options;
+    options.limits = limits;
+    const script::LoadedLevel level = script::LevelLoader(options).loadFile(path);
     return {level.def.name, record::fileContentHash(path), level.def.coupling, level.def.task.timeLimit};
   } catch (const script::ScriptError& e) {
     badInput(e.what());
@@ -56,6 +59,7 @@ ResearchSession::ResearchSession(const SessionRequest& request) {
   try {
     script::ProtocolLoadOptions options;
     options.levelsDir = request.levelsDir;
+    options.limits = request.loadLimits;
     protocol_ = script::ProtocolLoader(options).loadFile(request.protocolPath);
   } catch (const script::ScriptError& e) {
     badInput(e.what());
@@ -70,12 +74,15 @@ ResearchSession::ResearchSession(const SessionRequest& request) {
   std::optional<SessionManifest> previous;
   if (fs::exists(manifestPath, ec)) {
     try {
-      previous = SessionManifest::fromJson(record::readWholeFile(manifestPath), manifestPath.string());
+      previous = SessionManifest::fromJson(record::readWholeFile(manifestPath, files::kSessionManifest), manifestPath.string());
     } catch (const std::exception& e) {
       environment(e.what());
     }
-  } else if (fs::exists(folder_, ec) && !fs::is_empty(folder_, ec)) {
-    environment(folder_.string() + " holds files but no " + kManifestFile + ": it is not a session folder");
+  } else if (fs::exists(folder_, ec)) {
+    // A lock file alone is a session that ended before its manifest.
+    for (const fs::directory_entry& entry : fs::directory_iterator(folder_, ec))
+      if (entry.path().filename() != kLockFile)
+        environment(folder_.string() + " holds files but no " + kManifestFile + ": it is not a session folder");
   }
   if (previous && request.seed && *request.seed != previous->seed)
     badInput("session '" + request.session + "' of participant '" + request.participant + "' was started with seed " +
@@ -115,7 +122,8 @@ void ResearchSession::buildPlan(const SessionRequest& request, std::uint64_t see
   const script::ProtocolPlan plan = script::expandProtocol(protocol_, seed);
   manifest_.experiment = protocol_.experiment;
   manifest_.description = protocol_.description;
-  manifest_.protocolFile = request.protocolPath;
+  // Paths as text (JSON, CSV): a name that is not UTF-8 is shown with \xNN.
+  manifest_.protocolFile = files::printable(request.protocolPath);
   manifest_.protocolHash = record::fileContentHash(request.protocolPath);
   manifest_.protocolVersion = protocol_.version;
   manifest_.seed = seed;
@@ -123,7 +131,7 @@ void ResearchSession::buildPlan(const SessionRequest& request, std::uint64_t see
   for (const script::PlannedTrial& p : plan.trials) {
     const script::ConditionDef& condition = script::ProtocolPlan::conditionOf(protocol_, p);
     auto found = levels.find(condition.levelPath);
-    if (found == levels.end()) found = levels.emplace(condition.levelPath, factsOf(condition.levelPath)).first;
+    if (found == levels.end()) found = levels.emplace(condition.levelPath, factsOf(condition.levelPath, request.loadLimits)).first;
     const LevelFacts& level = found->second;
     const physics::CouplingDef coupling = script::overriddenCoupling(condition.overrides, level.coupling);
     ManifestTrial t;
@@ -135,7 +143,7 @@ void ResearchSession::buildPlan(const SessionRequest& request, std::uint64_t see
     t.repetition = p.repetition;
     t.condition = p.condition;
     t.conditionLabel = condition.label;
-    t.levelFile = condition.levelPath;
+    t.levelFile = files::printable(condition.levelPath);
     t.levelName = level.name;
     t.levelHash = level.hash;
     t.method = script::couplingMethodName(coupling);
@@ -182,6 +190,20 @@ void ResearchSession::begin(const std::string& player) {
   std::error_code ec;
   fs::create_directories(folder_, ec);
   if (ec) environment("cannot create the session folder " + folder_.string() + ": " + ec.message());
+  lock_ = std::make_unique<SessionLock>(folder_, "hemiroll session of " + manifest_.experiment + " as " + player);
+  // What the constructor read may have changed before the lock was taken:
+  // another session may have run in the folder meanwhile.
+  const bool manifestNow = fs::exists(folder_ / kManifestFile, ec);
+  const bool changed = manifestNow != resumed_ ||
+                       (resumed_ && [&] {
+                         const ResumePoint now = findResumePoint(folder_, manifest_.plan);
+                         return now.done != done_ || now.interrupted != interrupted_;
+                       }());
+  if (changed) {
+    lock_.reset();
+    environment("the session folder " + folder_.string() +
+                " changed while this session was being opened (another session ran in it); run it again");
+  }
   for (const auto& [trialId, reason] : interrupted_) manifest_.aborted.push_back(moveTrialAside(folder_, trialId, reason));
   if (!resumed_) {
     manifest_.startTime = record::utcTimestamp();
@@ -193,6 +215,11 @@ void ResearchSession::begin(const std::string& player) {
   } catch (const record::RecordError& e) {
     environment(e.what());
   }
+}
+
+const std::string& ResearchSession::lockNote() const {
+  static const std::string none;
+  return lock_ ? lock_->note() : none;
 }
 
 const std::string& ResearchSession::instructionsOf(const ManifestTrial& trial) const {
@@ -222,6 +249,9 @@ std::string ResearchSession::couplingProblem(const haptics::DeviceSpec& device) 
     if (!problem.empty())
       return t.trialId + " (" + t.conditionLabel + ", " + t.levelFile + "): the " + device.name +
              " device cannot take this coupling: " + problem;
+    if (const std::string guidance = haptics::guidanceProblem(t.guidance, device); !guidance.empty())
+      return t.trialId + " (" + t.conditionLabel + ", " + t.levelFile + "): the " + device.name +
+             " device cannot take this guidance: " + guidance;
   }
   return "";
 }

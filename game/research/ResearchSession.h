@@ -29,6 +29,7 @@
 #include "engine/script/ProtocolDef.h"
 #include "game/trial/TrialRecording.h"
 #include "game/research/SessionError.h"
+#include "game/research/SessionLock.h"
 #include "game/research/SessionManifest.h"
 
 namespace hemiroll::game {
@@ -44,6 +45,9 @@ struct SessionRequest {
   std::string session = "1";
   std::filesystem::path dataRoot;         // "" = defaultSessionsRoot()
   std::optional<std::uint64_t> seed;      // none = the session's (resumed) or the protocol's
+  // What the protocol and its levels are loaded with (the window's screens
+  // give a listing's shorter limits; game/screens/ListingBudget.h).
+  script::SandboxLimits loadLimits;
 };
 
 class ResearchSession {
@@ -53,10 +57,16 @@ class ResearchSession {
   // Writes nothing. Throws SessionError.
   explicit ResearchSession(const SessionRequest& request);
 
-  // Starts (or resumes) the sitting: creates the folder, moves the files of
-  // an interrupted trial aside and (re)writes the manifest with this sitting
-  // (`player`: "mouse" or the bot file). Throws SessionError (Environment).
+  // Starts (or resumes) the sitting: creates the folder, takes its lock
+  // (SessionLock.h: held until this object is destroyed; another session
+  // running in the folder is refused), moves the files of an interrupted
+  // trial aside and (re)writes the manifest with this sitting (`player`:
+  // "mouse" or the bot file). Throws SessionError (Environment), also when
+  // the folder changed between the constructor and now (another session
+  // ran in it meanwhile).
   void begin(const std::string& player);
+  // "" or the note of a stale lock taken over by begin().
+  const std::string& lockNote() const;
 
   const script::ProtocolDef& protocol() const { return protocol_; }
   const SessionManifest& manifest() const { return manifest_; }
@@ -108,6 +118,7 @@ class ResearchSession {
   std::vector<std::pair<std::string, std::string>> interrupted_;
   // Per planned trial: the level file as found now and the protocol's overrides.
   std::vector<std::pair<std::string, script::TrialOverrides>> trials_;
+  std::unique_ptr<SessionLock> lock_;
 };
 
 }  // namespace hemiroll::game

@@ -32,7 +32,10 @@ std::set<std::string> finishedIds(const fs::path& folder) {
   const auto column = std::find(table.columns.begin(), table.columns.end(), "trial");
   if (column == table.columns.end()) fail((folder / "results.csv").string() + ": line 1: no 'trial' column");
   const auto at = static_cast<std::size_t>(column - table.columns.begin());
-  for (const auto& row : table.rows) ids.insert(row[at]);
+  for (const auto& row : table.rows)
+    if (!ids.insert(row[at]).second)
+      fail((folder / "results.csv").string() + " lists trial '" + row[at] +
+           "' twice (two sessions ran in the folder at once?); move the later row away by hand");
   return ids;
 }
 
@@ -42,7 +45,7 @@ bool sidecarComplete(const fs::path& sidecar) {
   try {
     record::TrialMeta meta;
     record::SidecarStatus status;
-    record::Sidecar::fromJson(record::readWholeFile(sidecar), sidecar.string(), meta, status);
+    record::Sidecar::fromJson(record::readWholeFile(sidecar, files::kSidecar), sidecar.string(), meta, status);
     return status.complete;
   } catch (const record::RecordError&) {
     return false;  // unreadable: treated as interrupted, and moved aside

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <tuple>
 
+#include "engine/files/PrintableName.h"
 #include "engine/script/LevelLoader.h"
 #include "game/scores/ScoreStore.h"
 #include "game/screens/FreePlay.h"
@@ -17,16 +18,23 @@
 
 namespace hemiroll::game {
 
-std::vector<LevelEntry> scanLevels(const std::string& dir) {
+std::vector<LevelEntry> scanLevels(const std::string& dir, const ListingBudget& budget) {
   std::vector<LevelEntry> out;
-  std::error_code ec;
-  for (const auto& f : std::filesystem::directory_iterator(dir, ec)) {
-    if (!f.is_regular_file() || f.path().extension() != ".lua") continue;
+  const ListingClock clock(budget);
+  script::LevelLoadOptions options;
+  options.limits = clock.limits();
+  for (const std::filesystem::path& file : luaFilesIn(dir)) {
     LevelEntry e;
-    e.path = f.path().string();
-    e.name = f.path().filename().string();
+    e.path = file.string();
+    e.name = files::printable(file.filename().native());
+    if (clock.spent()) {
+      e.pending = true;
+      e.description = clock.notLoaded();
+      out.push_back(std::move(e));
+      continue;
+    }
     try {
-      const script::LoadedLevel level = script::LevelLoader().loadFile(e.path);
+      const script::LoadedLevel level = script::LevelLoader(options).loadFile(e.path);
       e.name = level.def.name;
       e.description = level.def.description;
       e.difficulty = level.def.difficulty;
@@ -40,7 +48,7 @@ std::vector<LevelEntry> scanLevels(const std::string& dir) {
   // from the easiest; a broken file last (its error is still shown).
   const auto rank = [](const LevelEntry& e) {
     const bool tutorial = std::filesystem::path(e.path).filename().string().rfind("tutorial", 0) == 0;
-    return std::tuple(!e.error.empty(), !tutorial, e.difficulty, e.path);
+    return std::tuple(!e.error.empty(), e.pending, !tutorial, e.difficulty, e.path);
   };
   std::sort(out.begin(), out.end(), [&](const LevelEntry& a, const LevelEntry& b) { return rank(a) < rank(b); });
   return out;
@@ -48,14 +56,14 @@ std::vector<LevelEntry> scanLevels(const std::string& dir) {
 
 int firstToPlay(const std::vector<LevelEntry>& entries) {
   for (std::size_t i = 0; i < entries.size(); ++i)
-    if (entries[i].error.empty() && !entries[i].best.bestTime) return static_cast<int>(i);
+    if (entries[i].error.empty() && !entries[i].pending && !entries[i].best.bestTime) return static_cast<int>(i);
   return 0;
 }
 
 void LevelSelectScreen::enter() {
   entries_ = scanLevels(host_.levelsDir());
   for (LevelEntry& e : entries_)
-    if (e.error.empty()) e.best = host_.scores().best(e.name);
+    if (e.error.empty() && !e.pending) e.best = host_.scores().best(e.name);
   if (!entered_) selected_ = firstToPlay(entries_);  // later visits keep the player's choice
   entered_ = true;
   selected_ = std::clamp(selected_, 0, std::max(0, static_cast<int>(entries_.size()) - 1));
@@ -91,12 +99,15 @@ void LevelSelectScreen::paint() {
     const bool broken = !e.error.empty();
     std::string label = e.name;
     if (broken) label += "  (broken)";
+    if (e.pending) label += "  (not loaded yet)";
     if (ImGui::Selectable(label.c_str(), selected_ == static_cast<int>(i), ImGuiSelectableFlags_AllowDoubleClick)) {
       selected_ = static_cast<int>(i);
       if (ImGui::IsMouseDoubleClicked(0)) play();
     }
     if (broken) {
       ImGui::TextColored(ImVec4(1, 0.5f, 0.4f, 1), "    %s", e.error.c_str());
+    } else if (e.pending) {
+      ImGui::TextDisabled("    %s", e.description.c_str());
     } else {
       ImGui::SameLine(520);
       if (e.best.bestTime)

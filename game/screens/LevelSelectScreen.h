@@ -10,6 +10,7 @@
 
 #include "engine/script/LevelDef.h"
 #include "game/scores/ScoreStore.h"
+#include "game/screens/ListingBudget.h"
 #include "game/screens/Screen.h"
 
 namespace hemiroll::game {
@@ -20,14 +21,19 @@ struct LevelEntry {
   std::string description;
   int difficulty = 0;
   std::string error;        // "" = loads
+  // Not loaded: the listing's time ran out before this file (ListingBudget.h).
+  // Shown with a note; choosing it loads it in full.
+  bool pending = false;
   script::ScoringDef scoring;  // the medal thresholds the card shows
   LevelBest best;
 };
 
 // The levels in `dir` (not its subdirectories: levels/scenarios holds `sim`
 // scenarios): the tutorials first (files named tutorial*, in name order),
-// then the others from the lowest difficulty, broken files last.
-std::vector<LevelEntry> scanLevels(const std::string& dir);
+// then the others from the lowest difficulty, then those the listing's time
+// did not reach, broken files last. Each file is loaded within `budget`
+// (ListingBudget.h), so no file, however hostile, holds the window long.
+std::vector<LevelEntry> scanLevels(const std::string& dir, const ListingBudget& budget = {});
 // The first level that loads and has not been won yet (0 when all have).
 int firstToPlay(const std::vector<LevelEntry>& entries);
 

@@ -6,6 +6,7 @@
 #include <cstring>
 #include <filesystem>
 
+#include "engine/files/PrintableName.h"
 #include "engine/script/ProtocolLoader.h"
 #include "game/app/Settings.h"
 #include "game/research/ResearchSession.h"
@@ -30,16 +31,22 @@ void copyInto(std::array<char, N>& buffer, const std::string& text) {
 
 }  // namespace
 
-std::vector<ProtocolEntry> scanProtocols(const std::string& dir) {
+std::vector<ProtocolEntry> scanProtocols(const std::string& dir, const ListingBudget& budget) {
   std::vector<ProtocolEntry> out;
-  std::error_code ec;
-  for (const auto& f : std::filesystem::directory_iterator(dir, ec)) {
-    if (!f.is_regular_file() || f.path().extension() != ".lua") continue;
+  const ListingClock clock(budget);
+  script::ProtocolLoadOptions options;
+  options.limits = clock.limits();
+  for (const std::filesystem::path& file : luaFilesIn(dir)) {
     ProtocolEntry e;
-    e.path = f.path().string();
-    e.experiment = f.path().filename().string();
+    e.path = file.string();
+    e.experiment = files::printable(file.filename().native());
+    if (clock.spent()) {
+      e.error = clock.notLoaded();
+      out.push_back(std::move(e));
+      continue;
+    }
     try {
-      const script::ProtocolDef def = script::ProtocolLoader().loadFile(e.path);
+      const script::ProtocolDef def = script::ProtocolLoader(options).loadFile(e.path);
       e.experiment = def.experiment;
       e.description = def.description;
       for (const script::BlockDef& b : def.blocks) e.trials += static_cast<int>(b.conditions.size()) * b.repetitions;
@@ -67,6 +74,9 @@ SessionRequest ResearchScreen::requestFor(const std::string& protocol) const {
   request.levelsDir = host_.levelsDir();
   request.participant = host_.settings().participant;
   request.session = host_.settings().sessionId;
+  // Opening it to show its state loads the protocol and its levels on the
+  // window's thread: as a listing does, within half a second each.
+  request.loadLimits = ListingClock().limits();
   return request;
 }
 

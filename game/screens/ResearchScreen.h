@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "game/research/ResearchSession.h"
+#include "game/screens/ListingBudget.h"
 #include "game/screens/Screen.h"
 
 namespace hemiroll::game {
@@ -24,7 +25,8 @@ struct ProtocolEntry {
 };
 
 // The protocols in `dir` (*.lua), sorted by file name.
-std::vector<ProtocolEntry> scanProtocols(const std::string& dir);
+// Each within `budget` (ListingBudget.h); those the time did not reach say so.
+std::vector<ProtocolEntry> scanProtocols(const std::string& dir, const ListingBudget& budget = {});
 
 class ResearchScreen final : public Screen {
  public:

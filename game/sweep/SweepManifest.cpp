@@ -71,7 +71,7 @@ SweepManifest parseManifest(const std::string& text, const std::filesystem::path
 SweepManifest readManifest(const std::filesystem::path& path) {
   std::string text;
   try {
-    text = record::readWholeFile(path);
+    text = record::readWholeFile(path, files::kSweepManifest);
   } catch (const record::RecordError& e) {
     throw SweepError(SweepError::Kind::Environment, e.what());
   }

@@ -4,9 +4,14 @@
 #include <cstdio>
 #include <cstdlib>
 #include <optional>
+#include <string_view>
 #include <system_error>
 #include <vector>
 
+#include "engine/files/CheckedFile.h"
+#include "engine/files/FileReadError.h"
+#include "engine/files/LineReader.h"
+#include "engine/files/PrintableName.h"
 #include "engine/record/DurableFile.h"
 #include "engine/record/RecordError.h"
 #include "engine/record/ResultsFile.h"
@@ -27,52 +32,36 @@ namespace {
 
 [[noreturn]] void environment(const std::string& message) { throw SweepError(SweepError::Kind::Environment, message); }
 
-// A row as this program writes it for `point`: one CSV record with every
-// column, the point first, the text columns from their vocabularies and
-// every other cell empty or a number.
-bool isSweepRowFor(const std::string& line, long long point) {
-  const std::optional<std::vector<std::string>> fields = record::parseCsvLine(line);
-  const std::vector<std::string>& columns = sweepColumns();
-  if (!fields || fields->size() != columns.size() || (*fields)[0] != std::to_string(point)) return false;
-  for (std::size_t i = 1; i < columns.size(); ++i) {
-    const std::string& cell = (*fields)[i];
-    if (columns[i] == "notes" || columns[i] == "event") continue;
-    if (columns[i] == "helix_window") {
-      if (cell != "steady" && cell != "whole") return false;
-      continue;
-    }
-    if (cell.empty()) continue;
-    char* end = nullptr;
-    std::strtod(cell.c_str(), &end);
-    if (end != cell.c_str() + cell.size()) return false;
-  }
-  return true;
+// A row as this program writes it for `point` (sweepRowProblem).
+bool isSweepRowFor(std::string_view line, long long point) {
+  const std::optional<std::vector<std::string>> fields = record::parseCsvLine(std::string(line) + "\n");
+  return fields && !fields->empty() && (*fields)[0] == std::to_string(point) && sweepRowProblem(*fields).empty();
 }
 
 // The rows of an interrupted run that can be kept: whole lines after the
-// header, the shard's first points in order. Rows never hold a line break
-// (PointMeasurement::notes), so a cut line is the text after the last '\n'.
+// header, the shard's first points in order, read as a stream through the
+// checked reader. Rows never hold a line break (PointMeasurement::notes),
+// so a cut line is one without its '\n'.
 std::vector<std::string> keptRows(const fs::path& partial, const std::vector<long long>& points) {
   std::error_code ec;
-  if (!fs::exists(partial, ec)) return {};
-  std::string text;
-  try {
-    text = record::readWholeFile(partial);
-  } catch (const record::RecordError& e) {
-    environment(e.what());
-  }
-  text.erase(text.rfind('\n') == std::string::npos ? 0 : text.rfind('\n') + 1);
-  const std::string header = sweepHeader();
-  if (text.compare(0, header.size(), header) != 0) return {};  // another program's columns: start clean
+  if (!fs::exists(partial, ec) && !fs::is_symlink(partial, ec)) return {};
   std::vector<std::string> rows;
-  for (std::size_t at = header.size(); at < text.size() && rows.size() < points.size();) {
-    const std::size_t end = text.find('\n', at);
-    std::string line = text.substr(at, end + 1 - at);
-    // Kept only as this program writes it: a tampered or damaged row would
-    // be copied into a part marked complete and break every later read.
-    if (!isSweepRowFor(line, points[rows.size()])) break;
-    rows.push_back(std::move(line));
-    at = end + 1;
+  try {
+    files::CheckedFile file(partial, files::kSweepTable);
+    files::LineReader lines(file, kMaxSweepLineBytes);
+    std::string_view line;
+    bool complete = false;
+    const std::string header = sweepHeader();
+    if (!lines.next(line, complete) || !complete || std::string(line) + "\n" != header)
+      return {};  // another program's columns: start clean
+    while (rows.size() < points.size() && lines.next(line, complete) && complete) {
+      // Kept only as this program writes it: a tampered or damaged row would
+      // be copied into a part marked complete and break every later read.
+      if (!isSweepRowFor(line, points[rows.size()])) break;
+      rows.push_back(std::string(line) + "\n");
+    }
+  } catch (const files::FileReadError& e) {
+    environment(e.what());
   }
   return rows;
 }
@@ -104,7 +93,7 @@ SweepPartReport runSweepPart(const SweepPartRequest& r) {
 
   SweepManifest m;
   m.program = r.program;
-  m.specFile = r.specFile;
+  m.specFile = files::printable(r.specFile);  // text in JSON: \xNN for bytes that are not UTF-8
   m.description = r.def.description;
   m.specHash = specHash(r.def);
   m.specJson = specJson(r.def);
@@ -129,8 +118,7 @@ SweepPartReport runSweepPart(const SweepPartRequest& r) {
       report.alreadyComplete = true;
       report.resumed = report.points;
       report.stopped = stoppedRows(report.csv);
-      fs::remove(partial, ec);
-      return report;
+          return report;
     }
     resume = !old.complete;
   }
@@ -169,7 +157,7 @@ SweepPartReport runSweepPart(const SweepPartRequest& r) {
     if (!out.close()) environment(out.path().string() + ": " + out.error());
     report.computed = report.points - report.resumed;
     progress.finish(report.points);
-    record::writeFileAtomically(report.csv, record::readWholeFile(partial));
+    record::moveFileDurably(partial, report.csv);
   } catch (const record::RecordError& e) {
     environment(e.what());
   }
@@ -177,7 +165,6 @@ SweepPartReport runSweepPart(const SweepPartRequest& r) {
   m.complete = true;
   m.wallSeconds = report.wallSeconds;
   writeManifest(report.manifest, m);
-  fs::remove(partial, ec);
   report.stopped = stoppedRows(report.csv);
   return report;
 }

@@ -1,5 +1,9 @@
 #include "game/sweep/SweepTable.h"
 
+#include "engine/files/FileKinds.h"
+
+#include <cmath>
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -112,20 +116,46 @@ std::size_t sweepColumn(std::string_view name) {
   return static_cast<std::size_t>(at - c.begin());
 }
 
+std::string sweepRowProblem(const std::vector<std::string>& fields) {
+  const std::vector<std::string>& columns = sweepColumns();
+  if (fields.size() != columns.size())
+    return std::to_string(fields.size()) + " fields, a sweep row has " + std::to_string(columns.size());
+  for (std::size_t i = 0; i < columns.size(); ++i) {
+    const std::string& cell = fields[i];
+    if (columns[i] == "notes" || columns[i] == "event") continue;
+    if (columns[i] == "helix_window") {
+      if (cell != "steady" && cell != "whole") return "column helix_window: '" + cell + "' is neither steady nor whole";
+      continue;
+    }
+    if (cell.empty() && i > 0) continue;
+    double value = 0.0;
+    if (!record::parseDouble(cell, value) || !std::isfinite(value))
+      return "column " + columns[i] + ": '" + cell.substr(0, 40) + "' is not a finite number (the CSV never holds NaN)";
+  }
+  return "";
+}
+
 std::vector<std::vector<std::string>> readSweepRows(const std::filesystem::path& csv) {
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(csv, ec))
-    throw SweepError(SweepError::Kind::BadInput, csv.string() + " is missing");
-  record::ResultsTable table;
+  if (!std::filesystem::exists(csv, ec)) throw SweepError(SweepError::Kind::BadInput, csv.string() + " is missing");
+  std::vector<std::vector<std::string>> rows;
+  std::vector<std::string> columns;
   try {
-    table = record::ResultsFile(csv).read();
+    record::ResultsFile(csv, files::kSweepTable).forEachRow(columns, [&](const std::vector<std::string>& fields, int line) {
+      if (columns != sweepColumns())
+        throw SweepError(SweepError::Kind::BadInput,
+                         csv.string() + ": its columns are not this program's sweep columns (another version?)");
+      if (const std::string problem = sweepRowProblem(fields); !problem.empty())
+        throw SweepError(SweepError::Kind::BadInput, csv.string() + ": line " + std::to_string(line) + ": " + problem);
+      rows.push_back(fields);
+    });
   } catch (const record::RecordError& e) {
     throw SweepError(SweepError::Kind::BadInput, e.what());
   }
-  if (table.columns != sweepColumns())
+  if (columns != sweepColumns())
     throw SweepError(SweepError::Kind::BadInput,
                      csv.string() + ": its columns are not this program's sweep columns (another version?)");
-  return std::move(table.rows);
+  return rows;
 }
 
 }  // namespace hemiroll::game

@@ -17,6 +17,9 @@
 namespace hemiroll::game {
 
 const std::vector<std::string>& sweepColumns();
+// A row is about 1.5 kB (numbers and a sentence of notes); a line longer
+// than this is not one this program wrote.
+inline constexpr std::size_t kMaxSweepLineBytes = 64 * 1024;
 // The header line, with its '\n'.
 std::string sweepHeader();
 // The point's row, with its '\n' (RFC 4180 quoting where a field needs it).
@@ -26,9 +29,17 @@ std::string sweepRow(const SweepPoint& point, const PointMeasurement& m);
 // name that is not one.
 std::size_t sweepColumn(std::string_view name);
 
+// "" when `fields` is a row as this program writes it: every column, the
+// text columns from their vocabularies, every other cell empty or a finite
+// number (a NaN or an infinity edited in is refused: the CSV never holds
+// one). Otherwise one sentence naming the column and the cell.
+std::string sweepRowProblem(const std::vector<std::string>& fields);
+
 // A sweep CSV's rows (fields as text, header checked against
-// sweepColumns()). Throws SweepError naming the file: environment when it
-// cannot be read, bad input when it is not this program's sweep CSV.
+// sweepColumns(), every row checked by sweepRowProblem as it is read; the
+// file through the checked reader, files::kSweepTable). Throws SweepError
+// naming the file and line: environment when it cannot be read, bad input
+// when it is not this program's sweep CSV.
 std::vector<std::vector<std::string>> readSweepRows(const std::filesystem::path& csv);
 
 }  // namespace hemiroll::game

@@ -1,8 +1,8 @@
 #include "game/trial/GhostFile.h"
 
 #include <cmath>
-#include <fstream>
 
+#include "engine/record/CsvRowFormat.h"
 #include "engine/record/DurableFile.h"
 #include "engine/record/FileNames.h"
 #include "engine/record/RecordError.h"
@@ -42,9 +42,15 @@ std::string keepAsGhost(const std::filesystem::path& replay, const std::filesyst
 }
 
 std::optional<double> ghostTime(const std::filesystem::path& ghost) {
-  std::ifstream in(ghost.string() + ".time");
+  std::string text;
+  try {
+    text = record::readWholeFile(ghost.string() + ".time", files::kGhostTime);
+  } catch (const record::RecordError&) {
+    return std::nullopt;  // missing, not a regular file, or too large: no time shown
+  }
+  while (!text.empty() && (text.back() == '\n' || text.back() == '\r' || text.back() == ' ')) text.pop_back();
   double time = 0.0;
-  if (!(in >> time) || !std::isfinite(time) || time < 0.0) return std::nullopt;
+  if (!record::parseDouble(text, time) || !std::isfinite(time) || time < 0.0) return std::nullopt;
   return time;
 }
 

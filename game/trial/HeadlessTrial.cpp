@@ -41,6 +41,11 @@ TrialResult HeadlessTrial::run() {
   engage.kind = haptics::ServoCommandKind::Engage;
   loop.post(engage);
 
+  // Headless: each script's time in Lua, and the autopilot's planning, are
+  // bounded by multiples of the simulated time (TrialTiming.h).
+  const script::TrialTiming timing;
+  bot_.setTiming(timing);
+  level_.script->setTiming(timing);
   try {
     bot_.init(botLevelInfo(def, def.source), settings_.seed);
   } catch (const script::ScriptError& e) {
@@ -53,6 +58,7 @@ TrialResult HeadlessTrial::run() {
     AutopilotBotOptions guiding;
     guiding.holdsProxy = false;  // the bot's hand holds the proxy; the plan only guides it
     guide = std::make_unique<AutopilotBot>(guiding);
+    guide->setTiming(timing);
     try {
       guide->init(botLevelInfo(def, def.source), settings_.seed);
     } catch (const script::ScriptError& e) {

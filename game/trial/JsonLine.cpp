@@ -1,5 +1,7 @@
 #include "game/trial/JsonLine.h"
 
+#include "engine/files/PrintableName.h"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -7,7 +9,11 @@
 
 namespace hemiroll::game {
 
-std::string JsonLine::quote(std::string_view text) {
+// Text that is not valid UTF-8 (a file name of other bytes) would make the
+// line invalid JSON: each such byte is written as \xNN first (the one rule,
+// engine/files/PrintableName.h), its backslash then escaped as JSON's.
+std::string JsonLine::quote(std::string_view raw) {
+  const std::string text = files::validUtf8(raw);
   std::string out = "\"";
   for (const char c : text) {
     switch (c) {

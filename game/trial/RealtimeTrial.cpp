@@ -39,6 +39,11 @@ TrialResult runRealtimeTrial(script::LoadedLevel& level, script::BotPolicy& bot,
   haptics::ServoSnapshot snapshot;
   snapshot.state = loopDef.initialState;
   script::BotObservation obs;
+  // Every call a tick makes (the bot's act, the level's on_update) has the
+  // bot's period as its CPU deadline.
+  const script::TrialTiming timing{.realtime = true, .tickSeconds = 1.0 / kRealtimeBotRate};
+  bot.setTiming(timing);
+  level.script->setTiming(timing);
   // Guidance: the autopilot answers the same observations (HeadlessTrial.h),
   // planning on its own thread as a real-time autopilot bot does.
   std::unique_ptr<AutopilotBot> guide;
@@ -47,6 +52,7 @@ TrialResult runRealtimeTrial(script::LoadedLevel& level, script::BotPolicy& bot,
     options.plannerThread = true;
     options.holdsProxy = false;  // the bot's hand holds the proxy; the plan only guides it
     guide = std::make_unique<AutopilotBot>(options);
+    guide->setTiming(timing);
     try {
       guide->init(botLevelInfo(def, def.source), static_cast<std::int64_t>(settings.seed));
     } catch (const script::ScriptError& e) {

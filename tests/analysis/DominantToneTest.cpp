@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <numbers>
@@ -9,6 +10,7 @@
 #include <vector>
 
 #include "engine/analysis/DominantTone.h"
+#include "engine/analysis/Periodogram.h"
 
 namespace hemiroll::analysis {
 namespace {
@@ -116,6 +118,68 @@ TEST(DominantTone, ConstantOrTooShortSignalsHaveNoTone) {
   EXPECT_FALSE(dominantTone(still, 0.01, {}).found);
   const std::vector<std::complex<double>> few(4, {0.0, 1.0});
   EXPECT_FALSE(dominantTone(few, 0.01, {}).found);
+}
+
+// The FFT's grid (issue 33) is the direct sum's: the same frequencies,
+// powers equal to round-off. An FFT of N points errs by about eps log2(N)
+// of the largest power; 1e-10 of it leaves four orders of room.
+TEST(DominantTone, TheFftGridIsTheDirectSumsGrid) {
+  std::mt19937 rng(33);
+  std::normal_distribution<double> noise(0.0, 1.0);
+  std::vector<std::complex<double>> z;
+  for (int i = 0; i < 1500; ++i) z.emplace_back(noise(rng) + std::cos(0.3 * i), noise(rng));
+  const double dt = 0.01, start = 0.137;
+  const std::size_t fftLength = 4 * z.size(), count = 400;
+  const double df = 1.0 / (static_cast<double>(fftLength) * dt);
+  for (const int sign : {+1, -1}) {
+    std::vector<double> fft(count), direct(count), freqs(count);
+    for (std::size_t k = 0; k < count; ++k) freqs[k] = sign * (start + static_cast<double>(k) * df);
+    fftGridPowers(z, dt, fftLength, start, sign, count, fft);
+    periodogramPowers(z, freqs, dt, direct);
+    const double top = *std::max_element(direct.begin(), direct.end());
+    for (std::size_t k = 0; k < count; ++k) EXPECT_NEAR(fft[k], direct[k], 1e-10 * top) << sign << " " << k;
+  }
+}
+
+// The tone found through the FFT is the direct sum's to the bit: the peak's
+// neighbourhood, the refinement and the amplitude are computed by the direct
+// sum, and near-ties are settled by it. Pure and noisy, complex and real,
+// short and block-averaged signals, tones on and between grid frequencies.
+TEST(DominantTone, TheFftFindsTheDirectSumsToneBitForBit) {
+  std::mt19937 rng(34);
+  std::normal_distribution<double> noise(0.0, 1.0);
+  struct Case {
+    std::size_t n;
+    double dt, f, noise;
+    ToneSearch search;
+  };
+  const Case cases[] = {
+      {3500, 0.01, -0.45, 0.0, {.minFrequency = 3.0 / 35.0, .maxFrequency = 5.0}},
+      {3500, 0.01, 1.2345, 0.5, {.minFrequency = 0.1, .maxFrequency = 5.0}},
+      {2000, 0.01, 0.8, 2.0, {.minFrequency = 0.0, .maxFrequency = 5.0}},  // f = 0 once on the grid
+      {2000, 0.01, 2.05, 0.3, {.minFrequency = 0.2, .maxFrequency = 5.0, .bothSigns = false}},
+      {120000, 0.001, 0.95, 0.2, {.minFrequency = 0.2, .maxFrequency = 5.0, .bothSigns = false}},  // block-averaged
+      {5000, 0.01, 0.5, 50.0, {.minFrequency = 0.1, .maxFrequency = 5.0}},  // mostly noise: many near maxima
+  };
+  for (const Case& c : cases) {
+    std::vector<std::complex<double>> z;
+    for (std::size_t i = 0; i < c.n; ++i) {
+      const double t = static_cast<double>(i) * c.dt;
+      const double im = c.search.bothSigns ? std::sin(2.0 * std::numbers::pi * c.f * t) + c.noise * noise(rng) : 0.0;
+      z.emplace_back(std::cos(2.0 * std::numbers::pi * c.f * t) + c.noise * noise(rng) + 0.01 * t, im);
+    }
+    ToneSearch direct = c.search;
+    direct.directSum = true;
+    const Tone byFft = dominantTone(z, c.dt, c.search), bySum = dominantTone(z, c.dt, direct);
+    EXPECT_EQ(byFft.found, bySum.found) << c.f;
+    EXPECT_EQ(byFft.frequency, bySum.frequency) << c.f;
+    EXPECT_EQ(byFft.amplitude, bySum.amplitude) << c.f;
+    EXPECT_EQ(byFft.share, bySum.share) << c.f;
+    EXPECT_EQ(byFft.samplesUsed, bySum.samplesUsed) << c.f;
+    if (c.noise < 1.0) {
+      EXPECT_NEAR(byFft.frequency, c.f, 0.01) << "the tone itself is found";
+    }
+  }
 }
 
 }  // namespace

@@ -229,6 +229,28 @@ TEST(Autopilot, GivesUpAtOnceOnAnUnreachableTarget) {
   EXPECT_LT(p.time, 0.01);
 }
 
+// Planning has a budget per trial tied to the simulated time (issue 33):
+// spent, the autopilot gives up with the reason, as on a task it can neither
+// win nor refuse, instead of planning for as long as the level lasts. Here
+// the budget is made tiny (50 s rolled out, nothing per simulated second) so
+// that the paper's task, which needs about 1300 s, meets it. The budget is
+// counted in simulated seconds, not CPU, so the give-up is the same on any
+// machine: two runs end at the same tick with the same words.
+TEST(Autopilot, GivesUpWhenPlanningHasSpentItsBudget) {
+  AutopilotDef def;
+  def.planningRolloutSeconds = 50.0;
+  def.planningRolloutSecondsPerSimulatedSecond = 0.0;
+  const Played p = play(paperGoal(), physics::ForceDrivenState::Zero(), 20.0, -1.0, physics::Vec2::Zero(), def);
+  EXPECT_FALSE(p.success);
+  EXPECT_NE(p.failure.find("planning has rolled out"), std::string::npos) << p.failure;
+  EXPECT_NE(p.failure.find("more than its budget (1 x (50 s + 0 s per simulated second))"), std::string::npos)
+      << p.failure;
+  EXPECT_LT(p.time, 20.0);  // gave up, did not play on to the limit
+  const Played again = play(paperGoal(), physics::ForceDrivenState::Zero(), 20.0, -1.0, physics::Vec2::Zero(), def);
+  EXPECT_EQ(again.time, p.time);
+  EXPECT_EQ(again.failure, p.failure);
+}
+
 TEST(Autopilot, SameInputsSameProxyBitForBit) {
   const Played a = play(paperGoal(), physics::ForceDrivenState::Zero(), 60.0);
   const Played b = play(paperGoal(), physics::ForceDrivenState::Zero(), 60.0);

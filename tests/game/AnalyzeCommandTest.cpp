@@ -105,6 +105,24 @@ TEST(AnalyzeCommand, ASimCsvAndAnInterruptedRecordingTogether) {
   EXPECT_THAT(r.out, HasSubstr("interrupted"));
 }
 
+// A folder and a trial whose names are not UTF-8 (issue 33) failed with
+// json.exception.type_error.316 and wrote nothing. Such a name is written
+// with \xNN for each byte that breaks UTF-8, in every output.
+TEST(AnalyzeCommand, NamesThatAreNotUtf8AreEscapedNotFatal) {
+  const TempDirectory dir;
+  const std::filesystem::path folder = dir.path() / "session\xFF";
+  std::filesystem::create_directories(folder);
+  test::writeRoseRecording(folder, "trial", 500, true);  // the recorder names its files safely; renamed after
+  for (const char* ext : {".csv", ".json"})
+    std::filesystem::rename(folder / (std::string("trial") + ext), folder / (std::string("trial\xFE") + ext));
+  const ProcessResult r = hemiroll({"analyze", folder.string(), "--out", (dir.path() / "out").string()});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const nlohmann::json features =
+      nlohmann::json::parse(TempDirectory::read(dir.path() / "out" / "trial\\xFE.analysis.json"));
+  EXPECT_EQ(features.at("source").get<std::string>(), folder.parent_path().string() + "/session\\xFF/trial\\xFE.csv");
+  EXPECT_THAT(TempDirectory::read(dir.path() / "out" / "analysis.csv"), HasSubstr("trial\\xFE,"));
+}
+
 TEST(AnalyzeCommand, WithoutOutOnlyTheTableIsPrinted) {
   const TempDirectory dir;
   const fs::path csv = writeRoseRecording(dir.path(), "t", 2000, true);

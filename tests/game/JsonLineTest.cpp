@@ -28,6 +28,14 @@ TEST(JsonLine, EscapesQuotesBackslashesAndControlCharacters) {
   EXPECT_EQ(JsonLine::quote("r\xC3\xA9sum\xC3\xA9"), "\"r\xC3\xA9sum\xC3\xA9\"") << "UTF-8 passes through";
 }
 
+// Bytes that are not UTF-8 would make the line invalid JSON: each is
+// written as \xNN (its backslash escaped as JSON's), the rest as it is.
+TEST(JsonLine, BytesThatAreNotUtf8AreWrittenAsHex) {
+  EXPECT_EQ(JsonLine::quote("lev\xFF.lua"), "\"lev\\\\xFF.lua\"");
+  EXPECT_EQ(JsonLine::quote("\xC3\xA4 ok"), "\"\xC3\xA4 ok\"");  // valid UTF-8 kept
+  EXPECT_EQ(JsonLine::quote("a\nb"), "\"a\\nb\"");             // controls as JSON writes them
+}
+
 TEST(JsonLine, NonFiniteNumbersAreNull) {
   EXPECT_EQ(JsonLine::number(std::numeric_limits<double>::quiet_NaN()), "null");
   EXPECT_EQ(JsonLine::number(std::numeric_limits<double>::infinity()), "null");

@@ -93,7 +93,7 @@ TEST_F(ResearchSessionTest, OpeningWritesNothingBeginWritesTheManifest) {
   EXPECT_FALSE(s.resumed());
   EXPECT_EQ(s.trialCount(), 3);
   s.begin("bot.lua");
-  const SessionManifest m = SessionManifest::fromJson(record::readWholeFile(folder() / kManifestFile), "m");
+  const SessionManifest m = SessionManifest::fromJson(hemiroll::test::TempDirectory::read(folder() / kManifestFile), "m");
   EXPECT_EQ(m.experiment, "unit");
   EXPECT_EQ(m.participant, "p01");
   EXPECT_EQ(m.seed, 5u);
@@ -189,7 +189,7 @@ TEST_F(ResearchSessionTest, AStopBreakEndsTheSittingAndTheNextSittingStartsAfter
   finishOne(again);
   finishOne(again);
   EXPECT_TRUE(again.complete());
-  const SessionManifest m = SessionManifest::fromJson(record::readWholeFile(folder() / kManifestFile), "m");
+  const SessionManifest m = SessionManifest::fromJson(hemiroll::test::TempDirectory::read(folder() / kManifestFile), "m");
   ASSERT_EQ(m.sittings.size(), 2u);
   EXPECT_EQ(m.sittings[1].firstTrial, 2);
   EXPECT_EQ(m.sittings[1].player, "mouse");

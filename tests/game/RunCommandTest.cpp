@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "engine/record/RecordingReader.h"
 #include "tests/support/ProcessRunner.h"
 #include "tests/support/TempDirectory.h"
@@ -95,6 +97,18 @@ TEST(RunCommand, SuccessPrintsOneJsonLineAndExitsZero) {
   EXPECT_THAT(r.out, HasSubstr(R"("score":10,"medal":"gold")"));
   // The hold counts from the first tick inside (t = 1 ms): met at 0.201 s.
   EXPECT_THAT(r.out, HasSubstr(R"("ticks":201,)"));
+}
+
+// A file name that is not UTF-8 (issue 33) went into the JSON line as raw
+// bytes: not valid JSON. The one rule: each such byte as \xNN.
+TEST(RunCommand, AFileNameThatIsNotUtf8IsEscapedInTheJsonLine) {
+  const TempDirectory dir;
+  const std::string level = dir.write("quick\xFF.lua", kQuickLevel);
+  const ProcessResult r = hemiroll({"run", level, "--bot", dir.write("hold\xC3.lua", kHoldBot)});
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  const nlohmann::json line = nlohmann::json::parse(onlyLine(r.out));  // throws on invalid UTF-8
+  EXPECT_EQ(line.at("level").get<std::string>(), dir.path().string() + "/quick\\xFF.lua");
+  EXPECT_EQ(line.at("bot").get<std::string>(), dir.path().string() + "/hold\\xC3.lua");
 }
 
 TEST(RunCommand, FailureExitsOneAndNamesTheReason) {

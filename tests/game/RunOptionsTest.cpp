@@ -53,8 +53,21 @@ TEST(RunOptions, BadFlagsSayWhat) {
       {{"l.lua", "--bot", "b", "--record="}, "flag --record needs a directory"},
       {{"l.lua", "--bot", "b", "--fast"}, "unknown flag '--fast'"},
       {{"l.lua", "m.lua", "--bot", "b"}, "unexpected argument 'm.lua'"},
+      // A protocol's bounds for guidance (issue 33): 0 to 1e6 N/m, 0 to 1e4 N s/m.
+      {{"l.lua", "--bot", "b", "--guidance-stiffness", "1e300"}, "--guidance-stiffness needs a stiffness from 0 to 1e6 N/m"},
+      {{"l.lua", "--bot", "b", "--guidance-damping", "-1"}, "--guidance-damping needs a damping from 0 to 1e4 N s/m"},
   };
   for (const Case& c : cases) EXPECT_THAT(parseRunOptions(c.args).error, HasSubstr(c.expected)) << c.expected;
+}
+
+// One rule for guidance gains (issue 33): 0 is a damping a protocol may
+// give, and so may the flag.
+TEST(RunOptions, AZeroGuidanceDampingIsAllowedAsInAProtocol) {
+  const RunOptionsResult r = parseRunOptions({"l.lua", "--bot", "b", "--guidance", "autopilot", "--guidance-damping", "0",
+                                              "--guidance-stiffness", "0"});
+  EXPECT_EQ(r.error, "");
+  EXPECT_EQ(r.options.guidanceDamping, 0.0);
+  EXPECT_EQ(r.options.guidanceStiffness, 0.0);
 }
 
 TEST(RunOptions, HelpNeedsNothingElse) {

@@ -69,9 +69,11 @@ TEST(SessionCommandTest, ABotPlaysEveryTrialIntoTheSessionFolder) {
       session({kDemo, "--participant", "p01", "--data", dir.path().string(), "--bot", kSolver});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const fs::path folder = dir.path() / "tutorial-demo" / "p01" / "1";
-  EXPECT_EQ(filesIn(folder), (std::set<std::string>{"session.json", "results.csv", "trial-001.csv", "trial-001.json",
-                                                    "trial-002.csv", "trial-002.json", "trial-003.csv",
-                                                    "trial-003.json"}));
+  // session.lock: the folder's lock, released (empty) at the end.
+  EXPECT_EQ(filesIn(folder), (std::set<std::string>{"session.json", "session.lock", "results.csv", "trial-001.csv",
+                                                    "trial-001.json", "trial-002.csv", "trial-002.json",
+                                                    "trial-003.csv", "trial-003.json"}));
+  EXPECT_EQ(TempDirectory::read(folder / "session.lock"), "");
   // One line per trial as it finished, then the summary.
   const std::vector<std::string> out = lines(r.out);
   ASSERT_EQ(out.size(), 4u) << r.out;
@@ -87,7 +89,7 @@ TEST(SessionCommandTest, ABotPlaysEveryTrialIntoTheSessionFolder) {
   // The manifest, and each trial in the recorder's formats, complete, of
   // the planned level with the planned coupling.
   const game::SessionManifest m =
-      game::SessionManifest::fromJson(record::readWholeFile(folder / "session.json"), "session.json");
+      game::SessionManifest::fromJson(hemiroll::test::TempDirectory::read(folder / "session.json"), "session.json");
   EXPECT_EQ(m.protocolFile, kDemo);
   EXPECT_EQ(m.seed, 7u);  // the protocol's
   ASSERT_EQ(m.plan.size(), 3u);
@@ -106,17 +108,17 @@ TEST(SessionCommandTest, ABotPlaysEveryTrialIntoTheSessionFolder) {
   TempDirectory other;
   ASSERT_EQ(session({kDemo, "--participant", "p01", "--data", other.path().string(), "--bot", kSolver}).exitCode, 0);
   for (const char* file : {"trial-001.csv", "trial-002.csv", "trial-003.csv"})
-    EXPECT_EQ(record::readWholeFile(folder / file),
-              record::readWholeFile(other.path() / "tutorial-demo" / "p01" / "1" / file))
+    EXPECT_EQ(hemiroll::test::TempDirectory::read(folder / file),
+              hemiroll::test::TempDirectory::read(other.path() / "tutorial-demo" / "p01" / "1" / file))
         << file;
 
   // Run again: nothing left to do, nothing touched.
-  const std::string results = record::readWholeFile(folder / "results.csv");
+  const std::string results = hemiroll::test::TempDirectory::read(folder / "results.csv");
   const ProcessResult again =
       session({kDemo, "--participant", "p01", "--data", dir.path().string(), "--bot", kSolver});
   EXPECT_EQ(again.exitCode, 0) << again.err;
   EXPECT_THAT(again.out, HasSubstr("\"done\":3,\"kept\":3,\"ran\":0"));
-  EXPECT_EQ(record::readWholeFile(folder / "results.csv"), results);
+  EXPECT_EQ(hemiroll::test::TempDirectory::read(folder / "results.csv"), results);
 }
 
 // The shipped guidance study, end to end with the passive hand: the plan's
@@ -251,6 +253,13 @@ TEST(SessionCommandTest, KilledInTheSecondTrialResumesWithTheFirstUntouched) {
     const auto giveUp = std::chrono::steady_clock::now() + std::chrono::seconds(30);
     while (!fs::exists(folder / "trial-002.json") && child.running() && std::chrono::steady_clock::now() < giveUp)
       std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    // A second session on the same folder while the first runs (issue 33):
+    // refused at once, naming the holder, the folder untouched.
+    const ProcessResult second = runProcess(kBinary, args);
+    EXPECT_EQ(second.exitCode, 1) << second.err;
+    EXPECT_THAT(second.err, HasSubstr(" is in use by another session (process "));
+    EXPECT_THAT(second.err, HasSubstr("hemiroll session of crash as "));
+    EXPECT_FALSE(fs::exists(folder / "trial-002.csv.aborted-1"));
     // Into the trial: rows are being written (the recorder flushes every 0.5 s).
     std::this_thread::sleep_for(std::chrono::milliseconds(600));
     ASSERT_TRUE(child.running()) << "the session ended before the kill: " << child.err();
@@ -262,24 +271,27 @@ TEST(SessionCommandTest, KilledInTheSecondTrialResumesWithTheFirstUntouched) {
   lenient.allowTruncatedTail = true;
   EXPECT_FALSE(record::RecordingReader::load(folder / "trial-002.csv", lenient).status.complete);
   EXPECT_EQ(trialColumn(folder / "results.csv"), std::vector<std::string>{"trial-001"});
-  const std::string firstCsv = record::readWholeFile(folder / "trial-001.csv");
-  const std::string firstSidecar = record::readWholeFile(folder / "trial-001.json");
-  const std::string cutCsv = record::readWholeFile(folder / "trial-002.csv");
+  const std::string firstCsv = hemiroll::test::TempDirectory::read(folder / "trial-001.csv");
+  const std::string firstSidecar = hemiroll::test::TempDirectory::read(folder / "trial-001.json");
+  const std::string cutCsv = hemiroll::test::TempDirectory::read(folder / "trial-002.csv");
 
   const ProcessResult r = runProcess(kBinary, args);
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_THAT(r.err, HasSubstr("trial-002 was interrupted before it finished; its files were moved aside"));
+  // The killed session's lock went with it; its record is reported, taken over.
+  EXPECT_THAT(r.err, HasSubstr("took over the session folder's lock from a session that ended without releasing it "
+                               "(process "));
   EXPECT_THAT(r.out, HasSubstr("\"trials\":3,\"done\":3,\"kept\":1,\"ran\":2"));
   // The finished trial: the same bytes. The interrupted one: moved aside whole.
-  EXPECT_EQ(record::readWholeFile(folder / "trial-001.csv"), firstCsv);
-  EXPECT_EQ(record::readWholeFile(folder / "trial-001.json"), firstSidecar);
-  EXPECT_EQ(record::readWholeFile(folder / "trial-002.csv.aborted-1"), cutCsv);
+  EXPECT_EQ(hemiroll::test::TempDirectory::read(folder / "trial-001.csv"), firstCsv);
+  EXPECT_EQ(hemiroll::test::TempDirectory::read(folder / "trial-001.json"), firstSidecar);
+  EXPECT_EQ(hemiroll::test::TempDirectory::read(folder / "trial-002.csv.aborted-1"), cutCsv);
   EXPECT_TRUE(fs::exists(folder / "trial-002.json.aborted-1"));
   EXPECT_TRUE(record::RecordingReader::load(folder / "trial-002.csv").status.complete);
   // Exactly one results row per planned trial.
   EXPECT_EQ(trialColumn(folder / "results.csv"), (std::vector<std::string>{"trial-001", "trial-002", "trial-003"}));
   const game::SessionManifest m =
-      game::SessionManifest::fromJson(record::readWholeFile(folder / "session.json"), "session.json");
+      game::SessionManifest::fromJson(hemiroll::test::TempDirectory::read(folder / "session.json"), "session.json");
   ASSERT_EQ(m.aborted.size(), 1u);
   EXPECT_EQ(m.aborted[0].trialId, "trial-002");
   EXPECT_EQ(m.aborted[0].moved.size(), 2u);

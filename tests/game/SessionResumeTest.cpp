@@ -95,7 +95,7 @@ TEST_F(SessionResumeTest, MovingAsideRenamesEveryFileWithTheFirstFreeNumber) {
   finished(1);
   interrupted(2);
   record::writeFileAtomically(dir_.path() / "trial-002.replay", "log");
-  const std::string csv = record::readWholeFile(dir_.path() / "trial-002.csv");
+  const std::string csv = hemiroll::test::TempDirectory::read(dir_.path() / "trial-002.csv");
   const ManifestAborted first = moveTrialAside(dir_.path(), "trial-002", "interrupted before it finished");
   EXPECT_EQ(first.trialId, "trial-002");
   EXPECT_EQ(first.reason, "interrupted before it finished");
@@ -104,7 +104,7 @@ TEST_F(SessionResumeTest, MovingAsideRenamesEveryFileWithTheFirstFreeNumber) {
                                                                   {"trial-002.replay", "trial-002.replay.aborted-1"}};
   EXPECT_EQ(first.moved, moved);
   EXPECT_FALSE(fs::exists(dir_.path() / "trial-002.csv"));
-  EXPECT_EQ(record::readWholeFile(dir_.path() / "trial-002.csv.aborted-1"), csv);  // moved, not rewritten
+  EXPECT_EQ(hemiroll::test::TempDirectory::read(dir_.path() / "trial-002.csv.aborted-1"), csv);  // moved, not rewritten
   // Interrupted again: the next number; the first set stays.
   interrupted(2);
   const ManifestAborted second = moveTrialAside(dir_.path(), "trial-002", "interrupted before it finished");

@@ -82,7 +82,7 @@ const BadScenario kBadScenarios[] = {
     {"runtime.lua", "local t = nil\nreturn t.params", "runtime.lua:2: attempt to index a nil value"},
     {"raised.lua", "\nerror('scenario says no')", "raised.lua:2: scenario says no"},
     {"endless.lua", "local i = 0\nwhile true do i = i + 1 end", "endless.lua:2: instruction quota"},
-    {"hungry.lua", "local s = string.rep('x', 1 << 30)\nreturn {}", "hungry.lua:2: memory limit"},
+    {"hungry.lua", "local s = string.rep('x', 1 << 26)\nreturn {}", "hungry.lua:2: memory limit"},
     {"escape_io.lua", "return io.open('/etc/passwd')", "escape_io.lua:1:"},
     {"escape_os.lua", "os.execute('true')", "escape_os.lua:1:"},
     {"not_table.lua", "return 42", "not_table.lua:1: the scenario must return a table, got number"},

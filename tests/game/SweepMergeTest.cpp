@@ -100,6 +100,19 @@ TEST_F(SweepMergeTest, RefusesAPartWhoseRowsDisagreeWithItsManifest) {
   EXPECT_THAT(refusal({at("parts")}), HasSubstr("part-1-of-3.csv holds 2 rows; its manifest says 3"));
 }
 
+// A cell edited to NaN (issue 33) is refused as its row is read, naming the
+// file, line and column: the merged CSV never says complete with a NaN.
+TEST_F(SweepMergeTest, RefusesARowWithANonFiniteNumber) {
+  std::string csv = TempDirectory::read(at("parts") / "part-1-of-3.csv");
+  const std::size_t row = csv.find('\n') + 1;  // the first row, its second cell
+  const std::size_t second = csv.find(',', row) + 1;
+  csv = csv.substr(0, second) + "nan" + csv.substr(csv.find(',', second));
+  dir_.write("parts/part-1-of-3.csv", csv);
+  const std::string error = refusal({at("parts")});
+  EXPECT_THAT(error, HasSubstr("part-1-of-3.csv: line 2: column "));
+  EXPECT_THAT(error, HasSubstr(": 'nan' is not a finite number (the CSV never holds NaN)"));
+}
+
 // points_total is not covered by the spec hash. A part forged to be
 // consistent with itself (shard 0 of 1e14, its 9 rows renumbered to match)
 // once made the merge allocate 8e14 entries and abort (issue 19); it is

@@ -78,7 +78,7 @@ TEST(TrialLoader, TheSameFileTwiceGetsTwoIds) {
 TEST(TrialLoader, BrokenInputIsNamedWithFileAndLine) {
   const test::TempDirectory dir;
   const fs::path csv = test::writeRoseRecording(dir.path(), "bad", 50, true);
-  std::string text = test::TempDirectory::read(csv);
+  std::string text = hemiroll::test::TempDirectory::read(csv);
   // Line 5 (the fourth row): its x_p (column 3) becomes text.
   std::size_t at = 0;
   for (int line = 1; line < 5; ++line) at = text.find('\n', at) + 1;

@@ -89,6 +89,31 @@ TEST(GuidanceTest, ValidationNamesTheField) {
   EXPECT_FALSE(parseGuidanceKind("Autopilot", kind));
 }
 
+// Every gain has one set of bounds wherever it is given (issue 33): a
+// stiffness of 1e300 made forces of 1e297 N that the safety layer could only
+// clip, for a whole trial and with no fault recorded; it is refused. On a
+// device, the spring must be one it renders stably, as a coupling must.
+TEST(GuidanceTest, GainsHaveTheBoundsOfEveryGainAndTheDevicesLimit) {
+  GuidanceDef g = guide(GuidanceKind::Autopilot, 1e300, 0.0);
+  EXPECT_EQ(validateGuidance(g), "stiffness: must be a number from 0 to 1e6 [N/m]");
+  g.stiffness = 300.0;
+  g.damping = 1e5;
+  EXPECT_EQ(validateGuidance(g), "damping: must be a number from 0 to 1e4 [N s/m]");
+  g.damping = 0.0;  // zero is a damping (one rule with protocols and flags)
+  EXPECT_EQ(validateGuidance(g), "");
+  g.maxError = 5.0;
+  EXPECT_EQ(validateGuidance(g), "max_error: must be a positive number of at most 1 [m]");
+  g.maxError = 0.02;
+  DeviceSpec device;
+  device.name = "test";
+  device.maxStiffness = 1000.0;
+  EXPECT_EQ(guidanceProblem(g, device), "");
+  g.stiffness = 5000.0;
+  EXPECT_EQ(guidanceProblem(g, device), "stiffness: 5000 N/m is more than the 1000 N/m the test device renders stably");
+  device.hasForceOutput = false;  // a mouse renders nothing: nothing to make unstable
+  EXPECT_EQ(guidanceProblem(g, device), "");
+}
+
 // The safety property: whatever the guidance's gains and wherever its plan,
 // the rendered force (coupling + guidance, after the safety layer) stays
 // within the device's limit, and the loop reports the guidance it added.
@@ -98,7 +123,9 @@ TEST(GuidanceTest, CouplingAndGuidanceTogetherNeverExceedTheDeviceLimit) {
   std::uniform_real_distribution<double> unit(-1.0, 1.0), positive(0.0, 1.0);
   double worst = 0.0, largestGuidance = 0.0;
   for (int trial = 0; trial < 200; ++trial) {
-    const double k = 5000.0 * positive(random), c = 100.0 * positive(random);
+    // Up to the device's maxStiffness (1000 N/m: a stiffer spring is refused, as a
+    // stiffer coupling is), with errors up to 5 cm: far past the force limit.
+    const double k = 1000.0 * positive(random), c = 100.0 * positive(random);
     ServoLoopDef def;
     def.requestRealtime = false;
     def.safety.engagement.rampTime = 0.02;

@@ -1,5 +1,7 @@
 #include "engine/haptics/UdpBridgeDevice.h"
 
+#include "engine/haptics/ForceSafety.h"
+
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -240,6 +242,32 @@ TEST(UdpBridgeDeviceTest, ADeviceFaultFromTheClientIsAnError) {
   ASSERT_TRUE(client.receiveForce(f));
   EXPECT_EQ(f.status, udp::BridgeStatus::DeviceFault);
   EXPECT_EQ(f.force, (std::array<double, 3>{0.0, 0.0, 0.0}));
+}
+
+// A safety stop of hemiroll's (a watchdog of the servo loop: here the
+// velocity guard) was sent as status 0, so a client could not tell it from a
+// commanded zero force (issue 33). It is status SafetyStop, naming the fault;
+// once cleared, the status is ok again.
+TEST(UdpBridgeDeviceTest, ASafetyStopIsToldWithItsFault) {
+  UdpBridgeDevice d(testDef());
+  ASSERT_TRUE(d.open());
+  FakeClient client(d.port());
+  client.sendState(state(1));
+  ASSERT_TRUE(waitReceived(d, 1));
+  d.read(0.0);
+  d.safetyState(static_cast<std::uint8_t>(SafetyFault::VelocityGuard));
+  d.sendForce(Vec3::Zero());
+  udp::ForceMessage f;
+  ASSERT_TRUE(client.receiveForce(f));
+  EXPECT_EQ(f.status, udp::BridgeStatus::SafetyStop);
+  EXPECT_EQ(f.safetyFault, static_cast<std::uint8_t>(SafetyFault::VelocityGuard));
+  EXPECT_STREQ(safetyFaultName(static_cast<SafetyFault>(f.safetyFault)), safetyFaultName(SafetyFault::VelocityGuard));
+  d.safetyState(0);
+  d.sendForce(Vec3(0.5, 0.0, 0.0));
+  ASSERT_TRUE(client.receiveForce(f));
+  EXPECT_EQ(f.status, udp::BridgeStatus::Ok);
+  EXPECT_EQ(f.safetyFault, 0);
+  EXPECT_EQ(f.force[0], 0.5);
 }
 
 TEST(UdpBridgeDeviceTest, CloseTellsTheClient) {

@@ -17,7 +17,7 @@ namespace {
 
 std::vector<std::vector<std::string>> tsv(const std::filesystem::path& path) {
   std::vector<std::vector<std::string>> rows;
-  std::istringstream in(readWholeFile(path));
+  std::istringstream in(hemiroll::test::TempDirectory::read(path));
   for (std::string line; std::getline(in, line);) {
     std::vector<std::string> fields;
     std::istringstream l(line);
@@ -78,7 +78,7 @@ TEST(BidsExportTest, ChannelsDescribeEveryColumnOfTheMotionFile) {
   }
   EXPECT_EQ(channels.size() - 1, CsvRowFormat::columns().size() - 1);
 
-  const auto j = nlohmann::json::parse(readWholeFile(f.motionJson));
+  const auto j = nlohmann::json::parse(hemiroll::test::TempDirectory::read(f.motionJson));
   for (const char* key : {"TaskName", "SamplingFrequency", "TrackingSystemName"}) EXPECT_TRUE(j.contains(key)) << key;
   EXPECT_DOUBLE_EQ(j["SamplingFrequency"].get<double>(), 100.0);
   EXPECT_EQ(j["HapticGuidance"]["Kind"], "autopilot");

@@ -20,7 +20,7 @@ TEST(DurableFileTest, AtomicReplacementWritesTheWholeContent) {
   const fs::path file = dir.path() / "map.svg";
   writeFileAtomically(file, "first");
   writeFileAtomically(file, "second");
-  EXPECT_EQ(readWholeFile(file), "second");
+  EXPECT_EQ(hemiroll::test::TempDirectory::read(file), "second");
   EXPECT_FALSE(fs::exists(dir.path() / "map.svg.tmp"));
 }
 
@@ -40,7 +40,7 @@ TEST(DurableFileTest, AppendsLandWhole) {
   const fs::path file = dir.path() / "results.csv";
   appendDurably(file, "a,b\n");
   appendDurably(file, "1,2\n");
-  EXPECT_EQ(readWholeFile(file), "a,b\n1,2\n");
+  EXPECT_EQ(hemiroll::test::TempDirectory::read(file), "a,b\n1,2\n");
 }
 
 }  // namespace

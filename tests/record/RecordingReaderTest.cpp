@@ -49,7 +49,7 @@ TEST(RecordingReaderTest, RoundTripIsBitIdentical) {
 TEST(RecordingReaderTest, ACorruptLineIsNamedByFileLineAndColumn) {
   hemiroll::test::TempDirectory dir;
   const Written w = writeTrial(dir, 20);
-  std::string text = readWholeFile(w.csv);
+  std::string text = hemiroll::test::TempDirectory::read(w.csv);
   // Line 5 (the 4th row): its first field becomes garbage.
   std::size_t pos = 0;
   for (int k = 0; k < 4; ++k) pos = text.find('\n', pos) + 1;
@@ -61,7 +61,7 @@ TEST(RecordingReaderTest, ACorruptLineIsNamedByFileLineAndColumn) {
 TEST(RecordingReaderTest, ATruncatedTailIsAnErrorUnlessAllowed) {
   hemiroll::test::TempDirectory dir;
   const Written w = writeTrial(dir, 20, false);  // an interrupted trial: sidecar incomplete
-  const std::string text = readWholeFile(w.csv);
+  const std::string text = hemiroll::test::TempDirectory::read(w.csv);
   dir.write("r.csv", text.substr(0, text.size() - 7));  // cut inside the last row
   EXPECT_NE(errorOf(w.csv).find("line 21: incomplete last line"), std::string::npos) << errorOf(w.csv);
   ReadOptions lenient;
@@ -76,7 +76,7 @@ TEST(RecordingReaderTest, ATruncatedTailIsAnErrorUnlessAllowed) {
 TEST(RecordingReaderTest, BrokenFilesGiveClearErrors) {
   hemiroll::test::TempDirectory dir;
   const Written w = writeTrial(dir, 5);
-  const std::string text = readWholeFile(w.csv);
+  const std::string text = hemiroll::test::TempDirectory::read(w.csv);
   // A finished trial missing a row disagrees with its sidecar.
   dir.write("r.csv", text.substr(0, text.rfind('\n', text.size() - 2) + 1));
   EXPECT_NE(errorOf(w.csv).find("holds 4 rows, its sidecar says 5"), std::string::npos) << errorOf(w.csv);
@@ -85,7 +85,7 @@ TEST(RecordingReaderTest, BrokenFilesGiveClearErrors) {
   dir.write("r.csv", "a,b,c\n");
   EXPECT_NE(errorOf(w.csv).find("line 1: the header"), std::string::npos) << errorOf(w.csv);
   std::filesystem::remove(dir.path() / "r.json");
-  EXPECT_NE(errorOf(w.csv).find("r.json: cannot open"), std::string::npos) << errorOf(w.csv);
+  EXPECT_NE(errorOf(w.csv).find("r.json: no such file"), std::string::npos) << errorOf(w.csv);
   EXPECT_NE(errorOf(dir.path() / "none.csv").find("none.json"), std::string::npos);
 }
 

@@ -30,7 +30,7 @@ TEST(RecordingSessionTest, TrialsAndResultsCarryTheSessionIds) {
   const Recording r = RecordingReader::load(session.dir() / "trial-002.csv");
   EXPECT_EQ(r.meta.participant, "p07");
   EXPECT_EQ(r.meta.session, "s3");
-  const std::string results = readWholeFile(session.resultsPath());
+  const std::string results = hemiroll::test::TempDirectory::read(session.resultsPath());
   EXPECT_EQ(std::count(results.begin(), results.end(), '\n'), 3);
   EXPECT_NE(results.find("p07,s3,trial-002,slalom,,fail,,1.5,2,4,0,"), std::string::npos) << results;
   EXPECT_EQ(session.replayPath("trial-002"), session.dir() / "trial-002.replay");

@@ -56,7 +56,7 @@ TEST(ResultsFileTest, HeaderOnceThenOneRowPerTrial) {
   const ResultsFile file(dir.path() / "results.csv");
   file.append(result("t1", "goal"));
   file.append(result("t2", "said \"done\", then left"));
-  const std::string text = readWholeFile(file.path());
+  const std::string text = hemiroll::test::TempDirectory::read(file.path());
   EXPECT_EQ(text,
             "participant,session,trial,level,level_hash,outcome,reason,duration_s,score,rows,dropped_rows,"
             "start_time,condition\n"
@@ -77,7 +77,7 @@ TEST(ResultsFileTest, OtherColumnsThanTheFilesAreRefused) {
     EXPECT_NE(std::string(e.what()).find("results.csv: line 1: the header differs"), std::string::npos) << e.what();
   }
   // The file is unchanged: one header, one row.
-  const std::string text = readWholeFile(file.path());
+  const std::string text = hemiroll::test::TempDirectory::read(file.path());
   EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 2);
 }
 
@@ -113,7 +113,7 @@ TEST(ResultsFileTest, ReadRefusesACutRowAndAWrongFieldCountNamingTheLine) {
   const auto path = dir.path() / "results.csv";
   const ResultsFile file(path);
   file.append(result("t1", "goal"));
-  const std::string good = readWholeFile(path);
+  const std::string good = hemiroll::test::TempDirectory::read(path);
   dir.write("results.csv", good + "p01,1,t2,tut");
   try {
     file.read();

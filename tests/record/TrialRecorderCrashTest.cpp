@@ -62,7 +62,7 @@ TEST(TrialRecorderCrashTest, KillNineLosesAtMostTheLastSecondAndNoFinishedTrial)
   EXPECT_TRUE(finished.status.complete);
   EXPECT_EQ(finished.rows.size(), 300u);
   EXPECT_EQ(finished.status.end->outcome, "success");
-  const std::string results = readWholeFile(dir.path() / "results.csv");
+  const std::string results = hemiroll::test::TempDirectory::read(dir.path() / "results.csv");
   EXPECT_EQ(std::count(results.begin(), results.end(), '\n'), 2) << results;
 
   // The interrupted trial: parses up to its last complete line, says it is

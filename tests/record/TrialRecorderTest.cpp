@@ -15,10 +15,10 @@
 namespace hemiroll::record {
 namespace {
 
-nlohmann::json sidecarOf(const TrialRecorder& rec) { return nlohmann::json::parse(readWholeFile(rec.sidecarPath())); }
+nlohmann::json sidecarOf(const TrialRecorder& rec) { return nlohmann::json::parse(hemiroll::test::TempDirectory::read(rec.sidecarPath())); }
 
 std::size_t lines(const std::filesystem::path& path) {
-  const std::string text = readWholeFile(path);
+  const std::string text = hemiroll::test::TempDirectory::read(path);
   return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
 }
 
@@ -126,14 +126,14 @@ TEST(TrialRecorderTest, NeverOverwritesAnEarlierTrial) {
     first.push(test::randomRows(1, 6)[0]);
     first.finish(TrialEnd{});
   }
-  const std::string before = readWholeFile(dir.path() / "t6.csv");
+  const std::string before = hemiroll::test::TempDirectory::read(dir.path() / "t6.csv");
   try {
     TrialRecorder second(dir.path(), meta);
     FAIL() << "no error";
   } catch (const RecordError& e) {
     EXPECT_NE(std::string(e.what()).find("t6.json: already exists"), std::string::npos) << e.what();
   }
-  EXPECT_EQ(readWholeFile(dir.path() / "t6.csv"), before);
+  EXPECT_EQ(hemiroll::test::TempDirectory::read(dir.path() / "t6.csv"), before);
   EXPECT_TRUE(RecordingReader::load(dir.path() / "t6.csv").status.complete);
   // A CSV alone (its sidecar lost) is not overwritten either.
   std::filesystem::remove(dir.path() / "t6.json");
@@ -143,7 +143,7 @@ TEST(TrialRecorderTest, NeverOverwritesAnEarlierTrial) {
   } catch (const RecordError& e) {
     EXPECT_NE(std::string(e.what()).find("t6.csv: already exists"), std::string::npos) << e.what();
   }
-  EXPECT_EQ(readWholeFile(dir.path() / "t6.csv"), before);
+  EXPECT_EQ(hemiroll::test::TempDirectory::read(dir.path() / "t6.csv"), before);
 }
 
 TEST(TrialRecorderTest, IsMovable) {

@@ -140,7 +140,7 @@ TEST(ResearchScreenTest, AProtocolRunsFromTheResearchScreenIntoItsSessionFolder)
 
   // The folder.
   const fs::path folder = dir.path() / "sessions" / "window-test" / "tester" / "1";
-  const SessionManifest m = SessionManifest::fromJson(record::readWholeFile(folder / "session.json"), "session.json");
+  const SessionManifest m = SessionManifest::fromJson(hemiroll::test::TempDirectory::read(folder / "session.json"), "session.json");
   ASSERT_EQ(m.plan.size(), 2u);
   ASSERT_EQ(m.sittings.size(), 1u);
   EXPECT_EQ(m.sittings[0].player, "mouse");

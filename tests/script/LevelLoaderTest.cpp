@@ -294,7 +294,7 @@ TEST(LevelLoader, MissingFileOrDirectoryIsAClearError) {
     LevelLoader().loadFile(dir.path().string());
     FAIL() << "expected a ScriptError";
   } catch (const ScriptError& e) {
-    EXPECT_EQ(std::string(e.what()), dir.path().string() + ":1: not a regular file");
+    EXPECT_EQ(std::string(e.what()), dir.path().string() + ":1: not a regular file (a directory)");
   }
 }
 

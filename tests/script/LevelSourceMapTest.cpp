@@ -4,6 +4,10 @@
 #include "engine/script/LevelSourceMap.h"
 
 #include <gtest/gtest.h>
+#include <malloc.h>
+
+#include <algorithm>
+#include <string>
 
 namespace hemiroll::script {
 namespace {
@@ -71,6 +75,38 @@ TEST(LevelSourceMap, NeverFailsOnText) {
     const LevelSourceMap map(text);
     EXPECT_GE(map.lineOf("a.b.c"), 1) << text;
   }
+}
+
+// A "\z" escape skips the white space after it, line breaks included; the
+// map counted none of those lines and every later field was a line short,
+// then line 1 (issue 33). A backslash before a line break is a line too.
+TEST(LevelSourceMap, EscapedLineBreaksInStringsAreCounted) {
+  const LevelSourceMap map(
+      "return {\n"
+      "  description = \"one \\z\n"
+      "      two \\z\n\n"
+      "      three\",\n"                // the string ends on line 5
+      "  note = 'a\\\nb',\n"            // a backslash-newline: lines 6-7
+      "  time_limit = 1e16,\n"          // line 8
+      "}\n");
+  EXPECT_EQ(map.lineOf("description"), 2);
+  EXPECT_EQ(map.lineOf("note"), 6);
+  EXPECT_EQ(map.lineOf("time_limit"), 8);
+}
+
+// The map's cost is bounded whatever the text (issue 33: a 4 MiB protocol of
+// a million tables cost 275 MB while its error's line was looked up): it
+// stops reading and building at its caps and answers a line all the same.
+TEST(LevelSourceMap, APathologicalFileCostsBoundedMemory) {
+  std::string text = "local t = {";
+  for (int i = 0; i < 1'300'000; ++i) text += "{},";
+  text += "}\nreturn { name = 1 }\n";  // 3.9 MB
+  const struct mallinfo2 before = mallinfo2();
+  const LevelSourceMap map(text);
+  const struct mallinfo2 after = mallinfo2();
+  EXPECT_GE(map.lineOf("name"), 1);
+  // What the map keeps: at most 100 000 tables and 500 000 fields.
+  EXPECT_LT(after.uordblks - std::min(after.uordblks, before.uordblks), std::size_t{64} << 20);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include "engine/haptics/ForceSafety.h"
 #include "engine/haptics/RealtimeThread.h"
 #include "engine/haptics/ServoClock.h"
 #include "engine/haptics/SimulatedHandDevice.h"
@@ -62,6 +63,10 @@ class ForceInbox {
       lastAnswer_ = m.answers;
     }
     if (m.status == udp::BridgeStatus::Stale) ++s.staleForces;
+    if (m.status == udp::BridgeStatus::SafetyStop) {
+      ++s.safetyStops;
+      s.lastSafetyFault = m.safetyFault;
+    }
     if (m.status == udp::BridgeStatus::Closing) s.bridgeClosed = true;
     const Vec3 f(m.force[0], m.force[1], m.force[2]);
     s.maxForce = std::max(s.maxForce, f.norm());
@@ -156,6 +161,9 @@ void printSummary(const ClientSummary& s, std::ostream& out) {
       << "forces_lost " << s.forcesLost << "\n"
       << "states_answered " << s.statesAnswered << "\n"
       << "stale_forces " << s.staleForces << "\n"
+      << "safety_stops " << s.safetyStops << (s.safetyStops > 0 ? std::string(" (last: ") +
+             haptics::safetyFaultName(static_cast<haptics::SafetyFault>(s.lastSafetyFault)) + ")" : std::string())
+      << "\n"
       << "realtime " << (s.realtime ? 1 : 0) << "\n"
       << "bridge_closed " << (s.bridgeClosed ? 1 : 0) << "\n"
       << "max_force_N " << s.maxForce << "\n"

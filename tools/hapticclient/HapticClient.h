@@ -24,6 +24,8 @@ struct ClientSummary {
   std::uint64_t forcesLost = 0;       // gaps in the bridge's sequence
   std::uint64_t statesAnswered = 0;   // distinct states that got a force
   std::uint64_t staleForces = 0;      // forces with status Stale
+  std::uint64_t safetyStops = 0;      // forces with status SafetyStop
+  int lastSafetyFault = 0;            // the last one's fault (haptics::SafetyFault as a number)
   bool bridgeClosed = false;          // a Closing status arrived
   double maxForce = 0.0;              // largest |F| received [N]
   // Round trip: from sending a state to receiving the first force computed

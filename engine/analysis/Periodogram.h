@@ -1,0 +1,28 @@
+#pragma once
+// A periodogram on a regular grid of frequencies by one FFT (FFTW3), for
+// DominantTone: |sum_m z_m exp(-2 pi i f m dt)|^2 at f = sign (start + k df),
+// k = 0 .. count-1, where df = 1 / (fftLength dt). The direct sum costs
+// (grid frequencies) x (samples), both growing with the recording: an hour
+// at 100 Hz took 13 s and a day would take hours; the FFT costs
+// fftLength log(fftLength).
+//
+// How: the samples are shifted by `start` (multiplied by exp(-+2 pi i start
+// m dt)), zero-padded to fftLength and transformed, forwards for positive
+// frequencies and backwards for negative ones; bin k is then the grid's k-th
+// frequency. Its round-off differs from the direct sum's in the last bits
+// (DominantTone uses it to find the peak and the direct sum for the values it
+// reports). FFTW's planner is not thread-safe: plans are made under one lock
+// (sweeps run tone searches on many threads); executing them is.
+
+#include <complex>
+#include <cstddef>
+#include <span>
+
+namespace hemiroll::analysis {
+
+// `out` gets `count` powers; requires samples.size() <= fftLength and
+// count <= fftLength.
+void fftGridPowers(std::span<const std::complex<double>> samples, double dt, std::size_t fftLength, double start,
+                   int sign, std::size_t count, std::span<double> out);
+
+}  // namespace hemiroll::analysis

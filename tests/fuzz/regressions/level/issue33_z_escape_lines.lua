@@ -1,0 +1,7 @@
+return {
+  name = "one \z
+     two",
+  description = "a\
+ b",
+  task = { time_limit = 1e16 },
+}
