@@ -10,10 +10,10 @@ local pi = math.pi
 
 return {
   name = "04 Stop on target",
-  description = "Bring the hemisphere 1 cm to the right, onto the target ring, and stop there " ..
+  description = "Bring the hemisphere 1 cm to the right, onto the green target square, and stop there " ..
     "nearly upright and at rest, mass point near the middle. A straight push only leans it: lean " ..
     "it towards the target, then stir the mass point round (tutorial 3) so that the contact point " ..
-    "spirals over, then calm everything down. Stuck? H shows the autopilot's next move. The " ..
+    "spirals over, then calm everything down. Stuck? {key:hint} shows the autopilot's next move. The " ..
     "paper's task, gentler.",
   author = "hemiroll",
   difficulty = 3,

@@ -29,7 +29,7 @@ return {
     "paper's players did: lean the hemisphere towards the target, then stir the mass point round " ..
     "(tutorial 3), steadily. Each turn carries the contact point one loop along: the dashed blue " ..
     "path on the floor shows three loops, with a gate after each. At the target, bring the mass " ..
-    "point to the middle and let everything settle. Stuck? H shows the autopilot's next move.",
+    "point to the middle and let everything settle. Stuck? {key:hint} shows the autopilot's next move.",
   author = "hemiroll",
   difficulty = 3,
   version = "1",

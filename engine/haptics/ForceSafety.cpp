@@ -40,7 +40,10 @@ SafetyFault ForceSafety::watchdogs(const SafetyInputs& in) {
   // teleporting hand, and its strokes may arrive faster in a flick.
   if (maxForce_ > 0.0 && !(path <= def_.maxDeviceSpeed * kJumpWindow * in.dt)) return SafetyFault::PositionJump;
   if (in.modelHalted) return SafetyFault::ModelHalted;
-  if (!(in.tickLateness <= def_.maxTickLateness)) return SafetyFault::LoopOverrun;
+  // A late tick is a hazard only where a force is rendered: the device held
+  // the last force that long. A mouse has none (issue 27: a single 23 ms
+  // tick stopped mouse play); its loop catches up or slows its clock.
+  if (maxForce_ > 0.0 && !(in.tickLateness <= def_.maxTickLateness)) return SafetyFault::LoopOverrun;
   if (!(in.injectedEnergy <= def_.maxInjectedEnergy)) return SafetyFault::EnergyInjection;
   if (!(in.angularSpeed <= def_.maxAngularSpeed)) return SafetyFault::RunawayRotation;
   if (!in.desiredForce.allFinite()) return SafetyFault::NonFiniteForce;

@@ -48,4 +48,25 @@ std::optional<double> ghostTime(const std::filesystem::path& ghost) {
   return time;
 }
 
+std::string keepGhostOwner(const std::filesystem::path& ghost, GhostOwner owner) {
+  try {
+    record::writeFileAtomically(ghost.string() + ".by", owner == GhostOwner::Autopilot ? "autopilot\n" : "player\n");
+  } catch (const record::RecordError& e) {
+    return std::string("whose ghost it is could not be kept: ") + e.what();
+  }
+  return "";
+}
+
+GhostOwner ghostOwner(const std::filesystem::path& ghost) {
+  // A few bytes at most; anything that is not a small regular file is not read.
+  const std::filesystem::path by = ghost.string() + ".by";
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(by, ec) || std::filesystem::file_size(by, ec) > 64 || ec)
+    return GhostOwner::Player;
+  std::ifstream in(by);
+  std::string word;
+  in >> word;
+  return word == "autopilot" ? GhostOwner::Autopilot : GhostOwner::Player;
+}
+
 }  // namespace hemiroll::game
