@@ -33,7 +33,10 @@ SafetyFault ForceSafety::watchdogs(const SafetyInputs& in) {
   const double path = recentPath(in);
   if (in.deviceError) return SafetyFault::DeviceError;
   staleTime_ = in.deviceFresh ? 0.0 : staleTime_ + in.dt;
-  if (staleTime_ > def_.staleLimit) return SafetyFault::StaleDevice;
+  // Stale data holds a stale force only where one is rendered (issue 27:
+  // the autopilot's hand on a mouse, left behind by a 60 ms stall its loop
+  // caught up, stopped the game for data that held nothing).
+  if (maxForce_ > 0.0 && staleTime_ > def_.staleLimit) return SafetyFault::StaleDevice;
   // Negated comparisons so that NaN observations trip the guard.
   if (!(in.deviceVelocity.norm() <= def_.maxDeviceSpeed)) return SafetyFault::VelocityGuard;
   // Only where a force is rendered: a mouse has none to send into a

@@ -3,9 +3,10 @@
 // tick in this order:
 //   1. watchdogs: device error, stale device data for longer than staleLimit,
 //      a servo tick that started more than maxTickLateness after its deadline
-//      (on a device that renders force: a late tick held a stale force that
-//      long; a device without force output, the mouse, has none to hold, and
-//      the loop rides the late tick out instead, ServoLoop.h),
+//      (these two on a device that renders force: stale data or a late tick
+//      held a stale force that long; a device without force output, the
+//      mouse, has none to hold, and the loop rides the late tick out instead,
+//      ServoLoop.h),
 //      device speed above maxDeviceSpeed (velocity guard), energy injected
 //      into the model beyond maxInjectedEnergy, angular speed beyond
 //      maxAngularSpeed, a non-finite force. Any of them latches a fault: the

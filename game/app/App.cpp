@@ -65,6 +65,7 @@ double App::targetFps() const {
   const double cap = std::clamp(settings_.frameCap, kFrameCapFps[0], kFrameCapFps[1]);
   switch (screens_.top() ? screens_.top()->frameNeed() : FrameNeed::Menu) {
     case FrameNeed::Play: return cap;
+    case FrameNeed::Watch: return std::min(cap, kWatchFps);
     case FrameNeed::Menu: return std::min(cap, kMenuFps);
     case FrameNeed::Still: return std::min(cap, kStillFps);
   }

@@ -4,7 +4,8 @@
 //   events (window + injected) -> ImGui / top screen -> update -> paint -> swap
 // One frame never waits for the servo loop (the play screen reads snapshots),
 // and frames are paced (FramePacer) to what the top screen needs: the
-// player's frame cap in play, kMenuFps in menus, kStillFps while paused, so
+// player's frame cap in play, kWatchFps watching the autopilot, kMenuFps in
+// menus, kStillFps while paused, so
 // that the servo thread keeps a core on a 2-core machine (issue 27). The
 // interface grows with the window's height (uiScale()).
 //
@@ -46,6 +47,7 @@ struct AppDef {
 
 class App final : public ScreenHost {
  public:
+  static constexpr double kWatchFps = 30.0;  // the autopilot playing: its planner needs the CPU
   static constexpr double kMenuFps = 30.0;   // hover and clicks need no more
   static constexpr double kStillFps = 15.0;  // a paused scene does not move
   // Opens the window (throws platform::PlatformError, e.g. no display) and

@@ -79,6 +79,17 @@ int autoplay(App& app, const PlayOptions& o) {
       std::snprintf(line, sizeof line, "%s at %.2f s (%.*s)", script::trialOutcomeName(judge.outcome()),
                     judge.finishTime(), static_cast<int>(judge.reason().size()), judge.reason().data());
       outcome = line;
+    } else {
+      // Where an unfinished trial stands: how far from the target, how many in.
+      const HudReadout& r = play->hud().readout();
+      char line[160];
+      if (r.distanceToTarget >= 0.0)
+        std::snprintf(line, sizeof line, "the trial was still running at %.1f s (%.1f mm to the target, %d of %d in their bands)",
+                      r.time, r.distanceToTarget * 1e3, r.componentsInside, r.components);
+      else
+        std::snprintf(line, sizeof line, "the trial was still running at %.1f s (%d of %d in their bands)", r.time,
+                      r.componentsInside, r.components);
+      outcome = line;
     }
     if (session.snapshot().engagement == haptics::Engagement::Engaged) engagement = "engaged";
     timing = session.timing();

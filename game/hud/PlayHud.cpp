@@ -46,6 +46,11 @@ int decimalsFor(double toleranceInUnit) { return toleranceInUnit < 1.0 ? 2 : 1; 
 
 // Enough decimals that the axis's two ends differ: one for a range of a unit
 // or more, up to three for a thousandth.
+// What rounds to zero at `decimals` is shown as +0.0, not -0.0.
+double PlayHud::shownAs(double value, int decimals) {
+  return std::abs(value) < 0.5 * std::pow(10.0, -decimals) ? 0.0 : value;
+}
+
 int PlayHud::axisDecimals(double range) {
   if (!(range > 0.0) || !std::isfinite(range)) return 1;
   return std::clamp(static_cast<int>(std::ceil(-std::log10(range))) + 1, 1, 3);
@@ -435,12 +440,12 @@ WindowRect PlayHud::drawPlots() {
       hi += 1.0f;
     }
     const int d = axisDecimals(hi - lo);
-    ImGui::Text("%s [%s]  now %+.*f", u.label, u.unit, d, p.size() ? p.at(p.size() - 1) : 0.0f);
+    ImGui::Text("%s [%s]  now %+.*f", u.label, u.unit, d, shownAs(p.size() ? p.at(p.size() - 1) : 0.0f, d));
     const float scale = uiScale();
     ImGui::BeginGroup();
-    ImGui::TextDisabled("%+7.*f", d, hi);
+    ImGui::TextDisabled("%+7.*f", d, shownAs(hi, d));
     ImGui::Dummy(ImVec2(0, 18 * scale));
-    ImGui::TextDisabled("%+7.*f", d, lo);
+    ImGui::TextDisabled("%+7.*f", d, shownAs(lo, d));
     ImGui::EndGroup();
     ImGui::SameLine();
     ImGui::PlotLines(i == 0 ? "##plot0" : i == 1 ? "##plot1" : "##plot2", &ScrollingPlot::getter,

@@ -131,6 +131,8 @@ class PlayHud {
   static std::string holdBreakLine(const script::HoldBreak& b);
   // Decimals for a plot axis spanning `range` (in its unit) so its ends differ.
   static int axisDecimals(double range);
+  // `value` as drawn with `decimals`: 0 when it rounds to zero (no "-0.0").
+  static double shownAs(double value, int decimals);
 
  private:
   void drawStatus();

@@ -97,6 +97,14 @@ void PlayScreen::enter() {
 
 void PlayScreen::leave() { host_.window().capturePointer(false); }
 
+// Watching the autopilot, nobody steers: fewer frames leave its planner the
+// CPU (measured, docs/WINDOW.md: the paper's task watched with one core
+// busy won 1 of 5 at 60 fps, 5 of 5 at 30).
+FrameNeed PlayScreen::frameNeed() const {
+  if (!session_) return FrameNeed::Menu;
+  return session_->autopilotHolds() ? FrameNeed::Watch : FrameNeed::Play;
+}
+
 void PlayScreen::pause() {
   if (!session_ || session_->finished()) return;
   session_->pause();

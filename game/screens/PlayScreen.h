@@ -45,7 +45,7 @@ class PlayScreen final : public Screen {
   PlayScreen(ScreenHost& host, std::string levelPath);
   ~PlayScreen() override;
   const char* name() const override { return "play"; }
-  FrameNeed frameNeed() const override { return session_ ? FrameNeed::Play : FrameNeed::Menu; }
+  FrameNeed frameNeed() const override;
   void enter() override;
   void leave() override;
   void input(const platform::InputEvent& e) override;

@@ -17,9 +17,11 @@ class ScreenHost;
 
 // How many frames a screen needs (the App paces the main thread to it, so
 // that the servo thread keeps a core): Play draws a moving scene at the
-// player's frame cap; Menu is a menu's hover and clicks (a few dozen a
-// second); Still is a picture that does not change (paused).
-enum class FrameNeed { Play, Menu, Still };
+// player's frame cap; Watch is a scene the player only looks at (the
+// autopilot playing: its planner needs the CPU more than the eye needs 60
+// frames); Menu is a menu's hover and clicks (a few dozen a second); Still
+// is a picture that does not change (paused).
+enum class FrameNeed { Play, Watch, Menu, Still };
 
 class Screen {
  public:

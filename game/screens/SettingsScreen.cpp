@@ -151,7 +151,8 @@ void SettingsScreen::paint() {
   int cap = s.frameCap;
   if (ImGui::SliderInt("frame cap [fps]", &cap, kFrameCapFps[0], kFrameCapFps[1]))
     s.frameCap = std::clamp(cap, kFrameCapFps[0], kFrameCapFps[1]);
-  wrappedTextDisabled("frames in play at most (menus 30, paused 15): the rest of the CPU goes to the 1 kHz servo loop");
+  wrappedTextDisabled("frames in play at most (watching the autopilot and menus 30, paused 15): the rest of the "
+                      "CPU goes to the 1 kHz servo loop and the autopilot");
   float scale = static_cast<float>(s.uiScale);
   if (ImGui::SliderFloat("interface scale", &scale, static_cast<float>(kUiScale[0]), static_cast<float>(kUiScale[1]),
                          "%.2f"))

@@ -126,6 +126,15 @@ TEST(ForceSafetyTest, ALateTickStopsAForceDeviceNotAMouse) {
   late.tickLateness = std::numeric_limits<double>::quiet_NaN();  // nor does a broken clock on a mouse
   pointer.update(late);
   EXPECT_EQ(pointer.fault(), SafetyFault::None);
+  // Nor stale data (the autopilot's hand on a mouse, behind after a stall),
+  // which a force device stops for.
+  SafetyInputs stale;
+  stale.deviceFresh = false;
+  for (int k = 0; k < 50; ++k) pointer.update(stale);
+  EXPECT_EQ(pointer.fault(), SafetyFault::None);
+  ForceSafety fresh(quickRamp(), DeviceSpec{});
+  for (int k = 0; k < 50; ++k) fresh.update(stale);
+  EXPECT_EQ(fresh.fault(), SafetyFault::StaleDevice);
 }
 
 // A client that teleports 9 cm every tick while reporting zero velocity got

@@ -1,5 +1,6 @@
 // The window on a small machine (issue 27): frames paced to what the top
-// screen needs (the frame cap in play, 30 fps in menus, 15 paused) so that
+// screen needs (the frame cap in play, 30 fps watching the autopilot and in
+// menus, 15 paused) so that
 // the 1 kHz servo thread keeps a core; the shipped levels found from any
 // folder (and, with none, a level select that says so and offers no Play);
 // the results' one-key restart and next level; `hemiroll play --autoplay`
@@ -56,6 +57,15 @@ TEST(AppPacingTest, FramesArePacedToWhatTheTopScreenNeeds) {
   app.settings().frameCap = 1000;  // out of range: clamped to the largest allowed
   EXPECT_EQ(app.targetFps(), static_cast<double>(kFrameCapFps[1]));
   app.settings().frameCap = 60;
+  // Watching the autopilot: nobody steers, its planner gets the CPU.
+  auto* play = dynamic_cast<PlayScreen*>(app.screens().top());
+  ASSERT_NE(play, nullptr);
+  play->watchAutopilot();
+  app.frame();
+  EXPECT_EQ(app.targetFps(), App::kWatchFps);
+  play->session()->takeOver();
+  app.frame();
+  EXPECT_EQ(app.targetFps(), 60.0);
   app.inject(platform::keyDownEvent("Escape"));
   app.frame();
   app.frame();

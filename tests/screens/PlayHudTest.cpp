@@ -147,6 +147,11 @@ TEST(PlayHudTest, PlotAxesGetTheDecimalsThatTellTheirEndsApart) {
   EXPECT_EQ(PlayHud::axisDecimals(1e-9), 3);
   EXPECT_EQ(PlayHud::axisDecimals(0.0), 1);
   EXPECT_EQ(PlayHud::axisDecimals(std::nan("")), 1);
+  // An axis end of -0.01 at one decimal reads +0.0, not -0.0 (seen in play).
+  char label[16];
+  std::snprintf(label, sizeof label, "%+.*f", 1, PlayHud::shownAs(-0.01, 1));
+  EXPECT_STREQ(label, "+0.0");
+  EXPECT_EQ(PlayHud::shownAs(-0.06, 1), -0.06);
 }
 
 // The full table keeps the physics' names, with the value and what it
