@@ -10,7 +10,7 @@
 
 return {
   name = "02 Roll a short distance",
-  description = "Roll the hemisphere 4 mm to the right, onto the target ring on the floor (the " ..
+  description = "Roll the hemisphere 4 mm to the right, onto the green target square on the floor (the " ..
     "green arrow points to it), and keep it still there for 2 s. Move the mass point slowly " ..
     "about 2 cm to the right and wait: the hemisphere leans, rolls until it balances, and " ..
     "stops. Then adjust a little at a time; the HUD says what is still off and by how much.",
@@ -40,6 +40,6 @@ return {
   scene = { contact_trace = true, plots = { "u_a", "x_p" }, record_rate = 100 },
   callbacks = {
     rate = 10,
-    on_start = function(state) hemiroll.message("Roll 4 mm to the right, onto the ring, and stay still", 4) end,
+    on_start = function(state) hemiroll.message("Roll 4 mm to the right, onto the green square, and stay still", 4) end,
   },
 }

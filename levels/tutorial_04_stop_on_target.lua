@@ -10,12 +10,12 @@ local pi = math.pi
 
 return {
   name = "04 Stop on target",
-  description = "Bring the hemisphere 1 cm to the right, onto the target, and stop there nearly " ..
+  description = "Bring the hemisphere 1 cm to the right, onto the green target square, and stop there nearly " ..
     "upright and at rest, mass point near the middle. Leaning only tilts it: to travel, stir " ..
     "(tutorial 3), small quick circles round the contact point, aimed a little off it. The " ..
     "hemisphere spirals away at about 45 degrees from your aim, to the side it turns, so aim that " ..
     "much the other way, and less the nearer you are. Near the target let the circles die away " ..
-    "over a second or two, then hold still over the spot and nudge gently. Stuck? H shows the " ..
+    "over a second or two, then hold still over the spot and nudge gently. Stuck? {key:hint} shows the " ..
     "autopilot's hint. The paper's task, gentler.",
   author = "hemiroll",
   difficulty = 3,

@@ -29,7 +29,7 @@ return {
     "players did: stir small quick circles round the contact point (tutorial 3), aimed a little " ..
     "off it (tutorial 4). The contact point spirals along, a loop a turn: the dashed blue path on " ..
     "the floor shows three loops, with a gate after each. At the target let the circles die away, " ..
-    "then hold still over the spot. Stuck? H shows the autopilot's hint.",
+    "then hold still over the spot. Stuck? {key:hint} shows the autopilot's hint.",
   author = "hemiroll",
   difficulty = 3,
   version = "1",

@@ -18,7 +18,7 @@ return {
     "the tutorials'. Bring it 2 cm to the right, onto the target, and stop there nearly upright " ..
     "and at rest. Stir small quick circles round the contact point, aimed a little off it " ..
     "(tutorials 3 to 5); here a small stir goes a long way. Near the target let the circles die " ..
-    "away and hold still over the spot. Stuck? H shows the autopilot's hint. Next: the paper's task.",
+    "away and hold still over the spot. Stuck? {key:hint} shows the autopilot's hint. Next: the paper's task.",
   author = "hemiroll",
   difficulty = 4,
   version = "1",

@@ -36,6 +36,8 @@ inline constexpr FileKind kSweepTable{"sweep table", 2 * kGiB};
 inline constexpr FileKind kSweepManifest{"sweep manifest", 16 * kMiB};
 // A ghost's time (.hrr.time): one number.
 inline constexpr FileKind kGhostTime{"ghost time", 4 * kKiB};
+// Whose a ghost is (.hrr.by): one word.
+inline constexpr FileKind kGhostOwner{"ghost owner", 64};
 // A replay log (.hrr, also a ghost): 64 bytes a tick; a day at 1 kHz is
 // 5.5 GB. Its header is checked before the body is read.
 inline constexpr FileKind kReplayLog{"replay log", 8 * kGiB};

@@ -33,14 +33,20 @@ SafetyFault ForceSafety::watchdogs(const SafetyInputs& in) {
   const double path = recentPath(in);
   if (in.deviceError) return SafetyFault::DeviceError;
   staleTime_ = in.deviceFresh ? 0.0 : staleTime_ + in.dt;
-  if (staleTime_ > def_.staleLimit) return SafetyFault::StaleDevice;
+  // Stale data holds a stale force only where one is rendered (issue 27:
+  // the autopilot's hand on a mouse, left behind by a 60 ms stall its loop
+  // caught up, stopped the game for data that held nothing).
+  if (maxForce_ > 0.0 && staleTime_ > def_.staleLimit) return SafetyFault::StaleDevice;
   // Negated comparisons so that NaN observations trip the guard.
   if (!(in.deviceVelocity.norm() <= def_.maxDeviceSpeed)) return SafetyFault::VelocityGuard;
   // Only where a force is rendered: a mouse has none to send into a
   // teleporting hand, and its strokes may arrive faster in a flick.
   if (maxForce_ > 0.0 && !(path <= def_.maxDeviceSpeed * kJumpWindow * in.dt)) return SafetyFault::PositionJump;
   if (in.modelHalted) return SafetyFault::ModelHalted;
-  if (!(in.tickLateness <= def_.maxTickLateness)) return SafetyFault::LoopOverrun;
+  // A late tick is a hazard only where a force is rendered: the device held
+  // the last force that long. A mouse has none (issue 27: a single 23 ms
+  // tick stopped mouse play); its loop catches up or slows its clock.
+  if (maxForce_ > 0.0 && !(in.tickLateness <= def_.maxTickLateness)) return SafetyFault::LoopOverrun;
   if (!(in.injectedEnergy <= def_.maxInjectedEnergy)) return SafetyFault::EnergyInjection;
   if (!(in.angularSpeed <= def_.maxAngularSpeed)) return SafetyFault::RunawayRotation;
   if (!in.desiredForce.allFinite()) return SafetyFault::NonFiniteForce;

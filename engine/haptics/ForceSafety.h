@@ -2,7 +2,11 @@
 // Everything between the coupling's force and the device, applied on every
 // tick in this order:
 //   1. watchdogs: device error, stale device data for longer than staleLimit,
-//      a servo tick that started more than maxTickLateness after its deadline,
+//      a servo tick that started more than maxTickLateness after its deadline
+//      (these two on a device that renders force: stale data or a late tick
+//      held a stale force that long; a device without force output, the
+//      mouse, has none to hold, and the loop rides the late tick out instead,
+//      ServoLoop.h),
 //      device speed above maxDeviceSpeed (velocity guard), energy injected
 //      into the model beyond maxInjectedEnergy, angular speed beyond
 //      maxAngularSpeed, a non-finite force. Any of them latches a fault: the

@@ -57,8 +57,8 @@ void ServoLoop::start() {
       realtimeNote_.store(r.note, std::memory_order_relaxed);
       realtimeStatus_.store(static_cast<int>(r.status), std::memory_order_release);
     }
-    SteadyServoClock clock(def_.spinMarginNs);
-    runPaced(clock, LONG_MAX);
+    SteadyServoClock steady(def_.spinMarginNs);
+    runPaced(def_.clock != nullptr ? *def_.clock : steady, LONG_MAX);
     device_.sendForce(Vec3::Zero());
   });
 }
@@ -85,6 +85,7 @@ LoopTimingSummary ServoLoop::timingSummary() const {
   s.ticks = ticks();
   s.missedTicks = missedTicks();
   s.wakeups = wakeups();
+  s.stalls = stalls();
   return s;
 }
 
@@ -101,6 +102,7 @@ void ServoLoop::runHeadless(long n) {
 void ServoLoop::runPaced(ServoClock& clock, long maxWakeups) {
   const auto period = static_cast<std::int64_t>(std::llround(def_.period * 1e9));
   const auto catchUp = static_cast<std::int64_t>(def_.maxCatchUpTicks);
+  const auto stallNs = static_cast<std::int64_t>(std::llround(std::min(def_.safety.maxTickLateness, 1e6) * 1e9));
   std::int64_t deadline = clock.now() + period;
   std::int64_t previousWake = -1;
   for (long w = 0; w < maxWakeups && !stopRequested_.load(std::memory_order_relaxed); ++w) {
@@ -109,6 +111,7 @@ void ServoLoop::runPaced(ServoClock& clock, long maxWakeups) {
     wakeups_.store(wakeups_.load(std::memory_order_relaxed) + 1, std::memory_order_relaxed);
     if (previousWake >= 0) period_.record(wake - previousWake);
     previousWake = wake;
+    if (wake - deadline > stallNs) stalls_.store(stalls_.load(std::memory_order_relaxed) + 1, std::memory_order_relaxed);
     const std::int64_t due = 1 + std::max<std::int64_t>(wake - deadline, 0) / period;
     const std::int64_t run = std::min(due, catchUp);
     for (std::int64_t i = 0; i < run; ++i) {
@@ -257,6 +260,7 @@ void ServoLoop::publish(const physics::CouplingForces& forces, double distance, 
   maxLateness_ = std::max(maxLateness_, s.lateness);
   s.maxLateness = maxLateness_;
   s.missedTicks = missed_.load(std::memory_order_relaxed);
+  s.stalls = stalls_.load(std::memory_order_relaxed);
   snapshots_.write(s);
   if (plannerReads_.load(std::memory_order_relaxed)) plannerSnapshots_.write(s);
   if (def_.recordRing != nullptr && s.tick % static_cast<std::uint64_t>(def_.recordEvery) == 0 &&

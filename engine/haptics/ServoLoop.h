@@ -29,6 +29,11 @@
 //     grid is re-anchored at now + period. Simulation time advances only by
 //     the ticks that run (the world slows down for a moment; it never jumps
 //     and never tries to catch up a backlog - no spiral of death).
+// A device without force output (the mouse) runs with a larger
+// maxCatchUpTicks (PlaySession: kForcelessCatchUpTicks): a stall the
+// watchdog would stop a force device for is caught up in full up to that
+// many ticks and slows the clock beyond; stalls() counts such wake-ups
+// (later than safety.maxTickLateness), what a summary says about them.
 // Timing statistics: the lateness of every tick run (its start after its
 // deadline) and the period between wake-ups, in TimingHistograms; missed
 // ticks and ticks run as counters. All readable from any thread at any time.
@@ -76,6 +81,9 @@ struct ServoLoopDef {
   int recordEvery = 10;                  // ticks per recorded row: 10 = 100 Hz at 1 kHz, 1 = every tick
   InputRing* inputRing = nullptr;        // every tick's device reading (replays)
   CommandRing* commandRing = nullptr;    // every command applied (replays)
+  // start()'s thread paces by this clock; null = SteadyServoClock. Tests
+  // give one that stalls on request, as a starved thread would.
+  ServoClock* clock = nullptr;
 };
 
 // The loop's timing in one struct, for a status line or a recording's
@@ -84,6 +92,7 @@ struct LoopTimingSummary {
   double latenessP50 = 0.0, latenessP99 = 0.0, latenessP999 = 0.0, latenessMax = 0.0;  // [s]
   double periodP50 = 0.0, periodMax = 0.0;                                             // [s] between wake-ups
   std::uint64_t ticks = 0, missedTicks = 0, wakeups = 0;
+  std::uint64_t stalls = 0;  // wake-ups later than the safety's maxTickLateness
 };
 
 class ServoLoop {
@@ -138,6 +147,9 @@ class ServoLoop {
   std::uint64_t ticks() const { return ticks_.load(std::memory_order_relaxed); }
   std::uint64_t missedTicks() const { return missed_.load(std::memory_order_relaxed); }
   std::uint64_t wakeups() const { return wakeups_.load(std::memory_order_relaxed); }
+  // Wake-ups later than safety.maxTickLateness: a stop on a device that
+  // renders force, ridden out (caught up, or the clock slowed) on one that does not.
+  std::uint64_t stalls() const { return stalls_.load(std::memory_order_relaxed); }
   // Rows, and inputs or commands, lost to a full recording ring since construction.
   std::uint64_t recordDropped() const { return recordDropped_.load(std::memory_order_relaxed); }
   std::uint64_t inputDropped() const { return inputDropped_.load(std::memory_order_relaxed); }
@@ -180,7 +192,7 @@ class ServoLoop {
   std::atomic<bool> plannerReads_{false};
   TripleBuffer<GuideSample> guides_;
   TimingHistogram lateness_, period_;
-  std::atomic<std::uint64_t> ticks_{0}, missed_{0}, wakeups_{0};
+  std::atomic<std::uint64_t> ticks_{0}, missed_{0}, wakeups_{0}, stalls_{0};
   std::atomic<std::uint64_t> recordDropped_{0}, inputDropped_{0};
   double maxLateness_ = 0.0;
   std::atomic<bool> stopRequested_{false};

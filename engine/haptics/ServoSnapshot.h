@@ -36,6 +36,7 @@ struct ServoSnapshot {
   double lateness = 0.0;                  // this tick's start after its deadline [s]
   double maxLateness = 0.0;               // [s] since start
   std::uint64_t missedTicks = 0;          // ticks skipped by the catch-up policy
+  std::uint64_t stalls = 0;               // wake-ups later than the safety's maxTickLateness
 };
 
 }  // namespace hemiroll::haptics

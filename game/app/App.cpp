@@ -2,14 +2,17 @@
 
 #include <epoxy/gl.h>
 
+#include <algorithm>
+
 #include "engine/render/Framebuffer.h"
 #include "game/app/SettingsFile.h"
 #include "game/screens/TitleScreen.h"
-#include "game/view/AssetsDirectory.h"
+#include "game/view/ShippedDirectories.h"
 
 namespace hemiroll::game {
 
 App::App(const AppDef& def) : def_(def) {
+  if (def_.levelsDir.empty()) def_.levelsDir = findLevelsDirectory();
   platform::WindowDef w;
   w.title = "hemiroll";
   w.width = def.width;
@@ -57,6 +60,26 @@ void App::setVsync(bool on) {
   window_->setVsync(on);
 }
 
+double App::targetFps() const {
+  if (!def_.paceFrames) return 0.0;
+  const double cap = std::clamp(settings_.frameCap, kFrameCapFps[0], kFrameCapFps[1]);
+  switch (screens_.top() ? screens_.top()->frameNeed() : FrameNeed::Menu) {
+    case FrameNeed::Play: return cap;
+    case FrameNeed::Watch: return std::min(cap, kWatchFps);
+    case FrameNeed::Menu: return std::min(cap, kMenuFps);
+    case FrameNeed::Still: return std::min(cap, kStillFps);
+  }
+  return cap;
+}
+
+// Laid out for 720 lines; a 1080-line window gets half as much again, so
+// that text and dials keep their size on the screen, not in pixels.
+double App::uiScale() const {
+  constexpr double kDesignHeight = 720.0;
+  const double window = std::clamp(window_->windowSize().height / kDesignHeight, 0.75, 3.0);
+  return std::clamp(settings_.uiScale, kUiScale[0], kUiScale[1]) * window;
+}
+
 bool App::frame() {
   screens_.apply();
   if (screens_.empty()) quit_ = true;
@@ -83,6 +106,7 @@ bool App::frame() {
   glViewport(0, 0, drawable.width, drawable.height);
   glClearColor(0.09f, 0.1f, 0.13f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  imgui_->setScale(uiScale());
   imgui_->beginFrame(size.width, size.height, drawable.width, drawable.height, dt);
   screens_.visible(painted_);
   for (Screen* s : painted_) s->paint();
@@ -92,6 +116,7 @@ bool App::frame() {
     capture_ = render::Framebuffer::readBackBuffer(drawable.width, drawable.height);
   }
   window_->swap();
+  pacer_.pace(targetFps());
   return !quit_;
 }
 

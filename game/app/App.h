@@ -2,7 +2,12 @@
 // The game application: the window, the renderer, Dear ImGui, audio, the
 // scores database, the settings and the screen stack, and the main loop:
 //   events (window + injected) -> ImGui / top screen -> update -> paint -> swap
-// One frame never waits for the servo loop (the play screen reads snapshots).
+// One frame never waits for the servo loop (the play screen reads snapshots),
+// and frames are paced (FramePacer) to what the top screen needs: the
+// player's frame cap in play, kWatchFps watching the autopilot, kMenuFps in
+// menus, kStillFps while paused, so
+// that the servo thread keeps a core on a 2-core machine (issue 27). The
+// interface grows with the window's height (uiScale()).
 //
 // Tests build an App on a hidden or Xvfb window and drive it frame by frame
 // with inject(), the same InputEvents the window produces.
@@ -12,6 +17,7 @@
 #include <vector>
 
 #include "engine/platform/FrameClock.h"
+#include "engine/platform/FramePacer.h"
 #include "engine/platform/InputEvent.h"
 #include "engine/platform/Window.h"
 #include "engine/render/Image.h"
@@ -28,8 +34,12 @@ namespace hemiroll::game {
 struct AppDef {
   int width = 1280, height = 720;   // [window px]
   bool vsync = true;
+  // Frames paced to what the top screen needs (FrameNeed, the frame cap):
+  // the main thread sleeps out the rest. Off in the window tests, which
+  // step frames as fast as they come.
+  bool paceFrames = true;
   bool hidden = false;              // tests and benchmarks: no visible window
-  std::string levelsDir = "levels"; // the level select lists *.lua here
+  std::string levelsDir;            // the level select lists *.lua here; "" = findLevelsDirectory()
   std::string scoresFile;           // "" = record::dataDirectory()/scores.sqlite
   std::string settingsFile;         // "" = configDirectory()/settings.json
   bool requestRealtime = true;      // SCHED_FIFO for the servo thread when permitted
@@ -37,6 +47,9 @@ struct AppDef {
 
 class App final : public ScreenHost {
  public:
+  static constexpr double kWatchFps = 30.0;  // the autopilot playing: its planner needs the CPU
+  static constexpr double kMenuFps = 30.0;   // hover and clicks need no more
+  static constexpr double kStillFps = 15.0;  // a paused scene does not move
   // Opens the window (throws platform::PlatformError, e.g. no display) and
   // shows the title screen.
   explicit App(const AppDef& def);
@@ -62,6 +75,11 @@ class App final : public ScreenHost {
   const std::string& levelsDir() const override { return def_.levelsDir; }
   bool requestRealtime() const override { return def_.requestRealtime; }
   double fps() const override { return clock_.medianFps(); }
+  // The frame rate the top screen is paced to now [frames/s] (0 = unpaced).
+  double targetFps() const;
+  // The interface's scale now: the setting times the window's height / 720.
+  double uiScale() const;
+  const platform::FramePacer& pacer() const { return pacer_; }
   // Shown on the title.
   const std::vector<std::string>& notes() const override { return notes_; }
 
@@ -84,6 +102,7 @@ class App final : public ScreenHost {
   Settings settings_;
   ScreenStack screens_;
   platform::FrameClock clock_;
+  platform::FramePacer pacer_;
   std::vector<platform::InputEvent> events_, injected_;
   std::vector<Screen*> painted_;  // this frame's visible screens (reused)
   std::vector<std::string> notes_;

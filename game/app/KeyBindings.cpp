@@ -2,6 +2,8 @@
 
 #include "engine/platform/KeyNames.h"
 
+#include <string_view>
+
 namespace hemiroll::game {
 
 namespace {
@@ -44,6 +46,29 @@ bool KeyBindings::bind(KeyAction action, std::int32_t code) {
   if (const std::optional<KeyAction> holder = actionOf(code)) keys_[index(*holder)] = key(action);
   keys_[index(action)] = code;
   return true;
+}
+
+std::string withKeyNames(const std::string& text, const KeyBindings& keys) {
+  static constexpr std::string_view kOpen = "{key:";
+  std::string out;
+  std::size_t at = 0;
+  while (true) {
+    const std::size_t open = text.find(kOpen, at);
+    const std::size_t close = open == std::string::npos ? open : text.find('}', open);
+    if (close == std::string::npos) break;
+    const std::string_view id(text.data() + open + kOpen.size(), close - open - kOpen.size());
+    std::optional<KeyAction> action;
+    for (int i = 0; i < kKeyActionCount; ++i)
+      if (id == kActions[i].id) action = static_cast<KeyAction>(i);
+    out.append(text, at, open - at);
+    if (action)
+      out += keys.keyName(*action);
+    else
+      out.append(text, open, close + 1 - open);
+    at = close + 1;
+  }
+  out.append(text, at, std::string::npos);
+  return out;
 }
 
 }  // namespace hemiroll::game

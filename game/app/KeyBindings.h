@@ -45,4 +45,11 @@ class KeyBindings {
   std::array<std::int32_t, kKeyActionCount> keys_{};
 };
 
+// A text for the player with "{key:ACTION}" (ACTION a KeyActionInfo id:
+// take_hold, let_go, hint, ...) replaced by the key now bound to it, so that
+// a level's description or message names the player's key, not the default
+// (issue 27: the hint rebound to J, the text still said H). Anything else in
+// braces is left as written.
+std::string withKeyNames(const std::string& text, const KeyBindings& keys);
+
 }  // namespace hemiroll::game

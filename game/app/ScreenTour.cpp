@@ -1,5 +1,6 @@
 #include "game/app/ScreenTour.h"
 
+#include <algorithm>
 #include <chrono>
 
 #include "engine/platform/KeyNames.h"
@@ -73,6 +74,15 @@ std::vector<ScreenTourStop> runScreenTour(App& app, const ScreenTourDef& def) {
   app.inject(platform::keyDownEvent("Q"));
   settle(app);
   stop(app, stops);  // results
+
+  // The trial's replay, slowed down, with the magnified floor and the paths.
+  app.inject(platform::keyDownEvent("W"));
+  settle(app);
+  app.inject(platform::keyDownEvent("Down"));  // half speed
+  frameFor(app, std::min(def.playSeconds, 2.0));
+  stop(app, stops);  // replay
+  app.inject(platform::keyDownEvent("Escape"));
+  settle(app);
   if (!def.autopilot) return stops;
 
   // The autopilot: watched from the level select, then taken over with the
@@ -103,6 +113,19 @@ std::vector<ScreenTourStop> runScreenTour(App& app, const ScreenTourDef& def) {
   app.inject(platform::keyDownEvent("Return"));
   settle(app, 4);
   stop(app, stops, "start");
+
+  // Letting go: the physics waits, and the screen says how to go on.
+  ScriptedMouse again;
+  const auto held = std::chrono::steady_clock::now();
+  for (;;) {
+    const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - held).count();
+    if (t >= 1.5) break;
+    again.step(app, t);
+    app.frame();
+  }
+  app.inject(platform::keyDownEvent("Backspace"));
+  settle(app, 4);
+  stop(app, stops, "letgo");
   return stops;
 }
 

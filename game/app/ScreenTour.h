@@ -2,7 +2,8 @@
 // Drives the game through its main screens with synthetic input, the way a
 // player would: title -> (S) settings -> (Escape) title -> (Enter) level
 // select -> (Down.., Enter) play, with
-// a ScriptedMouse taking hold for a while -> (Escape) pause -> (Q) results.
+// a ScriptedMouse taking hold for a while -> (Escape) pause -> (Q) results
+// -> (W, Down) the replay at half speed -> (Escape) results.
 // One frame is captured at each stop. Used by the screen tests and by
 // `hemiroll play --tour DIR` (the README's screenshots).
 
@@ -20,7 +21,8 @@ struct ScreenTourDef {
   double playSeconds = 2.0; // [s] of wall time played by the scripted mouse
   // After results: back to the level select, watch the autopilot ("watch"),
   // take over with the hint on ("hint"), quit and play again: the trial
-  // waiting for the take-hold ("start").
+  // waiting for the take-hold ("start"); take hold, play, let go: the
+  // physics waits and says how to go on ("letgo").
   bool autopilot = true;
 };
 

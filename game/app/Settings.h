@@ -24,7 +24,17 @@ struct Settings {
   double damping = 10.0;       // [N s/m]
   double alpha = 2.0;          // M3's alpha [-]
   double volume = 0.6;         // [0, 1]
+  // The mouse's strokes: proxy millimetres per pixel of motion (the
+  // PointerMapping's scale; 0.25 mm/px spans a desk device's 20 cm in 800 px).
+  double mouseMmPerPixel = 0.25;
   bool vsync = true;
+  // Frames per second while playing, at most (vsync or not): the window
+  // sleeps out the rest, leaving the CPU to the 1 kHz servo thread. Menus
+  // draw at most kMenuFps, a paused game kStillFps (App).
+  int frameCap = 60;
+  // The interface's size: 1 = as designed for a 720-line window; it also
+  // grows with the window's height (App: window height / 720 times this).
+  double uiScale = 1.0;
   render::CameraMode camera = render::CameraMode::Follow;
   double zoom = 1.0;
   double orbitYaw = -0.6;      // the orbit camera's heading of the eye [rad] (arrow keys turn it)
@@ -35,6 +45,11 @@ struct Settings {
   std::string participant = "player";
   std::string sessionId = "1";
 };
+
+// The ranges the settings file and screen accept (inclusive).
+inline constexpr double kMouseMmPerPixel[2] = {0.02, 2.0};  // [mm/px]
+inline constexpr int kFrameCapFps[2] = {20, 240};           // [frames/s]
+inline constexpr double kUiScale[2] = {0.5, 3.0};           // [-]
 
 // The coupling the play session uses: the level's, or the player's override
 // applied to it (validated by the servo loop when posted).

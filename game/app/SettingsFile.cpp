@@ -181,7 +181,11 @@ LoadedSettings loadSettings(const std::filesystem::path& file) {
   r.number("damping_N_s_per_m", s.damping, 0.0, 100.0, "a damping in 0..100 N s/m");
   r.number("alpha", s.alpha, 0.1, 10.0, "an alpha in 0.1..10");
   r.number("volume", s.volume, 0.0, 1.0, "a volume in 0..1");
+  r.number("mouse_mm_per_px", s.mouseMmPerPixel, kMouseMmPerPixel[0], kMouseMmPerPixel[1],
+           "a mouse sensitivity in 0.02..2 mm per pixel");
   r.boolean("vsync", s.vsync);
+  r.integer("frame_cap_fps", s.frameCap, kFrameCapFps[0], kFrameCapFps[1], "a frame cap in 20..240 fps");
+  r.number("ui_scale", s.uiScale, kUiScale[0], kUiScale[1], "an interface scale in 0.5..3");
   int camera = static_cast<int>(s.camera);
   r.choice("camera", kCameras, camera);
   s.camera = static_cast<render::CameraMode>(camera);
@@ -206,7 +210,10 @@ std::string settingsJson(const Settings& s) {
   json["damping_N_s_per_m"] = s.damping;
   json["alpha"] = s.alpha;
   json["volume"] = s.volume;
+  json["mouse_mm_per_px"] = s.mouseMmPerPixel;
   json["vsync"] = s.vsync;
+  json["frame_cap_fps"] = s.frameCap;
+  json["ui_scale"] = s.uiScale;
   json["camera"] = kCameras[static_cast<int>(s.camera)];
   json["zoom"] = s.zoom;
   json["ghost"] = s.ghost;

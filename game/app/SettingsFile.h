@@ -4,7 +4,8 @@
 // overrides it), SI units in the key names:
 //   {"version": 1, "device": "mouse", "udp_port": 47110, "joystick_index": 0,
 //    "override_coupling": false, "method": "M3", "stiffness_N_per_m": 250,
-//    "damping_N_s_per_m": 10, "alpha": 2, "volume": 0.6, "vsync": true,
+//    "damping_N_s_per_m": 10, "alpha": 2, "volume": 0.6, "mouse_mm_per_px": 0.25,
+//    "vsync": true, "frame_cap_fps": 60, "ui_scale": 1,
 //    "camera": "follow", "zoom": 1, "ghost": true, "orbit_yaw_rad": -0.6,
 //    "orbit_pitch_rad": 0.55, "participant": "player",
 //    "keys": {"take_hold": "Space", "let_go": "Backspace", "camera": "Tab",

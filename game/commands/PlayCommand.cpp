@@ -8,6 +8,8 @@
 #include <iostream>
 #include <numbers>
 
+#include <sys/resource.h>
+
 #include "engine/platform/PlatformError.h"
 #include "engine/render/RenderError.h"
 #include "game/app/App.h"
@@ -19,6 +21,7 @@
 #include "game/commands/ExitCode.h"
 #include "game/screens/FreePlay.h"
 #include "game/screens/PlayScreen.h"
+#include "game/view/ShippedDirectories.h"
 
 namespace hemiroll::game {
 
@@ -32,62 +35,102 @@ bool haveDisplay() {
   return false;
 }
 
+// The process's CPU time so far [s], user and system, every thread.
+double processCpuSeconds() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return static_cast<double>(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
+         static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec) * 1e-6;
+}
+
 int autoplay(App& app, const PlayOptions& o) {
   app.screens().push(std::make_unique<PlayScreen>(app, std::make_unique<FreePlay>(app, o.level, o.watch)));
   std::vector<double> frameSeconds;
   frameSeconds.reserve(static_cast<std::size_t>(o.autoplay * 2000) + 16);
   const auto start = std::chrono::steady_clock::now();
+  const double cpuAtStart = processCpuSeconds();
   auto last = start;
   ScriptedMouse mouse;
   haptics::LoopTimingSummary timing;
   std::string engagement = "never engaged";
-  std::string scheduling;
-  std::uint64_t plans = 0;
+  std::string scheduling, stops = "none";
+  std::uint64_t plans = 0, stopCount = 0;
   std::string autopilotNote, outcome = "the trial was still running";
+  double wall = 0.0;
+  std::vector<Screen*> visible;
   while (true) {
     const auto now = std::chrono::steady_clock::now();
-    const double t = std::chrono::duration<double>(now - start).count();
-    if (t >= o.autoplay) break;
-    if (!o.watch) mouse.step(app, t);  // watching: the autopilot holds the proxy
+    wall = std::chrono::duration<double>(now - start).count();
+    if (wall >= o.autoplay) break;
+    if (!o.watch) mouse.step(app, wall);  // watching: the autopilot holds the proxy
     if (!app.frame()) break;
-    auto* play = dynamic_cast<PlayScreen*>(app.screens().top());
-    if (play && play->session()) {
-      plans = play->session()->autopilotPlans();
-      autopilotNote = play->session()->autopilotNote();
-      const script::TaskJudge& judge = play->session()->judging().judge();
-      if (judge.finished()) {
-        char line[160];
-        std::snprintf(line, sizeof line, "%s at %.2f s (%.*s)", script::trialOutcomeName(judge.outcome()),
-                      judge.finishTime(), static_cast<int>(judge.reason().size()), judge.reason().data());
-        outcome = line;
-      }
-      if (play->session()->snapshot().engagement == haptics::Engagement::Engaged) engagement = "engaged";
-      timing = play->session()->timing();
-      scheduling = play->session()->realtimeNote();
+    // The play screen, also under a pause screen after a safety stop.
+    PlayScreen* play = nullptr;
+    app.screens().visible(visible);
+    for (Screen* s : visible)
+      if (auto* p = dynamic_cast<PlayScreen*>(s)) play = p;
+    if (!play || !play->session()) break;  // the trial ended (the results screen replaced it)
+    PlaySession& session = *play->session();
+    plans = session.autopilotPlans();
+    autopilotNote = session.autopilotNote();
+    const script::TaskJudge& judge = session.judging().judge();
+    if (judge.finished()) {
+      char line[160];
+      std::snprintf(line, sizeof line, "%s at %.2f s (%.*s)", script::trialOutcomeName(judge.outcome()),
+                    judge.finishTime(), static_cast<int>(judge.reason().size()), judge.reason().data());
+      outcome = line;
+    } else {
+      // Where an unfinished trial stands: how far from the target, how many in.
+      const HudReadout& r = play->hud().readout();
+      char line[160];
+      if (r.distanceToTarget >= 0.0)
+        std::snprintf(line, sizeof line, "the trial was still running at %.1f s (%.1f mm to the target, %d of %d in their bands)",
+                      r.time, r.distanceToTarget * 1e3, r.componentsInside, r.components);
+      else
+        std::snprintf(line, sizeof line, "the trial was still running at %.1f s (%d of %d in their bands)", r.time,
+                      r.componentsInside, r.components);
+      outcome = line;
+    }
+    if (session.snapshot().engagement == haptics::Engagement::Engaged) engagement = "engaged";
+    timing = session.timing();
+    scheduling = session.realtimeNote();
+    if (!session.stops().empty()) {
+      stopCount = session.stops().size();
+      char line[160];
+      std::snprintf(line, sizeof line, "%s at %.2f s", haptics::safetyFaultName(session.stops().back().fault),
+                    session.stops().back().time);
+      stops = line;
+      outcome = std::string("stopped for safety (") + line + ")";
+      break;  // nobody is there to take hold again
     }
     const auto after = std::chrono::steady_clock::now();
     if (app.frames() > 1) frameSeconds.push_back(std::chrono::duration<double>(after - last).count());
     last = after;
   }
+  const double cpu = processCpuSeconds() - cpuAtStart;
   if (frameSeconds.empty()) {
     std::cerr << kPrefix << "no frames were drawn\n";
     return kExitFailure;
   }
   std::sort(frameSeconds.begin(), frameSeconds.end());
   const double median = frameSeconds[frameSeconds.size() / 2];
-  std::printf("%sautoplay %.1f s: %zu frames, median %.1f fps (p90 frame %.1f ms), %s, screen %s\n", kPrefix,
-              o.autoplay, frameSeconds.size(), 1.0 / median, frameSeconds[frameSeconds.size() * 9 / 10] * 1e3,
-              engagement.c_str(), app.topScreen());
+  std::printf("%sautoplay %.1f s: %zu frames, median %.1f fps (p90 frame %.1f ms), %s, screen %s\n", kPrefix, wall,
+              frameSeconds.size(), 1.0 / median, frameSeconds[frameSeconds.size() * 9 / 10] * 1e3, engagement.c_str(),
+              app.topScreen());
+  std::printf("%scpu: %.1f s in %.1f s of wall time (%.0f %% of one core), frame cap %.0f fps\n", kPrefix, cpu, wall,
+              wall > 0.0 ? 100.0 * cpu / wall : 0.0, static_cast<double>(app.settings().frameCap));
   std::printf("%sservo loop: %llu ticks, lateness p50 %.0f us, p99 %.0f us, p99.9 %.0f us, max %.0f us, "
-              "missed ticks %llu\n",
+              "missed ticks %llu, stalls over the overrun limit %llu\n",
               kPrefix, static_cast<unsigned long long>(timing.ticks), timing.latenessP50 * 1e6,
               timing.latenessP99 * 1e6, timing.latenessP999 * 1e6, timing.latenessMax * 1e6,
-              static_cast<unsigned long long>(timing.missedTicks));
+              static_cast<unsigned long long>(timing.missedTicks), static_cast<unsigned long long>(timing.stalls));
   std::printf("%sservo thread: %s\n", kPrefix, scheduling.c_str());
+  std::printf("%ssafety stops: %llu (%s)\n", kPrefix, static_cast<unsigned long long>(stopCount), stops.c_str());
   std::printf("%strial: %s\n", kPrefix, outcome.c_str());
   if (o.watch)
     std::printf("%sautopilot: %llu plans (%.0f per second)%s%s\n", kPrefix, static_cast<unsigned long long>(plans),
-                static_cast<double>(plans) / o.autoplay, autopilotNote.empty() ? "" : "; ", autopilotNote.c_str());
+                wall > 0.0 ? static_cast<double>(plans) / wall : 0.0, autopilotNote.empty() ? "" : "; ",
+                autopilotNote.c_str());
   return kExitOk;
 }
 
@@ -110,11 +153,12 @@ std::string playUsage() {
   return "usage: hemiroll play [LEVEL.lua] [--levels DIR] [--size WxH] [--no-vsync] [--autoplay SECONDS]\n"
          "                     [--watch] [--tour DIR]\n"
          "Opens the game window on the title screen (or straight into LEVEL).\n"
-         "  --levels DIR        the level select lists DIR/*.lua (default: levels)\n"
+         "  --levels DIR        the level select lists DIR/*.lua (default: the shipped levels)\n"
          "  --size WxH          window size in pixels (default 1280x720)\n"
-         "  --no-vsync          draw frames as fast as they come\n"
-         "  --autoplay SECONDS  a scripted mouse plays LEVEL for SECONDS, then the frame rate\n"
-         "                      and the servo loop's timing are printed\n"
+         "  --no-vsync          no vsync (the frame cap of the settings still holds)\n"
+         "  --autoplay SECONDS  a scripted mouse plays LEVEL for at most SECONDS (until the trial\n"
+         "                      ends or a safety stop), then the frame rate, CPU, the servo loop's\n"
+         "                      timing, the safety stops and the outcome are printed\n"
          "  --watch             the autopilot plays LEVEL (click or the take-hold key takes over);\n"
          "                      with --autoplay, the autopilot plays instead of the scripted mouse\n"
          "  --tour DIR          title, settings, level select (LEVEL picked), play, pause, results,\n"
@@ -150,7 +194,7 @@ PlayOptionsResult parsePlayOptions(const std::vector<std::string>& args) {
 int runPlayCommand(const std::vector<std::string>& args) {
   const PlayOptionsResult parsed = parsePlayOptions(args);
   if (const std::optional<int> exit = exitBeforeRunning(kPrefix, parsed, playUsage())) return *exit;
-  const PlayOptions& o = parsed.options;
+  PlayOptions o = parsed.options;
   if (!haveDisplay()) {
     std::cerr << playNoDisplayMessage("DISPLAY is not set") << "\n";
     return kExitUsage;
@@ -162,6 +206,7 @@ int runPlayCommand(const std::vector<std::string>& args) {
     def.vsync = o.vsync;
     def.levelsDir = o.levelsDir;
     App app(def);
+    o.level = resolveLevelPath(o.level, app.levelsDir());
     // What the game starts without (no sound card, missing assets), once,
     // in our words; the title screen shows the same.
     for (const std::string& note : app.notes()) std::cerr << kPrefix << note << "\n";

@@ -1,13 +1,19 @@
 #pragma once
 // `hemiroll play [LEVEL.lua] [flags]` (and `hemiroll` with no arguments):
 // opens the game window on the title screen, or straight into LEVEL.
-//   --levels DIR        the level select lists DIR/*.lua (default: levels)
+//   --levels DIR        the level select lists DIR/*.lua (default: the
+//                       shipped levels, found as the assets are:
+//                       game/view/ShippedDirectories.h)
 //   --size WxH          window size [px] (default 1280x720)
-//   --no-vsync          frames as fast as they come (measuring)
+//   --no-vsync          no vsync (the frame cap still holds)
 //   --autoplay SECONDS  a scripted mouse takes hold of the mass point and
-//                       circles it for SECONDS of wall time, then the
-//                       program prints the median frame rate and the servo
-//                       loop's timing and exits (LEVEL required)
+//                       circles it for at most SECONDS of wall time (or
+//                       --watch: the autopilot plays), until the trial ends
+//                       or a safety stop; then the program prints the frame
+//                       rate, the CPU it used, the servo loop's timing and
+//                       stalls, the safety stops and the trial's outcome,
+//                       and exits (LEVEL required)
+// LEVEL is found as given, else under the levels folder by its file name.
 //   --tour DIR          title -> level select -> play -> pause -> results
 //                       driven by synthetic input, one PNG per screen in DIR
 // Exit codes: 0 done, 2 bad flags or no display (one message saying how to
@@ -20,7 +26,7 @@ namespace hemiroll::game {
 
 struct PlayOptions {
   std::string level;             // "" = the title screen
-  std::string levelsDir = "levels";
+  std::string levelsDir;         // "" = the shipped levels (findLevelsDirectory)
   int width = 1280, height = 720;
   bool vsync = true;
   double autoplay = 0.0;         // [s]; 0 = a human plays

@@ -20,7 +20,7 @@
 #include "game/commands/CommandUsage.h"
 #include "game/commands/ExitCode.h"
 #include "game/commands/ScreenshotOptions.h"
-#include "game/view/AssetsDirectory.h"
+#include "game/view/ShippedDirectories.h"
 #include "game/view/RenderSceneBuilder.h"
 
 namespace hemiroll::game {

@@ -9,12 +9,13 @@
 
 #include "engine/render/ContactTrace.h"
 #include "game/hud/HintCompass.h"
+#include "game/hud/ImGuiLayer.h"
 
 namespace hemiroll::game {
 
 namespace {
 
-constexpr float kSide = 170.0f;     // [px] the map's square
+constexpr float kSide = 170.0f;     // [px] the map's square at interface scale 1
 constexpr double kMargin = 1.25;    // the farthest thing needed sits within 1/1.25 of the half side
 constexpr double kFreeBand = 1.0;   // [m] wider than this: a free component, not a size to fit
 
@@ -62,14 +63,16 @@ void FloorInset::draw(WindowRects* rects) const {
   ImGui::Begin("floor inset", nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoNav |
                    ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoFocusOnAppearing);
+  const float scale = uiScale();
+  const float side = kSide * scale;
   const ImVec2 o = ImGui::GetCursorScreenPos();
-  ImGui::Dummy(ImVec2(kSide, kSide));
+  ImGui::Dummy(ImVec2(side, side));
   ImDrawList* dl = ImGui::GetWindowDrawList();
-  dl->PushClipRect(o, ImVec2(o.x + kSide, o.y + kSide), true);
-  dl->AddRectFilled(o, ImVec2(o.x + kSide, o.y + kSide), colour(0.84f, 0.83f, 0.80f));
+  dl->PushClipRect(o, ImVec2(o.x + side, o.y + side), true);
+  dl->AddRectFilled(o, ImVec2(o.x + side, o.y + side), colour(0.84f, 0.83f, 0.80f));
   const double span = kSpans[spanIndex_];
-  const float pxPerMetre = static_cast<float>(kSide / 2 / span);
-  const ImVec2 c(o.x + kSide / 2, o.y + kSide / 2);
+  const float pxPerMetre = static_cast<float>(side / 2 / span);
+  const ImVec2 c(o.x + side / 2, o.y + side / 2);
   // Plane point -> map pixel: about the contact point, turned like the camera.
   const auto at = [&](double x, double y) {
     double right = 0.0, up = 0.0;
@@ -81,7 +84,7 @@ void FloorInset::draw(WindowRects* rects) const {
       dl->AddCircleFilled(at(z.centre[0], z.centre[1]), pxPerMetre * static_cast<float>(z.radius),
                           colour(0.85f, 0.1f, 0.1f, 0.45f), 32);
       dl->AddCircle(at(z.centre[0], z.centre[1]), pxPerMetre * static_cast<float>(z.radius), colour(0.7f, 0.05f, 0.05f),
-                    32, 2.0f);
+                    32, 2.0f * scale);
     } else {
       const ImVec2 q[4] = {at(z.min[0], z.min[1]), at(z.max[0], z.min[1]), at(z.max[0], z.max[1]),
                            at(z.min[0], z.max[1])};
@@ -106,18 +109,26 @@ void FloorInset::draw(WindowRects* rects) const {
       const render::TracePoint& a = s.trace->at(i - 1);
       const render::TracePoint& b = s.trace->at(i);
       const float alpha = static_cast<float>(s.trace->alphaForAge(s.time - b.time));
-      dl->AddLine(at(a.x, a.y), at(b.x, b.y), colour(0.95f, 0.45f, 0.05f, alpha), 1.5f);
+      dl->AddLine(at(a.x, a.y), at(b.x, b.y), colour(0.95f, 0.45f, 0.05f, alpha), 1.5f * scale);
     }
-  dl->AddCircleFilled(c, 4.0f, colour(0.1f, 0.1f, 0.12f));  // the contact point: you are here
+  if (proxyPath_)
+    for (std::size_t i = 1; i < proxyPath_->size(); ++i) {
+      const render::TracePoint& a = proxyPath_->at(i - 1);
+      const render::TracePoint& b = proxyPath_->at(i);
+      const float alpha = static_cast<float>(proxyPath_->alphaForAge(s.time - b.time));
+      dl->AddLine(at(a.x, a.y), at(b.x, b.y), colour(0.2f, 0.4f, 1.0f, alpha), 1.5f * scale);
+    }
+  dl->AddCircleFilled(c, 4.0f * scale, colour(0.1f, 0.1f, 0.12f));  // the contact point: you are here
   // The scale bar: half the span, bottom left.
   const float bar = pxPerMetre * static_cast<float>(span / 2);
-  const ImVec2 b0(o.x + 8, o.y + kSide - 10);
-  dl->AddLine(b0, ImVec2(b0.x + bar, b0.y), colour(0.1f, 0.1f, 0.12f), 2.0f);
+  const ImVec2 b0(o.x + 8 * scale, o.y + side - 10 * scale);
+  dl->AddLine(b0, ImVec2(b0.x + bar, b0.y), colour(0.1f, 0.1f, 0.12f), 2.0f * scale);
   char label[32];
   const double half = span / 2;
   if (half < 0.01) std::snprintf(label, sizeof label, "%.1f mm", half * 1e3);
   else std::snprintf(label, sizeof label, "%.0f %s", half < 0.1 ? half * 1e3 : half * 1e2, half < 0.1 ? "mm" : "cm");
-  dl->AddText(ImVec2(b0.x, b0.y - 18), colour(0.1f, 0.1f, 0.12f), label);
+  dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(b0.x, b0.y - ImGui::GetFontSize() - 2 * scale),
+              colour(0.1f, 0.1f, 0.12f), label);
   dl->PopClipRect();
   ImGui::TextDisabled("the floor, magnified");
   if (rects) rects->noteCurrentWindow("floor");

@@ -11,6 +11,7 @@
 
 #include <array>
 
+#include "engine/render/ContactTrace.h"
 #include "engine/render/RenderScene.h"
 #include "game/hud/WindowRects.h"
 
@@ -24,10 +25,14 @@ class FloorInset {
   // under the sphere centre) and the camera's screen-right heading [rad].
   void update(const render::RenderScene& scene, double screenRightHeading);
   double span() const { return kSpans[spanIndex_]; }
+  // A second path drawn over the contact's (a replay's proxy: where the hand
+  // went), in blue; null = none. Must outlive the next draw().
+  void setProxyPath(const render::ContactTrace* path) { proxyPath_ = path; }
   void draw(WindowRects* rects = nullptr) const;  // inside an ImGui frame
 
  private:
   const render::RenderScene* scene_ = nullptr;
+  const render::ContactTrace* proxyPath_ = nullptr;
   double heading_ = 0.0;
   std::size_t spanIndex_ = 0;
   bool fitted_ = false;  // the first update fits the span from the smallest

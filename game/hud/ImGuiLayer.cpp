@@ -4,6 +4,7 @@
 #include <backends/imgui_impl_opengl3.h>
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace hemiroll::game {
@@ -24,12 +25,14 @@ int buttonIndex(platform::PointerButton b) {
 
 }  // namespace
 
-ImGuiLayer::ImGuiLayer(double fontScale) {
+float uiScale() { return ImGui::GetIO().FontGlobalScale / kBaseFontScale; }
+
+ImGuiLayer::ImGuiLayer() {
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGuiIO& io = ImGui::GetIO();
   io.IniFilename = nullptr;  // no imgui.ini in the player's working directory
-  io.FontGlobalScale = static_cast<float>(fontScale);
+  io.FontGlobalScale = kBaseFontScale;
   io.KeyMap[ImGuiKey_Enter] = keyIndex(platform::Key::Enter);
   io.KeyMap[ImGuiKey_Escape] = keyIndex(platform::Key::Escape);
   io.KeyMap[ImGuiKey_Space] = keyIndex(platform::Key::Space);
@@ -41,6 +44,7 @@ ImGuiLayer::ImGuiLayer(double fontScale) {
   io.KeyMap[ImGuiKey_Backspace] = keyIndex(platform::Key::Backspace);
   ImGui::StyleColorsDark();
   ImGui::GetStyle().WindowRounding = 6.0f;
+  designed_ = std::make_unique<ImGuiStyle>(ImGui::GetStyle());
   if (!ImGui_ImplOpenGL3_Init("#version 330 core")) {
     ImGui::DestroyContext();
     throw std::runtime_error("Dear ImGui's OpenGL 3 backend did not start");
@@ -94,6 +98,15 @@ bool ImGuiLayer::feed(const platform::InputEvent& e) {
     default:
       return false;
   }
+}
+
+void ImGuiLayer::setScale(double scale) {
+  scale = std::clamp(std::isfinite(scale) ? scale : 1.0, 0.5, 4.0);
+  if (scale == scale_) return;
+  scale_ = scale;
+  ImGui::GetIO().FontGlobalScale = kBaseFontScale * static_cast<float>(scale);
+  ImGui::GetStyle() = *designed_;
+  ImGui::GetStyle().ScaleAllSizes(static_cast<float>(scale));
 }
 
 bool ImGuiLayer::wantsPointer() const { return ImGui::GetIO().WantCaptureMouse; }

@@ -8,17 +8,28 @@
 // arrive in the same frame would never be seen as a click: a release is held
 // back to the next frame when its press came in this one.
 
+#include <memory>
 #include <vector>
 
 #include "engine/platform/InputEvent.h"
 
+struct ImGuiStyle;  // imgui.h, which the window's library keeps private
+
 namespace hemiroll::game {
+
+// The font scale the interface was designed at (ImGui's 13 px font, 1.4x).
+inline constexpr float kBaseFontScale = 1.4f;
+
+// The interface's current scale (1 = as designed): the HUD multiplies its
+// drawn sizes (dials, maps, plots) by it, so that they grow with the text.
+// Inside an ImGui frame.
+float uiScale();
 
 class ImGuiLayer {
  public:
   // Needs a current GL 3.3 context. Throws std::runtime_error when the
   // backend cannot start.
-  explicit ImGuiLayer(double fontScale = 1.4);
+  ImGuiLayer();
   ~ImGuiLayer();
   ImGuiLayer(const ImGuiLayer&) = delete;
   ImGuiLayer& operator=(const ImGuiLayer&) = delete;
@@ -31,10 +42,16 @@ class ImGuiLayer {
   // Draws what the frame built into the bound framebuffer.
   void endFrame();
   bool wantsPointer() const;
+  // Text and spacing at `scale` times the designed size (from the next
+  // frame; clamped to [0.5, 4]).
+  void setScale(double scale);
+  double scale() const { return scale_; }
 
  private:
   bool pressedThisFrame_[3] = {false, false, false};
   bool releasePending_[3] = {false, false, false};
+  double scale_ = 1.0;
+  std::unique_ptr<ImGuiStyle> designed_;  // the style at scale 1, which setScale() multiplies
 };
 
 }  // namespace hemiroll::game

@@ -1,16 +1,21 @@
 #pragma once
 // The play screen's HUD (Dear ImGui), in a player's words and units:
-//  - top left: the level, the clock, the distance to the target, what is out
-//    of tolerance and by how much (compact; the full table of every judged
-//    component one key away), the settle meter (the hold filling up while
-//    every component is inside, or which component broke the last hold and
-//    by how much), a tilt gauge, the engagement, the ghost's and the
-//    autopilot's lines, a loop-timing warning;
+//  - top left: the level, a short form of its task (taskGoal: it stays on
+//    screen), the clock, the distance to the target, what is out of its band
+//    and what to do about it, in screen directions (PlayerWords; the table
+//    of every judged component, in the physics' names, one key away), the
+//    settle meter (the hold filling up while every component is inside, or
+//    what broke the last hold and by how much), a tilt gauge, the
+//    engagement, the ghost's and the autopilot's lines, a loop-timing note;
 //  - beside it, top: the level's messages, never over the HUD;
 //  - under the messages: a prompt when the player must act (take hold to
-//    start, take hold again after letting go);
+//    start, take hold again after letting go or a stop);
 //  - bottom right: the level's `scene.plots` (contact x and y when it names
-//    none) with their axis values, and the mass point on the face.
+//    none) with their axis values, and the mass point on the face; or, when
+//    asked for, the full table in their place, right of the hemisphere.
+// Every panel keeps clear of the hemisphere (setKeepClear: its rect on
+// screen, HudLayout) and wraps its text (WrappedText), never cuts it; sizes
+// grow with the interface scale (uiScale).
 // update() computes a plain HudReadout (tested without a window); draw()
 // shows it and notes where each window went (rects(), for layout tests).
 // Ring buffers are fixed once a level is set: no allocation per frame.
@@ -26,6 +31,7 @@
 #include "engine/physics/RollingDynamics.h"
 #include "engine/script/TaskJudge.h"
 #include "game/hud/HudChannel.h"
+#include "game/hud/PlayerWords.h"
 #include "game/hud/ScrollingPlot.h"
 #include "game/hud/WindowRects.h"
 
@@ -43,6 +49,7 @@ struct HudReadout {
   bool loopWarning = false;            // late ticks or missed ticks seen
   double latenessMs = 0.0;             // the snapshot's worst lateness so far [ms]
   unsigned long long missedTicks = 0;
+  unsigned long long stalls = 0;       // wake-ups past the overrun limit (ridden out without force)
   haptics::Engagement engagement = haptics::Engagement::Disengaged;
   double rampScale = 0.0;
 };
@@ -52,7 +59,7 @@ class PlayHud {
   static constexpr double kLateWarning = 0.0005;  // [s]: a tick later than half a period is worth showing
   static constexpr double kHoldBreakShown = 3.0;  // [s] a lost hold stays explained
   static constexpr std::size_t kMaxPlots = 3;
-  static constexpr int kCompactRows = 4;          // out-of-band rows the compact HUD lists
+  static constexpr int kCompactRows = 3;          // out-of-band rows the compact HUD lists
 
   PlayHud();
   void reset();
@@ -78,6 +85,15 @@ class PlayHud {
   // A call to act, drawn large in the upper middle ("" = none).
   void setPrompt(std::string text) { prompt_ = std::move(text); }
   const std::string& prompt() const { return prompt_; }
+  // The short form of the task now (taskGoal), under the level's name.
+  void setGoal(std::string text) { goal_ = std::move(text); }
+  const std::string& goal() const { return goal_; }
+  // The hemisphere's rect on screen this frame [window px] (hemisphereRect):
+  // no panel is placed over it. Zero size: nothing to keep clear.
+  void setKeepClear(const WindowRect& r) { keepClear_ = r; }
+  const WindowRect& keepClear() const { return keepClear_; }
+  // The compact rows of the last update(), in the player's words.
+  std::span<const AdviceRow> adviceRows() const { return {advice_.data(), static_cast<std::size_t>(adviceCount_)}; }
   void draw(double fps);
   // The windows drawn by the last draw(), by name.
   std::span<const WindowRect> rects() const { return rects_.rects(); }
@@ -105,34 +121,43 @@ class PlayHud {
   const HudChannel& plotChannel(std::size_t i) const { return channels_[i]; }
   const ScrollingPlot& plot(std::size_t i) const { return plots_[i]; }
 
-  // One judged component in the player's unit, e.g. "contact x off by
-  // +12.3 mm (band ±1.0 mm)"; written into `out` (no allocation) or returned.
+  // One judged component for the full table, in its physics name and the
+  // player's unit, e.g. "contact x (u_a) -28.0 mm, wants -40.0 ±4.0 mm";
+  // written into `out` (no allocation) or returned.
   static void componentLine(const script::ComponentStatus& c, std::span<char> out);
   static std::string componentLine(const script::ComponentStatus& c);
-  // Why the last hold was lost, e.g. "tilt v wobbled out by 0.40 ° after 0.6 s".
+  // Why the last hold was lost, e.g. "the tilt went out by 0.40 ° after 0.6 s".
   static void holdBreakLine(const script::HoldBreak& b, std::span<char> out);
   static std::string holdBreakLine(const script::HoldBreak& b);
   // Decimals for a plot axis spanning `range` (in its unit) so its ends differ.
   static int axisDecimals(double range);
+  // `value` as drawn with `decimals`: 0 when it rounds to zero (no "-0.0").
+  static double shownAs(double value, int decimals);
 
  private:
   void drawStatus();
   void drawComponents();
   void drawSettleMeter();
   void drawTiltGauge();
-  WindowRect drawMessages(float left);  // none drawn: an empty rect at the top
-  void drawPrompt(const WindowRect& hud, const WindowRect& messages, const WindowRect& plots);
+  void drawLoopNote();
+  WindowRect drawTable(const WindowRect& messages);         // none drawn: an empty rect
+  WindowRect drawMessages(float left, float right);         // none drawn: an empty rect at the top
+  void drawPrompt(const WindowRect& hud, const WindowRect& messages, const WindowRect& plots,
+                  const WindowRect& table);
   WindowRect drawPlots();
 
   HudReadout readout_;
   std::array<script::ComponentStatus, 16> components_{};
   int componentCount_ = 0;
+  std::array<AdviceRow, 8> advice_{};
+  int adviceCount_ = 0;
+  WindowRect keepClear_;
   std::vector<HudChannel> channels_;
   std::vector<ScrollingPlot> plots_;
   ScrollingPlot faceX_, faceY_;
   std::optional<physics::RollingDynamics> dynamics_;
   double lastPsi_ = 0.0, lastTime_ = -1.0;
-  std::string level_, device_, method_, ghost_, autopilot_, prompt_;
+  std::string level_, device_, method_, ghost_, autopilot_, prompt_, goal_;
   std::string takeHoldHint_ = "click or Space to take hold";
   std::string tableKey_ = "I";
   bool mousePlayer_ = true;
@@ -140,7 +165,7 @@ class PlayHud {
   double screenYaw_ = 0.0;
   std::optional<double> score_;
   double fps_ = 0.0;
-  struct { float x = 0, y = 0; } promptSize_;  // [px] as last drawn
+  struct { float x = 0, y = 0; } promptSize_, tableSize_;  // [px] as last drawn
   std::array<std::string, kMessages> messages_{};
   std::array<double, kMessages> messageUntil_{};
   std::size_t nextMessage_ = 0;

@@ -24,7 +24,11 @@ PlaySession::PlaySession(script::LoadedLevel& level, const PlaySessionDef& def)
     device_ = std::move(choice.device);
   }
   clockStartsOnTakeHold_ = def.clockStartsOnTakeHold;
+  // Nothing to hold still on a device without force: a stall is caught up
+  // (then the clock slows) instead of stopping the game (ForceSafety).
+  if (!device_->spec().hasForceOutput) loopDef_.maxCatchUpTicks = kForcelessCatchUpTicks;
   loopDef_.requestRealtime = def.requestRealtime;
+  loopDef_.clock = def.clock;
   loopDef_.recordRing = ring_.get();
   loopDef_.recordEvery = 1;  // the judge sees every tick
   if (def.coupling) loopDef_.coupling = *def.coupling;
@@ -147,11 +151,12 @@ void PlaySession::takeOver() {
     takeover_->handToPlayer();
   } else {
     // The player's hand is elsewhere and feels force: the autopilot lets go
-    // first (the force ramps out while it still holds the proxy), then the
-    // device is handed over (frame() does, once disengaged) and the player
-    // takes hold with the usual click and ramp-in.
+    // first, then the device is handed over (frame() does, once disengaged)
+    // and the player takes hold with the usual click and ramp-in. The
+    // physics stands still meanwhile, as after the player letting go.
     post(haptics::ServoCommandKind::Disengage);
     handoverPending_ = true;
+    freeze(Freeze::LetGo);
   }
 }
 
@@ -186,14 +191,17 @@ void PlaySession::click() {
   putProxyOnMassPoint();
   post(haptics::ServoCommandKind::Engage);
   takenHold_ = true;
+  if (frozen_ != Freeze::None) holdWanted_ = true;  // frame() lets the physics run once engaged
   if (started_) startLoopWhenReady();
 }
 
-// Only while nothing is held (or the loop waits for the proxy): moving a
-// coupled proxy would be a jump in the force.
+// Only while nothing is held (or the loop waits for the proxy), or while the
+// physics stands still after a stop (the force is off): moving a coupled
+// proxy would be a jump in the force.
 void PlaySession::putProxyOnMassPoint() {
   if (!mouse_) return;
-  if (snapshot_.engagement != haptics::Engagement::Disengaged && snapshot_.engagement != haptics::Engagement::Armed)
+  if (frozen_ == Freeze::None && snapshot_.engagement != haptics::Engagement::Disengaged &&
+      snapshot_.engagement != haptics::Engagement::Armed)
     return;
   const physics::Vec3 p =
       physics::massPointPosition(physics::forceStateOf(snapshot_.state), level_.def.params.radius);
@@ -203,12 +211,32 @@ void PlaySession::putProxyOnMassPoint() {
   mapping_.setHeight(device.z());
   sendPointer(/*jump=*/true);
 }
-void PlaySession::release() { post(haptics::ServoCommandKind::Disengage); }
+// Letting go while tilted left the face 0.6 s later, before the screen
+// could say how to carry on (issue 27): the physics stands still instead,
+// from the tick the let-go is applied, until the next take-hold.
+void PlaySession::release() {
+  if (autopilotHolds()) return;  // its hold is not the player's to drop: they take over first
+  post(haptics::ServoCommandKind::Disengage);
+  if (takenHold_ && !autopilotHolds() && loop_->running()) freeze(Freeze::LetGo);
+}
+
+// A safety stop outranks the other causes: the results name it.
+void PlaySession::freeze(Freeze why) {
+  if (frozen_ == Freeze::None || why == Freeze::SafetyStop) frozen_ = why;
+  holdWanted_ = false;
+  post(haptics::ServoCommandKind::Pause);
+}
 
 void PlaySession::pause() {
   if (paused_) return;
   paused_ = true;
   post(haptics::ServoCommandKind::Pause);
+  // A force device's handle is free while paused (no force holds it): the
+  // hold is let go, and taken again when play goes on, where the handle is.
+  if (!mouse_ && takenHold_ && !autopilotHolds() && loop_->running()) {
+    post(haptics::ServoCommandKind::Disengage);
+    freeze(Freeze::Paused);
+  }
 }
 
 void PlaySession::resume() {
@@ -221,10 +249,46 @@ void PlaySession::resume() {
     // from the one running now at the latest.
     faultClearedBy_ = loop_->ticks() + 2;
   }
+  if (frozen_ != Freeze::None) {
+    // Stopped: the physics waits for the next take-hold. The autopilot,
+    // holding, takes hold again itself (its hand is on its plan).
+    if (autopilotHolds()) {
+      post(haptics::ServoCommandKind::Engage);
+      holdWanted_ = true;
+    }
+    return;
+  }
   post(haptics::ServoCommandKind::Resume);
 }
 
-void PlaySession::quit() { judging_.fail("quit by the player"); }
+// A stop is recorded once, when a snapshot first shows it latched (and not
+// one older than a ClearFault already asked for).
+void PlaySession::noteStops() {
+  if (snapshot_.fault == haptics::SafetyFault::None) {
+    stopOpen_ = false;
+    return;
+  }
+  if (snapshot_.tick <= faultClearedBy_ || stopOpen_) return;
+  stopOpen_ = true;
+  if (stops_.size() < 1000) stops_.push_back({snapshot_.fault, snapshot_.time});
+  freeze(Freeze::SafetyStop);
+}
+
+void PlaySession::thawWhenHeld() {
+  if (frozen_ == Freeze::None || !holdWanted_ || paused_ || fault() != haptics::SafetyFault::None) return;
+  if (snapshot_.engagement != haptics::Engagement::Engaged) return;
+  post(haptics::ServoCommandKind::Resume);
+  frozen_ = Freeze::None;
+  holdWanted_ = false;
+}
+
+std::string PlaySession::stopReason() const {
+  if (frozen_ == Freeze::SafetyStop && !stops_.empty())
+    return std::string("safety stop: ") + haptics::safetyFaultName(stops_.back().fault);
+  return "quit by the player";
+}
+
+void PlaySession::quit() { judging_.fail(stopReason()); }
 
 bool PlaySession::frame() {
   if (stopped_) return false;
@@ -235,6 +299,8 @@ bool PlaySession::frame() {
     judging_.fail("the judge fell behind the servo loop (ticks dropped)");
   loop_->latest(snapshot_);
   everEngaged_ = everEngaged_ || snapshot_.engagement == haptics::Engagement::Engaged;
+  noteStops();
+  thawWhenHeld();
   handOverWhenLetGo();
   if (judging_.finished()) finish();
   return !judging_.finished();
@@ -248,7 +314,7 @@ TrialResult PlaySession::finish() {
     loop_->latest(snapshot_);  // the last tick run
     if (capture_) replayError_ = capture_->finish(loop_->inputDropped());
   }
-  if (!judging_.finished()) judging_.fail("quit by the player");
+  if (!judging_.finished()) judging_.fail(stopReason());
   TrialResult result = judging_.result(initial_);
   result.wallTime = std::chrono::duration<double>(std::chrono::steady_clock::now() - startedAt_).count();
   return result;

@@ -14,11 +14,21 @@
 //                  judged, level callbacks at their rate), latest snapshot
 //                  for the renderer and the HUD.
 // frame() never waits for the servo loop. A safety fault (a watchdog: the
-// loop starved, stale input) does not end the trial: the loop has already
-// taken the force off and stopped; fault() says which, and resume() clears
-// it and goes on (the player takes hold again). Engagement follows the loop's
-// rule: a click (or a key) arms it, and it engages when the proxy reaches
-// the mass point; the force then ramps in (ServoSnapshot::rampScale).
+// loop starved a force device, stale input) does not end the trial: the
+// loop has already taken the force off and stopped; fault() says which, and
+// stops() keeps each with its time. Engagement follows the loop's rule: a
+// click (or a key) arms it, and it engages when the proxy reaches the mass
+// point; the force then ramps in (ServoSnapshot::rampScale).
+//
+// Stops that fit the device (issue 27): a device without force output (the
+// mouse) has no force to hold while its loop runs late, so its loop is not
+// stopped by a late tick (ForceSafety) and catches up to
+// kForcelessCatchUpTicks, then slows its clock (ServoLoop); a device that
+// renders force keeps every watchdog. After any stop - a safety stop, the
+// player letting go, a pause with a force device (its handle is free while
+// paused) - the physics stands still (frozen()) until the player takes hold
+// again: the mass point does not slide off the face while the screen says
+// how to go on. Quitting while stopped ends the trial naming the stop.
 //
 // A device that is open but not yet delivering (the bridge before its
 // client's first state) holds the start: the loop starts, and the trial's
@@ -36,6 +46,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "engine/haptics/MouseDevice.h"
 #include "engine/haptics/devices/DeviceFactory.h"
@@ -52,11 +63,25 @@ namespace hemiroll::game {
 // at 60 Hz (the judge runs the callbacks of a frame's ticks once per frame).
 inline constexpr double kWindowLuaTickSeconds = 1.0 / 60.0;
 
+// Ticks a device without force output catches up after a stall (100 ms at
+// 1 kHz, a few ms of CPU); a longer stall slows the clock by the rest.
+inline constexpr int kForcelessCatchUpTicks = 100;
+
+// Why the physics stands still until the player takes hold again.
+enum class Freeze { None, LetGo, SafetyStop, Paused };
+
+// A safety stop: which watchdog, at what simulated time [s].
+struct SafetyStop {
+  haptics::SafetyFault fault = haptics::SafetyFault::None;
+  double time = 0.0;
+};
+
 struct PlaySessionDef {
   std::string device = "mouse";        // "mouse", "joystick" or "udp" (DeviceFactory names)
   haptics::DeviceOptions deviceOptions;  // the joystick's index, the bridge's port, ...
   haptics::PointerMappingDef pointer;
   bool requestRealtime = true;         // SCHED_FIFO for the servo thread when permitted
+  haptics::ServoClock* clock = nullptr;  // the servo thread's clock; null = the real one (tests stall it)
   std::optional<physics::CouplingDef> coupling;  // the player's settings; none = the level's
   std::optional<haptics::SafetyDef> safety;      // the loop's limits and watchdogs; none = the defaults
   // Log the trial for a replay here ("" = no replay); levelHash goes into
@@ -96,6 +121,10 @@ class PlaySession {
   // The player has held the proxy and let go since (the trial goes on:
   // taking hold again is how to carry on).
   bool letGo() const { return everEngaged_ && snapshot_.engagement == haptics::Engagement::Disengaged; }
+  // The physics stands still until the player takes hold again, and why.
+  Freeze frozen() const { return frozen_; }
+  // Every safety stop of this trial, in order.
+  const std::vector<SafetyStop>& stops() const { return stops_; }
   const std::string& deviceName() const { return deviceName_; }
   const haptics::HapticDevice& device() const { return *device_; }
   // UI thread, mouse only (ignored for other devices): the pointer moved by
@@ -106,17 +135,24 @@ class PlaySession {
   void wheel(double notches);
   // Take hold: arm the engagement (the loop engages near the mass point);
   // the mouse's proxy is put on the mass point first. The first take-hold
-  // starts the clock.
+  // starts the clock; after a stop, the physics runs again once engaged.
   void click();
-  void release();      // disengage: the force ramps out
-  void pause();        // physics stops, force zero at once
-  void resume();       // also clears a latched safety fault
+  void release();      // let go: the force ramps out, the physics stands still
+  // Physics stops, force zero at once; with a force device the hold is let
+  // go too (the handle is free while paused).
+  void pause();
+  // Ends the player's pause; clears a latched safety fault. The physics runs
+  // again at once unless a stop froze it (then at the next take-hold; while
+  // the autopilot holds, it takes hold again itself).
+  void resume();
   // The latched fault of the latest snapshot; None once resume() asked to
   // clear it (snapshots older than the clearing tick still show it).
   haptics::SafetyFault fault() const {
     return snapshot_.tick <= faultClearedBy_ ? haptics::SafetyFault::None : snapshot_.fault;
   }
-  void quit();         // ends the trial as a failure ("quit by the player")
+  // Ends the trial as a failure: "quit by the player", or while stopped
+  // for safety, "safety stop: <what>".
+  void quit();
 
   // Once per frame: judge what the loop produced; returns true while running.
   bool frame();
@@ -162,6 +198,10 @@ class PlaySession {
   bool startLoopWhenReady();
   bool holdsClock() const { return clockStartsOnTakeHold_ && !takeover_; }
   void putProxyOnMassPoint();
+  void freeze(Freeze why);
+  std::string stopReason() const;  // what quitting now ends the trial with
+  void noteStops();
+  void thawWhenHeld();
 
   script::LoadedLevel& level_;
   haptics::ServoLoopDef loopDef_;
@@ -190,6 +230,10 @@ class PlaySession {
   bool everEngaged_ = false;   // a snapshot has shown the proxy engaged
   bool handoverPending_ = false;  // a force device's takeover waits for the autopilot to let go
   std::uint64_t faultClearedBy_ = 0;  // the tick by which a ClearFault has been applied
+  Freeze frozen_ = Freeze::None;
+  bool holdWanted_ = false;           // frozen, and a take-hold was asked for: run once engaged
+  bool stopOpen_ = false;             // the latest stop is still latched (not yet recorded again)
+  std::vector<SafetyStop> stops_;
   std::chrono::steady_clock::time_point startedAt_;
 };
 

@@ -28,9 +28,10 @@ void FreePlay::finished(PlaySession& session, TrialResult result, const script::
                         TrialEnding ending) {
   std::string replayNote = session.replayError();
   if (host_.settings().overrideCoupling) replayNote = "no replay: the force method was overridden in the settings";
-  host_.screens().replace(
-      std::make_unique<ResultsScreen>(host_, levelPath_, level.name, std::move(result), session.replayFile(), replayNote,
-                                      session.assisted(), std::move(ending)));
+  auto results = std::make_unique<ResultsScreen>(host_, levelPath_, level.name, std::move(result), session.replayFile(),
+                                                 replayNote, session.assisted(), std::move(ending));
+  results->setPlaylist(playlist_);
+  host_.screens().replace(std::move(results));
 }
 
 void FreePlay::leftWithoutTrial(const std::string& /*error*/) { host_.screens().pop(); }

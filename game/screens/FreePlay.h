@@ -4,6 +4,9 @@
 // method is overridden: a replay repeats the level's own loop), the ghost,
 // restart, and the results screen at the end.
 
+#include <string>
+#include <vector>
+
 #include "game/screens/PlayMode.h"
 
 namespace hemiroll::game {
@@ -14,6 +17,10 @@ class FreePlay final : public PlayMode {
   FreePlay(ScreenHost& host, std::string levelPath, bool watch = false)
       : host_(host), levelPath_(std::move(levelPath)), watch_(watch) {}
   bool watching() const { return watch_; }
+  // The level list's playable files in order (LevelSelectScreen::playlist):
+  // the results screen offers the one after this level. Empty: no "next".
+  void setPlaylist(std::vector<std::string> playlist) { playlist_ = std::move(playlist); }
+  const std::vector<std::string>& playlist() const { return playlist_; }
 
   const std::string& levelPath() const override { return levelPath_; }
   std::unique_ptr<PlaySession> begin(script::LoadedLevel& level, PlaySessionDef& def) override;
@@ -29,6 +36,7 @@ class FreePlay final : public PlayMode {
   ScreenHost& host_;
   std::string levelPath_;
   bool watch_ = false;
+  std::vector<std::string> playlist_;
 };
 
 }  // namespace hemiroll::game

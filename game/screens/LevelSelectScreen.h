@@ -1,16 +1,22 @@
 #pragma once
 // The level select: every *.lua in the levels directory (sorted by file
 // name), each loaded to show its name, difficulty and description, with the
-// best time and medal from the scores database. A level that does not load is
-// listed as broken with its error (file:line: what), never hidden.
-// Keys: Up/Down choose, Enter plays, Escape goes back.
+// best time and medal from the scores database (or "tried N times" /
+// "not played"). A level that does not load is listed as broken with its
+// error (file:line: what), never hidden. No levels at all: it says where it
+// looked and offers only Back.
+// Keys: Up/Down (Home/End, Page Up/Down) choose, Enter plays, A watches the
+// autopilot, Escape goes back. The keyboard's choice is the highlighted row
+// (the pointer's hover only outlines one: Enter plays what is highlighted).
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "engine/script/LevelDef.h"
 #include "game/scores/ScoreStore.h"
 #include "game/screens/ListingBudget.h"
+#include "game/screens/MedalTimes.h"
 #include "game/screens/Screen.h"
 
 namespace hemiroll::game {
@@ -25,6 +31,7 @@ struct LevelEntry {
   // Shown with a note; choosing it loads it in full.
   bool pending = false;
   script::ScoringDef scoring;  // the medal thresholds the card shows
+  std::optional<MedalTimes> medalTimes;  // the thresholds as times, where the score is a time
   LevelBest best;
 };
 
@@ -36,6 +43,9 @@ struct LevelEntry {
 std::vector<LevelEntry> scanLevels(const std::string& dir, const ListingBudget& budget = {});
 // The first level that loads and has not been won yet (0 when all have).
 int firstToPlay(const std::vector<LevelEntry>& entries);
+// What the list says of a level's record: "best 12.3 s, gold",
+// "tried 3 times, not won yet", "not played".
+std::string levelRecord(const LevelBest& best);
 
 class LevelSelectScreen final : public Screen {
  public:
@@ -47,6 +57,10 @@ class LevelSelectScreen final : public Screen {
 
   const std::vector<LevelEntry>& entries() const { return entries_; }
   int selected() const { return selected_; }
+  // The selected level loads: Play and Watch are offered.
+  bool playable() const;
+  // The playable levels' files in the list's order (the results screen's "next level").
+  std::vector<std::string> playlist() const;
 
  private:
   void play(bool watch = false);  // watch: the autopilot plays, the player may take over

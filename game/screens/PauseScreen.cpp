@@ -2,6 +2,7 @@
 
 #include <imgui.h>
 
+#include "game/hud/WrappedText.h"
 #include "game/screens/PlayScreen.h"
 #include "game/screens/ScreenHost.h"
 #include "game/screens/ScreenLayout.h"
@@ -41,12 +42,14 @@ void PauseScreen::input(const platform::InputEvent& e) {
 // play screen keeps draining them, or the ring would fill in 4 s.
 void PauseScreen::update(double) { play_.drainWhilePaused(); }
 
+// Beside the scene, not over it: after a safety stop the player looks at
+// the hemisphere to see where it stopped.
 void PauseScreen::paint() {
-  beginCentredPanel("pause", 420);
+  beginSidePanel("pause", 460);
   ImGui::SetWindowFontScale(1.6f);
   ImGui::Text("Paused");
   ImGui::SetWindowFontScale(1.0f);
-  if (!reason_.empty()) ImGui::TextColored(ImVec4(0.95f, 0.75f, 0.3f, 1), "%s", reason_.c_str());
+  if (!reason_.empty()) wrappedText(ImVec4(0.95f, 0.75f, 0.3f, 1), reason_);
   const ImVec2 button(-1, 0);
   if (ImGui::Button("Continue  (Esc)", button)) resume();
   // A research session's trial is recorded once: it cannot be restarted.

@@ -1,6 +1,7 @@
 #pragma once
-// Pause, over the play screen (which keeps being drawn, frozen: the servo
-// loop got a Pause command, force zero at once). Continue (Escape, Enter),
+// Pause, beside the play screen (which keeps being drawn, frozen: the servo
+// loop got a Pause command, force zero at once; the frames slow to
+// App::kStillFps). Continue (Escape, Enter),
 // restart (R; not a research session's trial, which is recorded once), quit
 // the trial (Q: it ends as a failure, "quit by the player", and the results
 // screen follows, or the session screen for a session's trial).
@@ -20,6 +21,7 @@ class PauseScreen final : public Screen {
       : Screen(host), play_(play), reason_(std::move(reason)) {}
   const char* name() const override { return "pause"; }
   bool overlay() const override { return true; }
+  FrameNeed frameNeed() const override { return FrameNeed::Still; }
   void input(const platform::InputEvent& e) override;
   void update(double dt) override;
   void paint() override;

@@ -2,6 +2,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -14,10 +15,13 @@
 #include "game/audio/Audio.h"
 #include "game/screens/FreePlay.h"
 #include "game/screens/PauseScreen.h"
+#include "game/hud/WrappedText.h"
 #include "game/screens/ScreenHost.h"
 #include "game/screens/ScreenLayout.h"
 #include "game/screens/ScreenStack.h"
 #include "game/trial/GhostFile.h"
+#include "game/hud/HudLayout.h"
+#include "game/screens/MedalTimes.h"
 #include "game/view/RenderSceneBuilder.h"
 
 namespace hemiroll::game {
@@ -37,6 +41,8 @@ void PlayScreen::begin() {
     def.device = host_.settings().device;
     def.deviceOptions.joystick.index = host_.settings().joystickIndex;
     def.deviceOptions.udp.port = static_cast<std::uint16_t>(host_.settings().udpPort);
+    def.pointer.metresPerPixel =
+        std::clamp(host_.settings().mouseMmPerPixel, kMouseMmPerPixel[0], kMouseMmPerPixel[1]) * 1e-3;
     def.requestRealtime = host_.requestRealtime();
     session_ = mode_->begin(level_, def);
     session_->start();
@@ -48,6 +54,7 @@ void PlayScreen::begin() {
   }
   const bool mouse = host_.settings().device == "mouse";
   hud_.reset();
+  goalStage_ = -2;
   const physics::CouplingDef coupling = mode_->coupling(level_.def);
   hud_.setLabels(mode_->title(level_.def), host_.settings().device,
                  coupling.visualOnly ? "visual only" : physics::forceMethodName(coupling.method), mouse,
@@ -73,6 +80,7 @@ void PlayScreen::loadGhost() {
   try {
     ghost_ = std::make_unique<ReplayPlayer>(level_.def, mode_->levelPath(), file);
     ghostTime_ = ghostTime(file);
+    ghostOwner_ = ghostOwner(file);
   } catch (const std::exception& e) {
     hud_.setGhost(std::string("no ghost: ") + e.what());
   }
@@ -88,6 +96,14 @@ void PlayScreen::enter() {
 }
 
 void PlayScreen::leave() { host_.window().capturePointer(false); }
+
+// Watching the autopilot, nobody steers: fewer frames leave its planner the
+// CPU (measured, docs/WINDOW.md: the paper's task watched with one core
+// busy won 1 of 5 at 60 fps, 5 of 5 at 30).
+FrameNeed PlayScreen::frameNeed() const {
+  if (!session_) return FrameNeed::Menu;
+  return session_->autopilotHolds() ? FrameNeed::Watch : FrameNeed::Play;
+}
 
 void PlayScreen::pause() {
   if (!session_ || session_->finished()) return;
@@ -106,7 +122,9 @@ void PlayScreen::restart() {
 void PlayScreen::watchAutopilot() {
   if (!mode_->restartAllowed()) return;
   const std::string level = mode_->levelPath();
-  mode_ = std::make_unique<FreePlay>(host_, level, /*watch=*/true);
+  auto watching = std::make_unique<FreePlay>(host_, level, /*watch=*/true);
+  if (const auto* free = dynamic_cast<const FreePlay*>(mode_.get())) watching->setPlaylist(free->playlist());
+  mode_ = std::move(watching);
   begin();
 }
 
@@ -192,11 +210,15 @@ void PlayScreen::keyAction(KeyAction action, bool repeat) {
 void PlayScreen::update(double dt) {
   if (!session_) return;
   session_->frame();
-  for (const script::LevelMessage& m : level_.script->takeMessages()) hud_.addMessage(m.text, m.time + m.duration);
+  for (const script::LevelMessage& m : level_.script->takeMessages())
+    hud_.addMessage(withKeyNames(m.text, host_.settings().keys), m.time + m.duration);
   pollScore(dt);
   const haptics::ServoSnapshot& s = session_->snapshot();
-  hud_.update(s, session_->judging().judge());
   buildScene(s);
+  hud_.update(s, session_->judging().judge());
+  const platform::PixelSize window = host_.window().windowSize();
+  hud_.setKeepClear(hemisphereRect(scene_, static_cast<float>(window.width), static_cast<float>(window.height)));
+  showGoal();
   hud_.setPrompt(prompt());
   playSounds(s);
   if (safetyStop()) return;
@@ -268,14 +290,45 @@ void PlayScreen::showAutopilot() {
     hud_.setAutopilot("");
 }
 
+// The task's short form for the stage the judge is on: on screen all along
+// (the level's own texts come and go).
+void PlayScreen::showGoal() {
+  const script::TaskJudge& judge = session_->judging().judge();
+  const int stage = judge.stage();
+  if (stage == goalStage_) return;
+  goalStage_ = stage;
+  const script::StageDef* current = judge.currentStage();
+  const int count = static_cast<int>(judge.task().stages.size());
+  hud_.setGoal(current ? taskGoal(*current, stage, count)
+                       : judge.task().watchOnly() ? "Watch: the level plays itself" : "");
+}
+
 // What the player must do now, if anything: take hold to start (the clock
-// waits), or take hold again after letting go, before the mass point slides
-// off the face.
+// waits), or take hold again after letting go or a stop (the physics waits:
+// the mass point does not slide off the face meanwhile).
 std::string PlayScreen::prompt() const {
   if (session_->autopilotHolds() || session_->finished() || !session_->waitingFor().empty()) return "";
   const std::string key = host_.settings().keys.keyName(KeyAction::TakeHold);
-  if (session_->awaitingTakeHold()) return "Click or press " + key + " to take hold\nthe clock starts then";
-  if (session_->letGo()) return "You let go: click or press " + key + "\nto take hold again";
+  const std::string how = session_->deviceName() == "mouse" ? "Click or press " + key : "Press " + key;
+  if (session_->awaitingTakeHold()) return how + " to take hold\nthe clock starts then";
+  const bool armed = session_->snapshot().engagement == haptics::Engagement::Armed;
+  switch (session_->frozen()) {
+    case Freeze::None: break;
+    case Freeze::LetGo:
+      if (armed) return "Bring the handle onto the mass point\nto take hold again";
+      return "You let go: the hemisphere waits.\n" + how + " to take hold again";
+    case Freeze::Paused:
+      if (armed) return "Bring the handle onto the mass point\nto take hold again";
+      return "The hemisphere waits.\n" + how + " to take hold again";
+    case Freeze::SafetyStop: {
+      const std::string what = session_->stops().empty()
+                                   ? std::string("safety stop")
+                                   : std::string("Safety stop: ") + haptics::safetyFaultName(session_->stops().back().fault);
+      if (armed) return what + ".\nBring the handle onto the mass point to go on";
+      return what + ".\nThe hemisphere waits: " + how + " to take hold again";
+    }
+  }
+  if (session_->letGo()) return "You let go: " + how + "\nto take hold again";
   return "";
 }
 
@@ -289,9 +342,15 @@ void PlayScreen::followGhost(const haptics::ServoSnapshot& s) {
   // time is timed by its length.)
   const double best = ghostTime_.value_or(static_cast<double>(ghost_->ticksTotal()) * ghost_->period());
   const bool finished = ghostTime_ ? s.time >= *ghostTime_ : ghost_->done();
+  // Whose run it is: the player's best, or the autopilot's line they chose to race.
+  const bool autopilot = ghostOwner_ == GhostOwner::Autopilot;
   char line[96];
-  std::snprintf(line, sizeof line, finished ? "ghost: your best finished at %.2f s" : "ghost: your best, %.2f s",
-                best);
+  if (finished)
+    std::snprintf(line, sizeof line, autopilot ? "ghost: the autopilot's line finished at %.2f s"
+                                               : "ghost: your best finished at %.2f s", best);
+  else
+    std::snprintf(line, sizeof line, autopilot ? "ghost: the autopilot's line, %.2f s" : "ghost: your best, %.2f s",
+                  best);
   hud_.setGhost(line);
 }
 
@@ -309,14 +368,18 @@ void PlayScreen::playSounds(const haptics::ServoSnapshot& s) {
   audio.setProximity(s.engagement == haptics::Engagement::Engaged ? closeness : 0.0);
 }
 
-// A watchdog stopped the loop (force already off): pause and say why.
+// A watchdog stopped the loop (force already off, the physics standing
+// still): pause and say why, and how to go on.
 bool PlayScreen::safetyStop() {
   if (session_->fault() == haptics::SafetyFault::None || session_->finished()) return false;
   host_.audio().setProximity(0.0);
   session_->pause();
+  const std::string key = host_.settings().keys.keyName(KeyAction::TakeHold);
   host_.screens().push(std::make_unique<PauseScreen>(
-      host_, *this, std::string("safety stop: ") + haptics::safetyFaultName(session_->fault()) +
-                       ". The force is off; continue to take hold again."));
+      host_, *this,
+      std::string("Safety stop: ") + haptics::safetyFaultName(session_->fault()) +
+          ". The force is off and the hemisphere waits where it is. Continue, then take hold again (" +
+          (session_->deviceName() == "mouse" ? "click or " + key : key) + ") to play on."));
   return true;
 }
 
@@ -324,10 +387,20 @@ void PlayScreen::endTrial() {
   host_.audio().setProximity(0.0);
   TrialResult result = session_->finish();
   host_.audio().play(result.outcome == script::TrialOutcome::Success ? Cue::Success : Cue::Failure);
-  // The last frame stays on screen behind the results, with what decided it.
+  // The last frame stays on screen behind the results, with what decided it
+  // and what the loop's timing did to it.
   TrialEnding ending = TrialEnding::of(scene_, scene_.trace);
-  ending.decidedBy = explainEnding(result, session_->judging().judge().task());
+  ending.decidedBy = explainEnding(result, session_->judging().judge().task(), render::screenRightHeading(scene_.camera));
+  LoopStory story;
+  const haptics::ServoSnapshot& last = session_->snapshot();
+  story.forceOutput = session_->device().spec().hasForceOutput;
+  story.stalls = last.stalls;
+  story.worstLateness = last.maxLateness;
+  story.slowedBy = static_cast<double>(last.missedTicks) * 1e-3;
+  for (const SafetyStop& stop : session_->stops()) story.stops.push_back({haptics::safetyFaultName(stop.fault), stop.time});
+  for (std::string& line : explainLoop(story)) ending.decidedBy.push_back(std::move(line));
   ending.scoring = level_.def.scoring;
+  ending.medalTimes = medalTimes(level_);
   mode_->finished(*session_, std::move(result), level_.def, std::move(ending));
 }
 
@@ -338,7 +411,7 @@ void PlayScreen::paint() {
   if (!session_) {
     beginCentredPanel("play error", 700);
     ImGui::TextColored(ImVec4(1, 0.5f, 0.4f, 1), "This level cannot be played:");
-    ImGui::TextWrapped("%s", error_.c_str());
+    wrappedText(error_);
     if (ImGui::Button("Back  (Esc)")) back();
     ImGui::End();
     return;
@@ -351,11 +424,11 @@ void PlayScreen::paint() {
   if (!session_->waitingFor().empty()) {
     beginCentredPanel("waiting for the device", 640);
     ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1), "Waiting for the %s", session_->deviceName().c_str());
-    ImGui::TextWrapped("%s", session_->waitingFor().c_str());
+    wrappedText(session_->waitingFor());
     if (session_->deviceName() == "udp")
-      ImGui::TextWrapped("Start the device's bridge program, or the reference client: "
-                         "hemiroll-haptic-client --port %d (docs/UDP_BRIDGE.md). The trial starts with its first state.",
-                         host_.settings().udpPort);
+      wrappedTextf("Start the device's bridge program, or the reference client: "
+                   "hemiroll-haptic-client --port %d (docs/UDP_BRIDGE.md). The trial starts with its first state.",
+                   host_.settings().udpPort);
     ImGui::TextDisabled("Esc: pause, and quit from there");
     ImGui::End();
   }

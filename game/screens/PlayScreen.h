@@ -34,6 +34,7 @@
 #include "game/screens/PlayMode.h"
 #include "game/screens/Screen.h"
 #include "game/play/ReplayPlayer.h"
+#include "game/trial/GhostFile.h"
 
 namespace hemiroll::game {
 
@@ -44,6 +45,7 @@ class PlayScreen final : public Screen {
   PlayScreen(ScreenHost& host, std::string levelPath);
   ~PlayScreen() override;
   const char* name() const override { return "play"; }
+  FrameNeed frameNeed() const override;
   void enter() override;
   void leave() override;
   void input(const platform::InputEvent& e) override;
@@ -79,6 +81,7 @@ class PlayScreen final : public Screen {
   void showAutopilot();
   void playSounds(const haptics::ServoSnapshot& s);
   bool safetyStop();
+  void showGoal();
   std::string prompt() const;
   void endTrial();
   void back();
@@ -90,6 +93,7 @@ class PlayScreen final : public Screen {
   std::unique_ptr<PlaySession> session_;
   std::unique_ptr<ReplayPlayer> ghost_;
   std::optional<double> ghostTime_;  // [s] the ghost's judged time, when kept with it
+  GhostOwner ghostOwner_ = GhostOwner::Player;
   PlayHud hud_;
   HintCompass compass_;  // the autopilot's hint in screen directions
   FloorInset inset_;     // the targets and zones round the contact point, magnified
@@ -99,6 +103,7 @@ class PlayScreen final : public Screen {
   bool started_ = false;
   double scoreClock_ = 0.0;  // [s] since the running score was last asked for
   bool showHint_ = false;    // the hint key toggles the autopilot's hint
+  int goalStage_ = -2;       // the stage whose goal the HUD shows (-2: none yet)
 };
 
 }  // namespace hemiroll::game

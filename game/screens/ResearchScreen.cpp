@@ -12,6 +12,7 @@
 #include "game/research/ResearchSession.h"
 #include "game/research/SessionFolder.h"
 #include "game/scores/ScoreStore.h"
+#include "game/hud/WrappedText.h"
 #include "game/screens/ScreenHost.h"
 #include "game/screens/ScreenLayout.h"
 #include "game/screens/ScreenStack.h"
@@ -90,7 +91,8 @@ void ResearchScreen::select(int index) {
 void ResearchScreen::refresh() {
   canStart_ = false;
   if (protocols_.empty()) {
-    status_ = "no protocols (*.lua) in " + host_.levelsDir() + "/protocols";
+    status_ = host_.levelsDir().empty() ? "no levels folder found: start hemiroll with --levels DIR"
+                                        : "no protocols (*.lua) in " + host_.levelsDir() + "/protocols";
     return;
   }
   const ProtocolEntry& p = protocols_[static_cast<std::size_t>(selected_)];
@@ -145,10 +147,10 @@ void ResearchScreen::paint() {
     if (ImGui::Selectable(label.c_str(), selected_ == static_cast<int>(i))) select(static_cast<int>(i));
     if (!p.error.empty()) {
       ImGui::PushStyleColor(ImGuiCol_Text, kRed);
-      ImGui::TextWrapped("    %s", p.error.c_str());
+      wrappedText("    " + p.error);
       ImGui::PopStyleColor();
     }
-    else if (selected_ == static_cast<int>(i) && !p.description.empty()) ImGui::TextWrapped("    %s", p.description.c_str());
+    else if (selected_ == static_cast<int>(i) && !p.description.empty()) wrappedText("    " + p.description);
     ImGui::PopID();
   }
   ImGui::Separator();
@@ -163,7 +165,7 @@ void ResearchScreen::paint() {
   ImGui::TextDisabled("data root: %s", defaultSessionsRoot().string().c_str());
   ImGui::TextDisabled("(free play stores its scores under this participant id in %s)", host_.scores().file().c_str());
   ImGui::TextDisabled("(set HEMIROLL_DATA_DIR or XDG_DATA_HOME to change it)");
-  ImGui::TextWrapped("%s", status_.c_str());
+  wrappedText(status_);
   ImGui::BeginDisabled(!canStart_);
   if (ImGui::Button("Start  (Enter)", ImVec2(-1, 0))) start();
   ImGui::EndDisabled();

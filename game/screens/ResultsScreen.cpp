@@ -15,6 +15,8 @@
 #include "game/screens/ScreenHost.h"
 #include "game/screens/ScreenStack.h"
 #include "game/trial/GhostFile.h"
+#include "game/hud/WrappedText.h"
+#include "game/screens/FreePlay.h"
 #include "game/screens/PlayScreen.h"
 #include "game/screens/ReplayScreen.h"
 #include "game/screens/ScreenLayout.h"
@@ -48,10 +50,31 @@ ResultsScreen::ResultsScreen(ScreenHost& host, std::string levelPath, std::strin
   entry.score = result_.score;
   entry.medal = script::medalName(result_.medal);
   stored_ = host_.scores().add(entry);
-  if (newBest_ && !replay_.empty()) {
-    const std::string error = keepAsGhost(replay_, ghostFile(record::dataDirectory(), levelName_, player), result_.time);
-    replayNote_ = error.empty() ? "kept as your ghost: race it next time" : error;
-  }
+  // A first success becomes the ghost; one already there (the player's
+  // own, or the autopilot's line they chose) is replaced only when they say
+  // so (K): a slower best of theirs replaced the autopilot's line unasked.
+  std::error_code ec;
+  const bool ghostExists = std::filesystem::exists(ghostFile(record::dataDirectory(), levelName_, player), ec);
+  if (newBest_ && !replay_.empty() && !ghostExists) raceThisRun();
+}
+
+bool ResultsScreen::offersRaceThisRun() const {
+  return !assisted_ && !ghostKept_ && !replay_.empty() && result_.outcome == script::TrialOutcome::Success;
+}
+
+void ResultsScreen::raceThisRun() {
+  if (replay_.empty() || assisted_) return;
+  const std::filesystem::path ghost = ghostFile(record::dataDirectory(), levelName_, host_.settings().participant);
+  std::string error = keepAsGhost(replay_, ghost, result_.time);
+  if (error.empty()) error = keepGhostOwner(ghost, GhostOwner::Player);
+  ghostKept_ = error.empty();
+  replayNote_ = error.empty() ? "kept as your ghost: race it next time" : error;
+}
+
+std::string ResultsScreen::nextLevel() const {
+  for (std::size_t i = 0; i + 1 < playlist_.size(); ++i)
+    if (playlist_[i] == levelPath_) return playlist_[i + 1];
+  return "";
 }
 
 ResultsScreen::~ResultsScreen() {
@@ -61,9 +84,11 @@ ResultsScreen::~ResultsScreen() {
 
 void ResultsScreen::raceThisLine() {
   if (replay_.empty()) return;
-  const std::string error =
-      keepAsGhost(replay_, ghostFile(record::dataDirectory(), levelName_, host_.settings().participant), result_.time);
-  replayNote_ = error.empty() ? "kept as your ghost: race the autopilot's line next time" : error;
+  const std::filesystem::path ghost = ghostFile(record::dataDirectory(), levelName_, host_.settings().participant);
+  std::string error = keepAsGhost(replay_, ghost, result_.time);
+  if (error.empty()) error = keepGhostOwner(ghost, GhostOwner::Autopilot);
+  ghostKept_ = error.empty();
+  replayNote_ = error.empty() ? "kept as the level's ghost: race the autopilot's line next time" : error;
 }
 
 void ResultsScreen::saveReplay() {
@@ -88,13 +113,27 @@ void ResultsScreen::watchReplay() {
   if (!replay_.empty()) host_.screens().push(std::make_unique<ReplayScreen>(host_, levelPath_, replay_));
 }
 
-void ResultsScreen::again() { host_.screens().replace(std::make_unique<PlayScreen>(host_, levelPath_)); }
+void ResultsScreen::again() {
+  auto mode = std::make_unique<FreePlay>(host_, levelPath_);
+  mode->setPlaylist(playlist_);
+  host_.screens().replace(std::make_unique<PlayScreen>(host_, std::move(mode)));
+}
+
+void ResultsScreen::next() {
+  const std::string level = nextLevel();
+  if (level.empty()) return;
+  auto mode = std::make_unique<FreePlay>(host_, level);
+  mode->setPlaylist(playlist_);
+  host_.screens().replace(std::make_unique<PlayScreen>(host_, std::move(mode)));
+}
 
 void ResultsScreen::input(const platform::InputEvent& e) {
   if (e.type != platform::InputType::KeyDown || e.repeat) return;
-  if (e.key == platform::Key::Enter) again();
+  if (e.key == platform::Key::Enter || e.code == 'r') again();
+  else if (e.code == 'n') next();
   else if (e.code == 's') saveReplay();
   else if (e.code == 'g' && assisted_ && result_.outcome == script::TrialOutcome::Success) raceThisLine();
+  else if (e.code == 'k' && offersRaceThisRun()) raceThisRun();
   else if (e.code == 'w') watchReplay();
   else if (e.key == platform::Key::Escape) host_.screens().pop();
 }
@@ -139,65 +178,49 @@ void drawConfetti(double seconds) {
 }  // namespace
 
 void ResultsScreen::paint() {
-  // The trial's last frame stays in view, and the panel stands to its right.
-  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  // The trial's last frame stays in view, and the panel stands to its right,
+  // clear of the hemisphere.
   if (ending_.hasScene) {
     const platform::PixelSize px = host_.window().drawableSize();
     host_.renderer().render(ending_.scene, px.width, px.height);
   }
   const bool success = result_.outcome == script::TrialOutcome::Success;
-  // Narrow enough to leave the hemisphere (the middle of the window) clear at 1280 px.
-  const float width = std::min(ending_.hasScene ? 460.0f : 560.0f, display.x - 20.0f);
-  if (ending_.hasScene) {
-    ImGui::SetNextWindowPos(ImVec2(display.x - 10, display.y / 2), ImGuiCond_Always, ImVec2(1.0f, 0.5f));
-    ImGui::SetNextWindowSize(ImVec2(width, 0), ImGuiCond_Always);
-    ImGui::SetNextWindowBgAlpha(0.85f);
-    ImGui::Begin("results", nullptr,
-                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings);
-  } else {
-    beginCentredPanel("results", width);
-  }
+  if (ending_.hasScene) beginSidePanel("results", 480);
+  else beginCentredPanel("results", 560);
   ImGui::SetWindowFontScale(1.8f);
   if (success && result_.medal != script::Medal::None)
     ImGui::TextColored(medalColour(result_.medal), "Success: %s medal", script::medalName(result_.medal));
   else
     ImGui::TextColored(success ? kGreenText : kRedText, "%s", success ? "Success" : "Not this time");
   ImGui::SetWindowFontScale(1.0f);
-  ImGui::TextWrapped("%s", levelName_.c_str());
+  wrappedText(levelName_);
   ImGui::Text("time %.2f s", result_.time);
-  if (ending_.decidedBy.empty()) ImGui::TextWrapped("%s", result_.reason.c_str());
-  ImGui::PushTextWrapPos(0.0f);
-  for (const std::string& line : ending_.decidedBy) ImGui::TextDisabled("%s", line.c_str());
-  ImGui::PopTextWrapPos();
+  if (ending_.decidedBy.empty()) wrappedText(result_.reason);
+  for (const std::string& line : ending_.decidedBy) wrappedTextDisabled(line);
   if (result_.score)
     ImGui::Text("score %.1f   medal %s", *result_.score, script::medalName(result_.medal));
   else if (!result_.scoreError.empty())
-    ImGui::TextColored(kRedText, "no score: %s", result_.scoreError.c_str());
-  if (const std::string medals = medalThresholds(ending_.scoring); !medals.empty()) {
-    ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextDisabled("medals: %s", medals.c_str());
-    ImGui::PopTextWrapPos();
-  }
+    wrappedText(kRedText, "no score: " + result_.scoreError);
+  if (const std::string medals = medalLine(ending_.scoring, ending_.medalTimes); !medals.empty())
+    wrappedTextDisabled("medals: " + medals);
   if (!result_.endCallbackError.empty())
-    ImGui::TextColored(kRedText, "the level's end callback failed: %s", result_.endCallbackError.c_str());
+    wrappedText(kRedText, "the level's end callback failed: " + result_.endCallbackError);
   if (newBest_) ImGui::TextColored(kGoldText, "new personal best");
   if (before_.bestTime) ImGui::Text("personal best before: %.2f s", *before_.bestTime);
-  if (!stored_ && !assisted_) ImGui::TextDisabled("(this trial could not be stored in %s)", host_.scores().file().c_str());
+  if (!stored_ && !assisted_) wrappedTextDisabled("(this trial could not be stored in " + host_.scores().file().string() + ")");
   const ImVec2 button(-1, 0);
+  const std::string next = nextLevel();
+  if (!next.empty() && ImGui::Button("Next level  (N)", button)) this->next();
+  if (ImGui::Button("Play again  (Enter, R)", button)) again();
   if (!replay_.empty()) {
     if (!replaySaved_ && ImGui::Button("Save replay  (S)", button)) saveReplay();
     if (ImGui::Button("Watch replay  (W)", button)) watchReplay();
   }
-  if (assisted_ && result_.outcome == script::TrialOutcome::Success && !replay_.empty() &&
-      ImGui::Button("Race this line  (G)", button))
+  if (assisted_ && success && !replay_.empty() && !ghostKept_ && ImGui::Button("Race this line  (G)", button))
     raceThisLine();
-  // A saved file's path can be longer than the panel: wrapped, not clipped.
-  if (!replayNote_.empty()) {
-    ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextDisabled("%s", replayNote_.c_str());
-    ImGui::PopTextWrapPos();
-  }
-  if (ImGui::Button("Play again  (Enter)", button)) again();
+  if (offersRaceThisRun() && ImGui::Button("Race this run next time  (K)", button)) raceThisRun();
+  // A saved file's path can be longer than the panel: wrapped, not cut.
+  if (!replayNote_.empty()) wrappedTextDisabled(replayNote_);
   if (ImGui::Button("Levels  (Esc)", button)) host_.screens().pop();
   const ImVec2 at = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
   panelRect_ = WindowRect{"results", at.x, at.y, size.x, size.y};

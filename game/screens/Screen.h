@@ -15,6 +15,14 @@ namespace hemiroll::game {
 
 class ScreenHost;
 
+// How many frames a screen needs (the App paces the main thread to it, so
+// that the servo thread keeps a core): Play draws a moving scene at the
+// player's frame cap; Watch is a scene the player only looks at (the
+// autopilot playing: its planner needs the CPU more than the eye needs 60
+// frames); Menu is a menu's hover and clicks (a few dozen a second); Still
+// is a picture that does not change (paused).
+enum class FrameNeed { Play, Watch, Menu, Still };
+
 class Screen {
  public:
   explicit Screen(ScreenHost& host) : host_(host) {}
@@ -31,6 +39,8 @@ class Screen {
   virtual void paint() = 0;
   // An overlay (pause) paints over the screen below it instead of hiding it.
   virtual bool overlay() const { return false; }
+  // The frames this screen needs while it is the top one.
+  virtual FrameNeed frameNeed() const { return FrameNeed::Menu; }
 
  protected:
   ScreenHost& host_;

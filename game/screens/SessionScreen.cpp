@@ -7,6 +7,7 @@
 
 #include "engine/haptics/MouseDevice.h"
 #include "game/screens/PlayScreen.h"
+#include "game/hud/WrappedText.h"
 #include "game/screens/ScreenHost.h"
 #include "game/screens/ScreenLayout.h"
 #include "game/screens/ScreenStack.h"
@@ -96,7 +97,7 @@ void SessionScreen::paintNext(Stage stage) {
   if (const ManifestBreak* pause = session_->pendingBreak()) {
     ImGui::Separator();
     ImGui::TextColored(kGold, "Break");
-    ImGui::TextWrapped("%s", pause->message.c_str());
+    wrappedText(pause->message);
     if (stage == Stage::Break) ImGui::Text("the next block starts in %.0f s", std::ceil(breakLeft_));
   }
   ImGui::Separator();
@@ -110,7 +111,7 @@ void SessionScreen::paintNext(Stage stage) {
   ImGui::Text("force: %s, k_r %.0f N/m, k_v %.1f N s/m%s; time limit %.0f s", t.method.c_str(), t.stiffness, t.damping,
               alpha, t.timeLimit);
   if (t.trialInBlock == 1 && !session_->instructionsOf(t).empty())
-    ImGui::TextWrapped("%s", session_->instructionsOf(t).c_str());
+    wrappedText(session_->instructionsOf(t));
   ImGui::Spacing();
   ImGui::BeginDisabled(stage != Stage::Ready);
   if (ImGui::Button("Start the trial  (Enter)", ImVec2(-1, 0))) startTrial();
@@ -135,14 +136,14 @@ void SessionScreen::paint() {
   }
   if (now == Stage::Error) {
     ImGui::TextColored(kRed, "The session cannot go on:");
-    ImGui::TextWrapped("%s", error_.c_str());
+    wrappedText(error_);
   } else if (now == Stage::Complete) {
     ImGui::Separator();
     ImGui::TextColored(kGold, "Session complete. Thank you!");
   } else if (now == Stage::Stopped) {
     ImGui::Separator();
     ImGui::TextColored(kGold, "This sitting ends here");
-    ImGui::TextWrapped("%s", session_->pendingBreak()->message.c_str());
+    wrappedText(session_->pendingBreak()->message);
     ImGui::TextDisabled("Start the same session again to continue.");
   } else {
     paintNext(now);

@@ -7,6 +7,7 @@
 #include "engine/physics/ForceCoupling.h"
 #include "game/app/Settings.h"
 #include "game/audio/Audio.h"
+#include "game/hud/WrappedText.h"
 #include "game/screens/ScreenHost.h"
 #include "game/screens/ScreenLayout.h"
 #include "game/screens/ScreenStack.h"
@@ -45,10 +46,8 @@ void SettingsScreen::listenFor(KeyAction action) {
 
 void SettingsScreen::paintKeys() {
   KeyBindings& keys = host_.settings().keys;
-  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-  ImGui::TextWrapped("mouse: left click takes hold, right click lets go, the wheel sets the proxy's height; "
-                     "Esc pauses (and cannot be changed)");
-  ImGui::PopStyleColor();
+  wrappedTextDisabled("mouse: left click takes hold, right click lets go, the wheel sets the proxy's height; "
+                      "Esc pauses (and cannot be changed)");
   // Two actions a row, each its name and a button with its key; the
   // buttons stand right of the longest name at this font scale.
   float longest = 0.0f;
@@ -76,10 +75,7 @@ void SettingsScreen::paintKeys() {
     listening_.reset();
     keyNote_ = "the default keys";
   }
-  if (!keyNote_.empty()) {
-    ImGui::SameLine();
-    ImGui::TextDisabled("%s", keyNote_.c_str());
-  }
+  if (!keyNote_.empty()) wrappedTextDisabled(keyNote_);
 }
 
 void SettingsScreen::paint() {
@@ -88,6 +84,9 @@ void SettingsScreen::paint() {
   ImGui::SetWindowFontScale(1.6f);
   ImGui::Text("Settings");
   ImGui::SetWindowFontScale(1.0f);
+  // Half the panel for a slider, the rest for its label: the longest label
+  // ("stiffness k_r [N/m]", "mouse: mm per pixel") then fits beside it.
+  ImGui::PushItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
 
   ImGui::Separator();
   ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1), "Device");
@@ -97,17 +96,23 @@ void SettingsScreen::paint() {
     if (ImGui::RadioButton(kDevices[i], s.device == kDevices[i])) s.device = kDevices[i];
   }
   if (s.device == "mouse") {
-    ImGui::TextDisabled("no force feedback: the coupling force is drawn as an arrow");
+    wrappedTextDisabled("no force feedback: the coupling force is drawn as an arrow");
+    float mm = static_cast<float>(s.mouseMmPerPixel);
+    if (ImGui::SliderFloat("mouse: mm per pixel", &mm, static_cast<float>(kMouseMmPerPixel[0]),
+                           static_cast<float>(kMouseMmPerPixel[1]), "%.2f", ImGuiSliderFlags_Logarithmic))
+      s.mouseMmPerPixel = std::clamp(static_cast<double>(mm), kMouseMmPerPixel[0], kMouseMmPerPixel[1]);
+    wrappedTextDisabled("how far the proxy moves per pixel of mouse motion: lower is finer, higher reaches further "
+                        "(0.25 spans a desk device's 20 cm in 800 pixels)");
   } else if (s.device == "joystick") {
     ImGui::InputInt("joystick index", &s.joystickIndex);
     s.joystickIndex = std::clamp(s.joystickIndex, 0, 63);
-    ImGui::TextDisabled("an SDL force-feedback joystick or wheel (constant-force effect)");
+    wrappedTextDisabled("an SDL force-feedback joystick or wheel (constant-force effect)");
   } else {
     ImGui::InputInt("udp port", &s.udpPort);
     s.udpPort = std::clamp(s.udpPort, 1, 65535);
-    ImGui::TextWrapped("a haptic device behind the UDP bridge on 127.0.0.1:%d: start its bridge program "
-                       "(or hemiroll-haptic-client); the trial starts with its first state (docs/UDP_BRIDGE.md)",
-                       s.udpPort);
+    wrappedTextf("a haptic device behind the UDP bridge on 127.0.0.1:%d: start its bridge program "
+                 "(or hemiroll-haptic-client); the trial starts with its first state (docs/UDP_BRIDGE.md)",
+                 s.udpPort);
   }
 
   ImGui::Separator();
@@ -123,7 +128,7 @@ void SettingsScreen::paint() {
   ImGui::EndDisabled();
   if (s.overrideCoupling) {
     const std::string problem = physics::validateCoupling(couplingFor(s, physics::CouplingDef{}));
-    if (!problem.empty()) ImGui::TextColored(ImVec4(1, 0.5f, 0.4f, 1), "%s", problem.c_str());
+    if (!problem.empty()) wrappedText(ImVec4(1, 0.5f, 0.4f, 1), problem);
   }
 
   ImGui::Separator();
@@ -137,16 +142,22 @@ void SettingsScreen::paint() {
     s.volume = volume;
     host_.audio().setVolume(volume);
   }
-  if (!host_.audio().available()) {
-    ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextDisabled("%s", host_.audio().note().c_str());
-    ImGui::PopTextWrapPos();
-  }
+  if (!host_.audio().available()) wrappedTextDisabled(host_.audio().note());
 
   ImGui::Separator();
   ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1), "Graphics");
   bool vsync = s.vsync;
   if (ImGui::Checkbox("vsync", &vsync)) host_.setVsync(vsync);
+  int cap = s.frameCap;
+  if (ImGui::SliderInt("frame cap [fps]", &cap, kFrameCapFps[0], kFrameCapFps[1]))
+    s.frameCap = std::clamp(cap, kFrameCapFps[0], kFrameCapFps[1]);
+  wrappedTextDisabled("frames in play at most (watching the autopilot and menus 30, paused 15): the rest of the "
+                      "CPU goes to the 1 kHz servo loop and the autopilot");
+  float scale = static_cast<float>(s.uiScale);
+  if (ImGui::SliderFloat("interface scale", &scale, static_cast<float>(kUiScale[0]), static_cast<float>(kUiScale[1]),
+                         "%.2f"))
+    s.uiScale = std::clamp(static_cast<double>(scale), kUiScale[0], kUiScale[1]);
+  wrappedTextDisabled("text and dials, times the window's height / 720");
   int camera = static_cast<int>(s.camera);
   static constexpr const char* kCameras[] = {"follow", "orbit", "top"};
   if (ImGui::Combo("camera", &camera, kCameras, IM_ARRAYSIZE(kCameras))) s.camera = static_cast<render::CameraMode>(camera);
@@ -156,6 +167,7 @@ void SettingsScreen::paint() {
 
   ImGui::Spacing();
   if (ImGui::Button("Back  (Esc)", ImVec2(-1, 0))) host_.screens().pop();
+  ImGui::PopItemWidth();
   ImGui::End();
 }
 

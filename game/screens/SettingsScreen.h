@@ -1,8 +1,10 @@
 #pragma once
-// Settings: device, force method and gains (the level's, or the player's
-// override), keys (each play action's key: click it, press the new one),
-// audio volume, graphics (vsync, camera, zoom). Changes apply at once
-// (volume, vsync, keys) or from the next trial (device, coupling, camera),
+// Settings: device (the mouse's sensitivity), force method and gains (the
+// level's, or the player's override), keys (each play action's key: click
+// it, press the new one), audio volume, graphics (vsync, frame cap,
+// interface scale, camera, zoom). Changes apply at once
+// (volume, vsync, frame cap, interface scale, keys) or from the next trial
+// (device, mouse sensitivity, coupling, camera),
 // and are saved (settings.json) when the screen is left. Escape goes back,
 // or cancels a key being changed.
 

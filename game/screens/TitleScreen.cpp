@@ -2,6 +2,8 @@
 
 #include <imgui.h>
 
+#include "game/app/Settings.h"
+#include "game/hud/WrappedText.h"
 #include "game/screens/LevelSelectScreen.h"
 #include "game/screens/ResearchScreen.h"
 #include "game/screens/ScreenHost.h"
@@ -28,14 +30,15 @@ void TitleScreen::paint() {
   ImGui::SetWindowFontScale(3.0f);
   ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1.0f), "hemiroll");
   ImGui::SetWindowFontScale(1.0f);
-  ImGui::TextWrapped("Roll the hemisphere by moving the mass point on its face. Click on the mass point to take hold.");
+  wrappedText("Roll the hemisphere by moving the mass point on its face. In a level, click or press " +
+              host_.settings().keys.keyName(KeyAction::TakeHold) + " to take hold.");
   ImGui::Spacing();
   const ImVec2 button(-1, 0);
   if (ImGui::Button("Play  (Enter)", button)) play();
   if (ImGui::Button("Settings  (S)", button)) settings();
   if (ImGui::Button("Research session  (R)", button)) research();
   if (ImGui::Button("Quit  (Esc)", button)) host_.requestQuit();
-  for (const std::string& note : host_.notes()) ImGui::TextDisabled("%s", note.c_str());
+  for (const std::string& note : host_.notes()) wrappedTextDisabled(note);
   ImGui::End();
 }
 

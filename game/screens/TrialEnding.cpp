@@ -1,9 +1,11 @@
 #include "game/screens/TrialEnding.h"
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
 
 #include "game/hud/PlayHud.h"
+#include "game/hud/PlayerWords.h"
 
 namespace hemiroll::game {
 
@@ -20,7 +22,7 @@ TrialEnding TrialEnding::of(const render::RenderScene& scene, const render::Cont
   return e;
 }
 
-std::vector<std::string> explainEnding(const TrialResult& result, const script::TaskDef& task) {
+std::vector<std::string> explainEnding(const TrialResult& result, const script::TaskDef& task, double heading) {
   std::vector<std::string> lines;
   char line[200];
   const script::TrialSummary& s = result.summary;
@@ -45,15 +47,15 @@ std::vector<std::string> explainEnding(const TrialResult& result, const script::
     lines.emplace_back(line);
   }
   // The furthest out first, as few as the compact HUD shows.
-  std::vector<script::ComponentStatus> out;
-  for (const script::ComponentStatus& c : s.finalComponents)
-    if (!c.inside) out.push_back(c);
-  std::stable_sort(out.begin(), out.end(), [](const auto& a, const auto& b) {
-    return a.normalizedMargin() < b.normalizedMargin();
-  });
-  if (!out.empty()) lines.emplace_back("furthest out of its band at the end:");
+  std::array<AdviceRow, 8> rows{};
+  const int n = adviceRows(s.finalComponents, heading, rows);
+  std::vector<const AdviceRow*> out;
+  for (int i = 0; i < n; ++i)
+    if (!rows[static_cast<std::size_t>(i)].inside) out.push_back(&rows[static_cast<std::size_t>(i)]);
+  std::stable_sort(out.begin(), out.end(), [](const AdviceRow* a, const AdviceRow* b) { return a->margin < b->margin; });
+  if (!out.empty()) lines.emplace_back("still out of its band at the end:");
   for (std::size_t i = 0; i < out.size() && i < static_cast<std::size_t>(PlayHud::kCompactRows); ++i)
-    lines.push_back("  " + PlayHud::componentLine(out[i]));
+    lines.push_back(std::string("  ") + out[i]->text.data());
   if (out.size() > static_cast<std::size_t>(PlayHud::kCompactRows)) {
     std::snprintf(line, sizeof line, "  and %zu more", out.size() - static_cast<std::size_t>(PlayHud::kCompactRows));
     lines.emplace_back(line);
@@ -61,12 +63,32 @@ std::vector<std::string> explainEnding(const TrialResult& result, const script::
   return lines;
 }
 
-std::string medalThresholds(const script::ScoringDef& scoring) {
-  if (!scoring.hasMedals) return "";
-  char line[160];
-  std::snprintf(line, sizeof line, "bronze %g, silver %g, gold %g points", scoring.bronze, scoring.silver,
-                scoring.gold);
-  return line;
+std::vector<std::string> explainLoop(const LoopStory& story) {
+  std::vector<std::string> lines;
+  char line[240];
+  constexpr std::size_t kListed = 3;
+  for (std::size_t i = 0; i < story.stops.size() && i < kListed; ++i) {
+    std::snprintf(line, sizeof line, "safety stop at %.2f s: %s", story.stops[i].time, story.stops[i].what.c_str());
+    lines.emplace_back(line);
+  }
+  if (story.stops.size() > kListed) {
+    std::snprintf(line, sizeof line, "and %zu more safety stops", story.stops.size() - kListed);
+    lines.emplace_back(line);
+  }
+  if (!story.forceOutput && story.stalls > 0) {
+    if (story.slowedBy > 0.0)
+      std::snprintf(line, sizeof line,
+                    "the servo loop ran late %llu times (worst %.0f ms): a mouse renders no force, so play went on; "
+                    "the clock slowed by %.0f ms in all",
+                    story.stalls, story.worstLateness * 1e3, story.slowedBy * 1e3);
+    else
+      std::snprintf(line, sizeof line,
+                    "the servo loop ran late %llu times (worst %.0f ms): a mouse renders no force, so play went on "
+                    "and the loop caught up",
+                    story.stalls, story.worstLateness * 1e3);
+    lines.emplace_back(line);
+  }
+  return lines;
 }
 
 }  // namespace hemiroll::game

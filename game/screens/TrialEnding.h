@@ -5,12 +5,14 @@
 // level's medal thresholds.
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "engine/render/ContactTrace.h"
 #include "engine/render/RenderScene.h"
 #include "engine/script/LevelDef.h"
+#include "game/screens/MedalTimes.h"
 #include "game/trial/TrialJudge.h"
 
 namespace hemiroll::game {
@@ -18,8 +20,9 @@ namespace hemiroll::game {
 struct TrialEnding {
   render::RenderScene scene;                    // scene.trace points into `trace`
   std::unique_ptr<render::ContactTrace> trace;  // owned here, so the scene can move
-  std::vector<std::string> decidedBy;           // explainEnding()
+  std::vector<std::string> decidedBy;           // explainEnding(), then explainLoop()
   script::ScoringDef scoring;
+  std::optional<MedalTimes> medalTimes;         // the thresholds as times, where the score is a time
   bool hasScene = false;
 
   // The play screen's last frame: a copy of its scene and trace.
@@ -28,11 +31,26 @@ struct TrialEnding {
 
 // What decided the trial's time, a line each: for a success the hold that
 // completed it (from when, how long), for a failure the moment and the
-// reason and what was still out of its band and by how much, the furthest
-// out first (player units, PlayHud::componentLine; the compact HUD's few).
-std::vector<std::string> explainEnding(const TrialResult& result, const script::TaskDef& task);
+// reason and what was still out of its band and what it needed, the furthest
+// out first (the compact HUD's few rows, in the player's words: PlayerWords,
+// screen directions for a camera whose screen right has this heading [rad]).
+std::vector<std::string> explainEnding(const TrialResult& result, const script::TaskDef& task,
+                                       double screenRightHeading = 0.0);
 
-// "bronze 500, silver 800, gold 900 points", "" without medals.
-std::string medalThresholds(const script::ScoringDef& scoring);
+// What the servo loop's timing did to a trial in the window (issue 27: a
+// summary that says so): its safety stops, and the stalls a device without
+// force rode out (caught up, or the clock slowed).
+struct LoopStory {
+  bool forceOutput = false;         // the device renders force (stalls stop it)
+  unsigned long long stalls = 0;    // wake-ups past the overrun limit
+  double worstLateness = 0.0;       // [s]
+  double slowedBy = 0.0;            // [s] of ticks not made up (the clock slowed)
+  struct Stop {
+    std::string what;
+    double time = 0.0;              // [s] simulated
+  };
+  std::vector<Stop> stops;
+};
+std::vector<std::string> explainLoop(const LoopStory& story);
 
 }  // namespace hemiroll::game

@@ -1,7 +1,10 @@
 #include "game/trial/GhostFile.h"
 
+#include <cctype>
 #include <cmath>
 
+#include "engine/files/CheckedFile.h"
+#include "engine/files/FileReadError.h"
 #include "engine/record/CsvRowFormat.h"
 #include "engine/record/DurableFile.h"
 #include "engine/record/FileNames.h"
@@ -52,6 +55,31 @@ std::optional<double> ghostTime(const std::filesystem::path& ghost) {
   double time = 0.0;
   if (!record::parseDouble(text, time) || !std::isfinite(time) || time < 0.0) return std::nullopt;
   return time;
+}
+
+std::string keepGhostOwner(const std::filesystem::path& ghost, GhostOwner owner) {
+  try {
+    record::writeFileAtomically(ghost.string() + ".by", owner == GhostOwner::Autopilot ? "autopilot\n" : "player\n");
+  } catch (const record::RecordError& e) {
+    return std::string("whose ghost it is could not be kept: ") + e.what();
+  }
+  return "";
+}
+
+GhostOwner ghostOwner(const std::filesystem::path& ghost) {
+  // A missing, odd or unreadable file leaves the ghost the player's: the
+  // label is all it decides.
+  const std::filesystem::path by = ghost.string() + ".by";
+  std::error_code ec;
+  if (!std::filesystem::exists(by, ec)) return GhostOwner::Player;
+  std::string word;
+  try {
+    word = files::readCheckedFile(by, files::kGhostOwner);
+  } catch (const files::FileReadError&) {
+    return GhostOwner::Player;
+  }
+  while (!word.empty() && std::isspace(static_cast<unsigned char>(word.back()))) word.pop_back();
+  return word == "autopilot" ? GhostOwner::Autopilot : GhostOwner::Player;
 }
 
 }  // namespace hemiroll::game

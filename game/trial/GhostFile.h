@@ -22,4 +22,13 @@ std::string keepAsGhost(const std::filesystem::path& replay, const std::filesyst
 // The judged time kept with a ghost; nullopt when there is none or it is unreadable.
 std::optional<double> ghostTime(const std::filesystem::path& ghost);
 
+// Whose run a ghost is (issue 27: the autopilot's line was labelled "your
+// best"), kept beside it in <ghost>.by: the player's own or the autopilot's.
+enum class GhostOwner { Player, Autopilot };
+// "" when kept, else a sentence naming the file.
+std::string keepGhostOwner(const std::filesystem::path& ghost, GhostOwner owner);
+// A ghost without a readable <ghost>.by (kept before there was one) is the
+// player's: only their new bests became ghosts then, and "Race this line".
+GhostOwner ghostOwner(const std::filesystem::path& ghost);
+
 }  // namespace hemiroll::game

@@ -109,6 +109,34 @@ INSTANTIATE_TEST_SUITE_P(
              [](SafetyInputs& in) { in.devicePosition.z() = std::numeric_limits<double>::quiet_NaN(); },
              SafetyFault::PositionJump}));
 
+// A late tick means a device held its last force that long: a stop where a
+// force is rendered, nothing to make safe on a mouse (issue 27: a single
+// 23 ms tick stopped mouse play).
+TEST(ForceSafetyTest, ALateTickStopsAForceDeviceNotAMouse) {
+  SafetyInputs late;
+  late.tickLateness = 0.03;  // past the 20 ms limit
+  ForceSafety desk(quickRamp(), DeviceSpec{});
+  desk.update(late);
+  EXPECT_EQ(desk.fault(), SafetyFault::LoopOverrun);
+  DeviceSpec mouse;
+  mouse.hasForceOutput = false;
+  ForceSafety pointer(quickRamp(), mouse);
+  pointer.update(late);
+  EXPECT_EQ(pointer.fault(), SafetyFault::None);
+  late.tickLateness = std::numeric_limits<double>::quiet_NaN();  // nor does a broken clock on a mouse
+  pointer.update(late);
+  EXPECT_EQ(pointer.fault(), SafetyFault::None);
+  // Nor stale data (the autopilot's hand on a mouse, behind after a stall),
+  // which a force device stops for.
+  SafetyInputs stale;
+  stale.deviceFresh = false;
+  for (int k = 0; k < 50; ++k) pointer.update(stale);
+  EXPECT_EQ(pointer.fault(), SafetyFault::None);
+  ForceSafety fresh(quickRamp(), DeviceSpec{});
+  for (int k = 0; k < 50; ++k) fresh.update(stale);
+  EXPECT_EQ(fresh.fault(), SafetyFault::StaleDevice);
+}
+
 // A client that teleports 9 cm every tick while reporting zero velocity got
 // past the velocity guard (issue 19). The position guard sees the path over
 // 10 ticks: a steady 1.5 m/s hand, or a mouse's motion arriving once per

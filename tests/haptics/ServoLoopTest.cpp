@@ -396,6 +396,45 @@ TEST(ServoLoopCatchUpTest, AStallBeyondTheOverrunLimitZeroesTheForce) {
   EXPECT_EQ(device.lastForce(), Vec3::Zero());
 }
 
+// Stops that fit the device (issue 27). A device without force output (the
+// mouse) has no force to hold while a tick is late: its loop is not
+// stopped, it catches up (up to maxCatchUpTicks: PlaySession gives it 100)
+// and slows its clock beyond, and stalls() counts what it rode out. The
+// same stall on a device that renders force stops it, as before.
+TEST(ServoLoopCatchUpTest, AForcelessDeviceRidesAStallOutAForceDeviceStops) {
+  ServoLoopDef def = quickDef();  // maxTickLateness 20 ms
+  def.maxCatchUpTicks = 100;
+  DeviceSpec mouse{"mouse", 0.0, 1000.0, 0.1, false};
+  ScriptedDevice forceless(circling, mouse);
+  ServoLoop loop(def, forceless);
+  loop.post(command(ServoCommandKind::Engage));
+  FakeClock clock;
+  clock.delays[100] = 30 * kPeriodNs;   // 30 ms: caught up in full
+  clock.delays[200] = 300 * kPeriodNs;  // 300 ms: 100 ticks run, 200 not made up
+  loop.runPaced(clock, 300);
+  EXPECT_FALSE(loop.safety().faulted()) << safetyFaultName(loop.safety().fault());
+  EXPECT_EQ(loop.stalls(), 2u);
+  EXPECT_EQ(loop.missedTicks(), 201u);              // 301 deadlines were due at the second, 100 ran
+  EXPECT_EQ(loop.ticks(), 300u + 30u + 99u);        // every wake-up, the first stall's 30, the second's 99 more
+  EXPECT_NEAR(loop.time(), 0.429, 1e-9);            // the clock slowed by the 201 ticks, no jump
+  EXPECT_EQ(loop.timingSummary().stalls, 2u);
+  ServoSnapshot s;
+  ASSERT_TRUE(loop.latest(s));
+  EXPECT_EQ(s.stalls, 2u);
+  EXPECT_EQ(s.fault, SafetyFault::None);
+
+  // The same 30 ms stall with a desk device that renders force.
+  ScriptedDevice forceful(circling);
+  ServoLoop stopped(def, forceful);
+  stopped.post(command(ServoCommandKind::Engage));
+  FakeClock again;
+  again.delays[100] = 30 * kPeriodNs;
+  stopped.runPaced(again, 150);
+  EXPECT_EQ(stopped.safety().fault(), SafetyFault::LoopOverrun);
+  EXPECT_EQ(stopped.stalls(), 1u);
+  EXPECT_EQ(forceful.lastForce(), Vec3::Zero());
+}
+
 // The real thread on the real clock for ~0.3 s. Asserts only what a loaded
 // 2-core machine cannot break: it ticks, the statistics agree with each
 // other, the snapshot reaches another thread, stop() leaves a zero force.

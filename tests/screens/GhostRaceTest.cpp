@@ -97,6 +97,47 @@ TEST_F(GhostRaceTest, TheAutopilotsLineBecomesTheGhostOnlyWhenAsked) {
   EXPECT_EQ(ghostTime(ghost), std::optional<double>(1.0));
 }
 
+// Whose ghost it is, said in the HUD, and an existing ghost replaced only on
+// the player's say (issue 27: after "Race this line" the HUD said "your
+// best" for the autopilot's run, and a slower best of the player's replaced
+// it unasked).
+TEST_F(GhostRaceTest, TheGhostSaysWhoseItIsAndIsReplacedOnlyOnThePlayersSay) {
+  const std::filesystem::path replay = loggedReplay();
+  // The player's own run: other bytes than the autopilot's (a results
+  // screen deletes a replay it did not keep, so this copy comes first).
+  const std::filesystem::path mine = dir_.path() / "replays" / "mine.hrr";
+  std::filesystem::copy_file(replay, mine);
+  std::ofstream(mine, std::ios::app) << "x";
+  App app(def_);
+  const script::LoadedLevel level = script::LevelLoader().loadFile(kLevel);
+  const std::filesystem::path ghost = ghostFile(dir_.path(), level.def.name, app.settings().participant);
+  {
+    ResultsScreen watched(app, kLevel, level.def.name, successAt(0.9), replay, "", /*assisted=*/true);
+    watched.raceThisLine();
+  }
+  ASSERT_TRUE(std::filesystem::exists(ghost));
+  EXPECT_EQ(ghostOwner(ghost), GhostOwner::Autopilot);
+  const std::string autopilots = bytesOf(ghost);
+
+  // The player's first win (a new personal best) does not replace it...
+  ResultsScreen won(app, kLevel, level.def.name, successAt(1.0), mine, "");
+  EXPECT_TRUE(won.newBest());
+  EXPECT_EQ(bytesOf(ghost), autopilots);
+  EXPECT_EQ(ghostOwner(ghost), GhostOwner::Autopilot);
+  // ...until the player says so (K).
+  app.screens().push(std::make_unique<PlayScreen>(app, kLevel));
+  app.frame();
+  auto* play = dynamic_cast<PlayScreen*>(app.screens().top());
+  ASSERT_NE(play, nullptr);
+  app.inject(platform::keyDownEvent("Space"));
+  for (int i = 0; i < 5; ++i) app.frame();
+  EXPECT_THAT(play->hud().ghost(), HasSubstr("ghost: the autopilot's line, 0.90 s"));
+  won.raceThisRun();
+  EXPECT_EQ(bytesOf(ghost), bytesOf(mine));
+  EXPECT_EQ(ghostOwner(ghost), GhostOwner::Player);
+  EXPECT_EQ(ghostTime(ghost), std::optional<double>(1.0));
+}
+
 TEST_F(GhostRaceTest, TheNextPlayRacesTheGhostInStep) {
   const script::LoadedLevel level = script::LevelLoader().loadFile(kLevel);
   const std::filesystem::path ghost = ghostFile(dir_.path(), level.def.name, "player");

@@ -81,5 +81,20 @@ TEST(KeyBindingsTest, EveryActionHasAnIdALabelAndAKnownDefault) {
   }
 }
 
+// A level's text names the player's key, not the default (issue 27: the
+// hint moved to J, the text still said H).
+TEST(KeyBindingsTest, TextsNameTheBoundKey) {
+  KeyBindings keys;
+  EXPECT_EQ(withKeyNames("Stuck? {key:hint} shows the autopilot's next move.", keys),
+            "Stuck? H shows the autopilot's next move.");
+  ASSERT_TRUE(keys.bind(KeyAction::Hint, code("J")));
+  EXPECT_EQ(withKeyNames("Stuck? {key:hint} shows the autopilot's next move.", keys),
+            "Stuck? J shows the autopilot's next move.");
+  EXPECT_EQ(withKeyNames("{key:take_hold} then {key:let_go}", keys), "Space then Backspace");
+  // Anything else in braces stays as written, an unclosed one too.
+  EXPECT_EQ(withKeyNames("{key:fly} {x} {key:hint", keys), "{key:fly} {x} {key:hint");
+  EXPECT_EQ(withKeyNames("", keys), "");
+}
+
 }  // namespace
 }  // namespace hemiroll::game

@@ -147,24 +147,33 @@ TEST(PlayHudTest, PlotAxesGetTheDecimalsThatTellTheirEndsApart) {
   EXPECT_EQ(PlayHud::axisDecimals(1e-9), 3);
   EXPECT_EQ(PlayHud::axisDecimals(0.0), 1);
   EXPECT_EQ(PlayHud::axisDecimals(std::nan("")), 1);
+  // An axis end of -0.01 at one decimal reads +0.0, not -0.0 (seen in play).
+  char label[16];
+  std::snprintf(label, sizeof label, "%+.*f", 1, PlayHud::shownAs(-0.01, 1));
+  EXPECT_STREQ(label, "+0.0");
+  EXPECT_EQ(PlayHud::shownAs(-0.06, 1), -0.06);
 }
 
-TEST(PlayHudTest, ComponentsAndLostHoldsReadInPlayerUnits) {
+// The full table keeps the physics' names, with the value and what it
+// wants (not their difference, which the player had to negate).
+TEST(PlayHudTest, TheTableReadsValuesAndTargetsInPlayerUnits) {
   script::ComponentStatus c;
   c.variable = script::TaskVariable::u_a;
+  c.target = -0.04;
   c.error = 0.0123;
   c.tolerance = 0.001;
-  EXPECT_EQ(PlayHud::componentLine(c), "contact x off by +12.3 mm (band ±1.0 mm)");
+  EXPECT_EQ(PlayHud::componentLine(c), "contact x (u_a) -27.7 mm, wants -40.0 ±1.0 mm");
   c.variable = script::TaskVariable::u_o;  // a band under a degree gets two decimals
+  c.target = 0.0;
   c.error = -0.02;
   c.tolerance = 0.01;
-  EXPECT_EQ(PlayHud::componentLine(c), "tilt u off by -1.15 ° (band ±0.57 °)");
+  EXPECT_EQ(PlayHud::componentLine(c), "tilt u (u_o) -1.15 °, wants +0.00 ±0.57 °");
   script::HoldBreak b;
   b.happened = true;
   b.variable = script::TaskVariable::xd_p;
   b.excess = 0.0042;
   b.heldFor = 0.6;
-  EXPECT_EQ(PlayHud::holdBreakLine(b), "mass point speed x wobbled out by 4.2 mm/s after 0.6 s");
+  EXPECT_EQ(PlayHud::holdBreakLine(b), "the mass point speed went out by 4.2 mm/s after 0.6 s");
 }
 
 // The settle meter's readout: the judge's hold and its last break; the tilt

@@ -1,5 +1,6 @@
 #include "game/app/ScreenTour.h"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -66,9 +67,9 @@ TEST(ScreenTourTest, TitleLevelsPlayPauseResultsWithSyntheticInput) {
   tour.autopilot = false;  // its stops: the next test
   const std::vector<ScreenTourStop> stops = runScreenTour(app, tour);
 
-  ASSERT_EQ(stops.size(), 6u);
-  const char* expected[] = {"title", "settings", "levels", "play", "pause", "results"};
-  for (std::size_t i = 0; i < 6; ++i) {
+  ASSERT_EQ(stops.size(), 7u);
+  const char* expected[] = {"title", "settings", "levels", "play", "pause", "results", "replay"};
+  for (std::size_t i = 0; i < 7; ++i) {
     EXPECT_EQ(stops[i].screen, expected[i]);
     EXPECT_EQ(stops[i].image.width, 1280);
     EXPECT_EQ(stops[i].image.height, 720);
@@ -135,11 +136,12 @@ TEST(ScreenTourTest, TheAutopilotIsWatchedThenTakenOverWithTheHint) {
   tour.level = HEMIROLL_SOURCE_DIR "/levels/tutorial_04_stop_on_target.lua";
   tour.playSeconds = 1.0;
   const std::vector<ScreenTourStop> stops = runScreenTour(app, tour);
-  EXPECT_EQ(stops[6].screen, "watch");
-  EXPECT_EQ(stops[7].screen, "hint");
-  ASSERT_EQ(stops.size(), 9u);
-  EXPECT_EQ(stops[8].screen, "start");
-  // The take-hold prompt is drawn where the HUD placed it, in amber (0.95,
+  EXPECT_EQ(stops[7].screen, "watch");
+  EXPECT_EQ(stops[8].screen, "hint");
+  ASSERT_EQ(stops.size(), 11u);
+  EXPECT_EQ(stops[9].screen, "start");
+  EXPECT_EQ(stops[10].screen, "letgo");
+  // The take-hold-again prompt is drawn where the HUD placed it, in amber (0.95,
   // 0.75, 0.3), at 1.3x: two lines have some 200 solid glyph-core pixels.
   // Counted inside its window only: the HUD's own amber lines are elsewhere.
   auto* start = dynamic_cast<PlayScreen*>(app.screens().top());
@@ -148,21 +150,22 @@ TEST(ScreenTourTest, TheAutopilotIsWatchedThenTakenOverWithTheHint) {
   for (const WindowRect& r : start->hud().rects())
     if (std::string(r.name) == "prompt") prompt = &r;
   ASSERT_NE(prompt, nullptr) << "no take-hold prompt drawn";
-  EXPECT_GT(countColour(stops[8].image, 242, 191, 77, 12, int(prompt->x), int(prompt->y), int(prompt->x + prompt->width),
-                        int(prompt->y + prompt->height)),
+  EXPECT_GT(countColour(stops[10].image, 242, 191, 77, 12, int(prompt->x), int(prompt->y),
+                        int(prompt->x + prompt->width), int(prompt->y + prompt->height)),
             100);
   // The autopilot's HUD line is green (0.3, 0.95, 0.55): one line of ImGui's
   // built-in font at 1x has about 80 solid glyph-core pixels of it (measured:
   // 80 for the hint's line), half that leaves room for the rasteriser; the
   // mouse's play has none.
-  EXPECT_GT(countColour(stops[6].image, 77, 242, 140), 40);
   EXPECT_GT(countColour(stops[7].image, 77, 242, 140), 40);
+  EXPECT_GT(countColour(stops[8].image, 77, 242, 140), 40);
   EXPECT_EQ(countColour(stops[3].image, 77, 242, 140), 0);
-  // The last stop is a fresh trial of the player's own (the takeover itself:
-  // AutopilotWatchTest), its clock waiting for the take-hold.
-  EXPECT_TRUE(start->session()->awaitingTakeHold());
+  // The last stops are a fresh trial of the player's own (the takeover
+  // itself: AutopilotWatchTest), its clock waiting for the take-hold, then
+  // taken hold of and let go: the physics stands still until the next take-hold.
   EXPECT_FALSE(start->session()->assisted());
-  EXPECT_EQ(start->session()->snapshot().time, 0.0);
+  EXPECT_EQ(start->session()->frozen(), Freeze::LetGo);
+  EXPECT_THAT(start->hud().prompt(), ::testing::HasSubstr("take hold again"));
 }
 
 }  // namespace

@@ -39,6 +39,9 @@ TEST(SettingsFileTest, EveryFieldRoundTrips) {
   s.orbitYaw = 2.25;
   s.orbitPitch = 1.25;
   s.participant = "P-07";
+  s.mouseMmPerPixel = 0.125;
+  s.frameCap = 144;
+  s.uiScale = 1.25;
   ASSERT_TRUE(s.keys.bind(KeyAction::TakeHold, platform::keyFromName("H")));
   ASSERT_TRUE(s.keys.bind(KeyAction::OrbitLeft, platform::keyFromName("Keypad 4")));
   const auto file = dir.path() / "nested" / "settings.json";
@@ -51,6 +54,9 @@ TEST(SettingsFileTest, EveryFieldRoundTrips) {
   EXPECT_EQ(back.settings.participant, "P-07");
   EXPECT_EQ(back.settings.keys, s.keys);
   EXPECT_EQ(back.settings.keys.keyName(KeyAction::TakeHold), "H");
+  EXPECT_EQ(back.settings.mouseMmPerPixel, 0.125);
+  EXPECT_EQ(back.settings.frameCap, 144);
+  EXPECT_EQ(back.settings.uiScale, 1.25);
   EXPECT_THAT(settingsJson(s), HasSubstr("\"orbit_left\": \"Keypad 4\""));
   // SI units in the key names.
   EXPECT_THAT(settingsJson(s), HasSubstr("\"stiffness_N_per_m\": 123.25"));
@@ -62,7 +68,8 @@ TEST(SettingsFileTest, ABadValueKeepsItsDefaultAndIsNamed) {
   const std::string file = dir.write("settings.json",
                                      R"({"zoom": -2, "camera": "side", "volume": 0.25, "device": "phantom",
                                          "participant": "../etc", "udp_port": 70000, "vsync": "yes",
-                                         "stiffness_N_per_m": 1e30})");
+                                         "stiffness_N_per_m": 1e30, "frame_cap_fps": 5, "ui_scale": 40,
+                                         "mouse_mm_per_px": 0})");
   const LoadedSettings loaded = loadSettings(file);
   EXPECT_EQ(loaded.settings.volume, 0.25);
   EXPECT_EQ(loaded.settings.zoom, Settings{}.zoom);
@@ -74,8 +81,11 @@ TEST(SettingsFileTest, ABadValueKeepsItsDefaultAndIsNamed) {
   std::string all;
   for (const std::string& n : loaded.notes) all += n + "\n";
   EXPECT_EQ(loaded.settings.stiffness, Settings{}.stiffness);
+  EXPECT_EQ(loaded.settings.frameCap, Settings{}.frameCap);
+  EXPECT_EQ(loaded.settings.uiScale, Settings{}.uiScale);
+  EXPECT_EQ(loaded.settings.mouseMmPerPixel, Settings{}.mouseMmPerPixel);
   for (const char* key : {"'zoom'", "'camera'", "'device'", "'participant'", "'udp_port'", "'vsync'",
-                          "'stiffness_N_per_m'"})
+                          "'stiffness_N_per_m'", "'frame_cap_fps'", "'ui_scale'", "'mouse_mm_per_px'"})
     EXPECT_THAT(all, HasSubstr(key));
   EXPECT_THAT(all, HasSubstr("'follow', 'orbit' or 'top'"));
 }

@@ -1,7 +1,7 @@
 #pragma once
-// The app as the window tests open it: hidden, no vsync (frames as fast as
-// llvmpipe draws them), and every file it keeps - scores, settings, replays,
-// ghosts - inside `dir`, never the user's.
+// The app as the window tests open it: hidden, no vsync and no frame pacing
+// (frames as fast as llvmpipe draws them), and every file it keeps - scores,
+// settings, replays, ghosts - inside `dir`, never the user's.
 
 #include <cstdlib>
 #include <filesystem>
@@ -15,6 +15,7 @@ inline game::AppDef hiddenAppIn(const std::filesystem::path& dir) {
   game::AppDef def;
   def.hidden = true;
   def.vsync = false;
+  def.paceFrames = false;
   def.scoresFile = (dir / "scores.sqlite").string();
   def.settingsFile = (dir / "settings.json").string();
   return def;
