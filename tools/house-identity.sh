@@ -18,7 +18,7 @@ mask() {
   sed -E -e "s#$out#<out>#g" -e "s#$root#<root>#g" \
         -e 's/[0-9]{4}-[0-9]{2}-[0-9]{2}T[0-9:.]+Z/<date>/g' \
         -e 's/wall [0-9.]+ s/wall - s/g' \
-        -e 's/"(wall_time|wall_time_s|wall_s|started|finished|created|date|recorded_at|host|hostname|started_at|finished_at|time_utc|written_at)": ?("[^"]*"|[0-9.eE+-]+)/"\1":"-"/g' "$@"
+        -e 's/"(wall_time|cpu_time|wall_time_s|wall_s|started|finished|created|date|recorded_at|host|hostname|started_at|finished_at|time_utc|written_at)": ?("[^"]*"|[0-9.eE+-]+)/"\1":"-"/g' "$@"
 }
 
 for scenario in "$root"/levels/scenarios/*.lua; do

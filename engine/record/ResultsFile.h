@@ -23,7 +23,7 @@ struct TrialResult {
   std::string trialId;
   std::string level;
   std::string levelHash;
-  std::string outcome;        // "success", "fail", "aborted", ...
+  std::string outcome;        // "success", "failure", "aborted", ...
   std::string reason;
   double duration = 0.0;      // [s] of simulation time
   double score = 0.0;

@@ -69,11 +69,20 @@ std::string Sidecar::toJson(const TrialMeta& m, const SidecarStatus& s) {
                    {"damping_N_s_per_m", m.coupling.damping},
                    {"alpha", m.coupling.alpha},
                    {"visual_only", m.coupling.visualOnly}};
-  j["guidance"] = {{"kind", haptics::guidanceKindName(m.guidance.kind)},
-                   {"stiffness_N_per_m", m.guidance.stiffness},
-                   {"damping_N_s_per_m", m.guidance.damping},
-                   {"max_error_m", m.guidance.maxError},
-                   {"fade", m.guidance.scale}};
+  // No guidance has no spring: its numbers are null, not the defaults an
+  // unused GuidanceDef carries (a reader took "none, 200 N/m" for a spring).
+  if (m.guidance.kind != haptics::GuidanceKind::None)
+    j["guidance"] = {{"kind", haptics::guidanceKindName(m.guidance.kind)},
+                     {"stiffness_N_per_m", m.guidance.stiffness},
+                     {"damping_N_s_per_m", m.guidance.damping},
+                     {"max_error_m", m.guidance.maxError},
+                     {"fade", m.guidance.scale}};
+  else
+    j["guidance"] = {{"kind", haptics::guidanceKindName(m.guidance.kind)},
+                     {"stiffness_N_per_m", nullptr},
+                     {"damping_N_s_per_m", nullptr},
+                     {"max_error_m", nullptr},
+                     {"fade", nullptr}};
   j["device"] = {{"name", m.deviceName},
                  {"max_force_N", m.deviceSpec.maxForce},
                  {"max_stiffness_N_per_m", m.deviceSpec.maxStiffness},
@@ -138,10 +147,16 @@ void Sidecar::fromJson(const std::string& text, const std::string& source, Trial
       const auto& g = j.at("guidance");
       if (!haptics::parseGuidanceKind(g.at("kind").get<std::string>(), m.guidance.kind))
         throw RecordError("guidance.kind: unknown kind '" + g.at("kind").get<std::string>() + "'");
-      m.guidance.stiffness = g.at("stiffness_N_per_m").get<double>();
-      m.guidance.damping = g.at("damping_N_s_per_m").get<double>();
-      m.guidance.maxError = g.at("max_error_m").get<double>();
-      m.guidance.scale = g.at("fade").get<double>();
+      // null (no guidance) leaves the definition's defaults, and a fade of
+      // 0: no guidance force acts, as results.csv's guidance_fade says.
+      const auto number = [&g](const char* key, double& into, double ifNull) {
+        into = g.at(key).is_null() ? ifNull : g.at(key).get<double>();
+      };
+      const haptics::GuidanceDef defaults;
+      number("stiffness_N_per_m", m.guidance.stiffness, defaults.stiffness);
+      number("damping_N_s_per_m", m.guidance.damping, defaults.damping);
+      number("max_error_m", m.guidance.maxError, defaults.maxError);
+      number("fade", m.guidance.scale, 0.0);
     }
     const auto& d = j.at("device");
     m.deviceName = d.at("name").get<std::string>();

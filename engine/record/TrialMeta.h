@@ -45,7 +45,7 @@ struct TrialMeta {
 };
 
 struct TrialEnd {
-  std::string outcome = "aborted";   // e.g. "success", "fail", "aborted", "fault"
+  std::string outcome = "aborted";   // e.g. "success", "failure", "aborted", "fault"
   std::string reason;                // one sentence, may be empty
   // From ServoLoop::timingSummary(); hasTiming false for headless runs (no clock).
   bool hasTiming = false;

@@ -7,8 +7,10 @@ namespace hemiroll::script {
 
 namespace {
 
-// Summed fixed steps carry rounding of ~1e-13 s after hours; a hold is
-// reached 1 ns early rather than one whole tick late.
+// Summed fixed steps carry rounding of ~1e-13 s after hours; a hold or a
+// time limit is reached 1 ns early rather than one whole tick late (a 60 s
+// limit ended at 60.001 s, 60001 ticks, since 60000 steps of 1 ms sum to
+// just under 60).
 constexpr double kHoldSlack = 1e-9;
 
 // Strictly inside (the edge belongs to neither side).
@@ -196,7 +198,7 @@ TrialOutcome TaskJudge::judge(const JudgeInput& input) {
     loadComponents();
   }
 
-  if (t >= task_.timeLimit) {
+  if (t >= task_.timeLimit - kHoldSlack) {
     if (task_.watchOnly())
       end(TrialOutcome::Success, trial_reason::kWatched, t);
     else

@@ -1,6 +1,7 @@
 #include "game/commands/RunCommand.h"
 
 #include <cstdio>
+#include <ctime>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -56,9 +57,17 @@ record::Fields resultColumns(const RunOptions& o, const TrialResult& r) {
   return extra;
 }
 
-std::string resultLine(const RunOptions& o, const TrialResult& r) {
+// The CPU the process has used, all its threads [s]: what a trial costs
+// whatever else the machine runs (wall_time grows with the machine's load).
+double processCpuSeconds() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+std::string resultLine(const RunOptions& o, const std::string& levelName, const TrialResult& r, double cpuTime) {
   JsonLine line;
-  line.add("level", o.levelPath).add("bot", o.botPath);
+  line.add("level", o.levelPath).add("level_name", levelName).add("bot", o.botPath);
   line.add("outcome", script::trialOutcomeName(r.outcome)).add("reason", r.reason);
   line.add("time", r.time, 6);  // the tick's time to the microsecond, not the sum's rounding
   if (r.score)
@@ -66,7 +75,7 @@ std::string resultLine(const RunOptions& o, const TrialResult& r) {
   else
     line.addNull("score");
   line.add("medal", script::medalName(r.medal));
-  line.add("ticks", r.ticks).add("wall_time", r.wallTime, 6);
+  line.add("ticks", r.ticks).add("wall_time", r.wallTime, 6).add("cpu_time", cpuTime, 6);
   return line.str();
 }
 
@@ -102,6 +111,7 @@ int runRunCommand(const std::vector<std::string>& args) {
     return badInput("--guidance-" + problem);
   std::unique_ptr<TrialRecording> recording;
   TrialResult result;
+  double cpuTime = 0.0;  // [s]
   try {
     if (options.recordDir) {
       haptics::ServoLoopDef loop = trialLoopDef(level.def);
@@ -109,7 +119,9 @@ int runRunCommand(const std::vector<std::string>& args) {
       recording = std::make_unique<TrialRecording>(recordingDef(options), level.def, loop);
       recording->attach(settings);
     }
+    const double cpuBefore = processCpuSeconds();
     result = HeadlessTrial(level, *bot, settings).run();
+    cpuTime = processCpuSeconds() - cpuBefore;
   } catch (const std::invalid_argument& e) {
     // The level asks for something the device cannot do (a coupling stiffer
     // than it renders stably): a bad level, found when the loop is built.
@@ -125,11 +137,11 @@ int runRunCommand(const std::vector<std::string>& args) {
       recording->finish(result, resultColumns(options, result));
     } catch (const TrialRecordingError& e) {
       std::cerr << "hemiroll run: " << e.what() << "\n";
-      std::printf("%s\n", resultLine(options, result).c_str());
+      std::printf("%s\n", resultLine(options, level.def.name, result, cpuTime).c_str());
       return kExitFailure;
     }
   }
-  std::printf("%s\n", resultLine(options, result).c_str());
+  std::printf("%s\n", resultLine(options, level.def.name, result, cpuTime).c_str());
   std::fflush(stdout);
   return result.outcome == script::TrialOutcome::Success ? kExitOk : kExitFailure;
 }

@@ -67,7 +67,8 @@ record::Fields TrialRecording::scoreFields(const TrialResult& result) {
 void TrialRecording::finish(const TrialResult& result, const record::Fields& extra,
                             const std::optional<haptics::LoopTimingSummary>& timing) {
   record::TrialEnd end;
-  end.outcome = result.outcome == script::TrialOutcome::Success ? "success" : "fail";
+  // The words of `run`'s JSON line and the judge: "success" or "failure".
+  end.outcome = script::trialOutcomeName(result.outcome);
   end.reason = result.reason;
   end.hasTiming = timing.has_value();
   if (timing) end.timing = *timing;

@@ -54,15 +54,15 @@ return { name = "hold", act = function(t, obs)
 end }
 )lua";
 
-// The JSON line with wall_time cut out (the one key that may differ).
+// The JSON line with wall_time and cpu_time cut out (the keys that may differ).
 std::string withoutWallTime(const std::string& line) {
-  return std::regex_replace(line, std::regex(R"("wall_time":[^,}]*)"), "\"wall_time\":_");
+  return std::regex_replace(line, std::regex(R"("(wall|cpu)_time":[^,}]*)"), "\"$1_time\":_");
 }
 
 const char* kLinePattern =
-    R"re(\{"level":"[^"]*","bot":"[^"]*","outcome":"(success|failure)","reason":"([^"\\]|\\.)*",)re"
+    R"re(\{"level":"[^"]*","level_name":"([^"\\]|\\.)*","bot":"[^"]*","outcome":"(success|failure)","reason":"([^"\\]|\\.)*",)re"
     R"re("time":[-0-9.e]+,"score":([-0-9.e]+|null),"medal":"(none|bronze|silver|gold)","ticks":[0-9]+,)re"
-    R"re("wall_time":[0-9.e-]+\})re";
+    R"re("wall_time":[0-9.e-]+,"cpu_time":[0-9.e-]+\})re";
 
 // stdout holds exactly one line: the result.
 std::string onlyLine(const std::string& out) {

@@ -21,7 +21,7 @@ TEST(RecordingSessionTest, TrialsAndResultsCarryTheSessionIds) {
     TrialRecorder rec = session.beginTrial(meta);
     for (const auto& row : test::randomRows(4, 1)) rec.push(row);
     TrialEnd end;
-    end.outcome = "fail";
+    end.outcome = "failure";
     rec.finish(end);
     TrialResult r = RecordingSession::resultOf(rec, end, 1.5);
     r.score = 2.0;
@@ -32,7 +32,7 @@ TEST(RecordingSessionTest, TrialsAndResultsCarryTheSessionIds) {
   EXPECT_EQ(r.meta.session, "s3");
   const std::string results = hemiroll::test::TempDirectory::read(session.resultsPath());
   EXPECT_EQ(std::count(results.begin(), results.end(), '\n'), 3);
-  EXPECT_NE(results.find("p07,s3,trial-002,slalom,,fail,,1.5,2,4,0,"), std::string::npos) << results;
+  EXPECT_NE(results.find("p07,s3,trial-002,slalom,,failure,,1.5,2,4,0,"), std::string::npos) << results;
   EXPECT_EQ(session.replayPath("trial-002"), session.dir() / "trial-002.replay");
 }
 

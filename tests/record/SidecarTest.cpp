@@ -44,7 +44,7 @@ TEST(SidecarTest, MetadataRoundTripsExactly) {
   s.startTime = "2026-11-22T06:40:00.123Z";
   s.rows = 42;
   TrialEnd end;
-  end.outcome = "fail";
+  end.outcome = "failure";
   end.reason = "tipped over";
   end.hasTiming = true;
   end.timing.latenessP999 = 4.2e-5;
@@ -73,6 +73,22 @@ TEST(SidecarTest, MetadataRoundTripsExactly) {
   EXPECT_EQ(sback.end->timing.missedTicks, 2u);
   EXPECT_TRUE(sback.complete);
   EXPECT_EQ(sback.rows, 42u);
+}
+
+// No guidance has no spring: the sidecar says kind none with null numbers
+// (it said none with 200 N/m and fade 1), and reads back as none.
+TEST(SidecarTest, NoGuidanceWritesNoSpring) {
+  SidecarStatus s;
+  TrialMeta m = awkwardMeta();
+  m.guidance = {};
+  const nlohmann::ordered_json j = nlohmann::ordered_json::parse(Sidecar::toJson(m, s));
+  EXPECT_EQ(j.at("guidance").at("kind"), "none");
+  for (const char* key : {"stiffness_N_per_m", "damping_N_s_per_m", "max_error_m", "fade"})
+    EXPECT_TRUE(j.at("guidance").at(key).is_null()) << key;
+  TrialMeta back;
+  Sidecar::fromJson(j.dump(), "none.json", back, s);
+  EXPECT_EQ(back.guidance.kind, haptics::GuidanceKind::None);
+  EXPECT_EQ(back.guidance.scale, 0.0);  // no guidance force, as results.csv's guidance_fade says
 }
 
 // A sidecar written before guidance has no "guidance" and reads as none;

@@ -262,6 +262,25 @@ TEST(TaskJudge, TimeLimitFailsButAHoldOnTheLastTickCounts) {
   EXPECT_EQ(justInTime.judge(at(2.0)), TrialOutcome::Success);
 }
 
+// 60000 steps of 1 ms sum to just under 60 s: the limit is reached on the
+// 60000th tick, not one tick later (a 60 s level ended at 60.001 s while a
+// 120 s one ended at 120.000).
+TEST(TaskJudge, TheTimeLimitEndsOnItsOwnTickWhateverTheSumsRounding) {
+  TaskDef task = oneTarget(TaskVariable::x_p, 0.0, 0.001);
+  for (const double limit : {60.0, 120.0, 0.3}) {
+    task.timeLimit = limit;
+    TaskJudge judge(task);
+    double t = 0.0;
+    long long ticks = 0;
+    while (judge.judge(at(t, with(slot::x_p, 1.0))) == TrialOutcome::Running && ticks < 200000) {
+      t += 0.001;
+      ++ticks;
+    }
+    EXPECT_EQ(ticks, std::llround(limit / 0.001)) << limit;
+    EXPECT_EQ(judge.reason(), trial_reason::kTimeLimit);
+  }
+}
+
 TEST(TaskJudge, WatchOnlyLevelsSucceedAtTheTimeLimit) {
   TaskDef task;
   task.timeLimit = 1.0;
