@@ -42,6 +42,9 @@ constexpr double kTurnAmplitudeShare = 0.4;
 // Landing fades the circle at these rates [m/s]; slower landings leave less
 // wobble, faster ones less drift. The planner tries them all.
 constexpr double kLandRates[] = {0.0015, 0.002, 0.003, 0.004, 0.006, 0.009};
+// A landing search waits for psi until a plain landing would end within
+// this many psi bands of it: the search turns psi only a little.
+constexpr double kRefinePsiBands = 2.0;
 // Despin circle radius per rad/s of spin (HelixParams::despinGain) [m s/rad].
 constexpr double kDespinGains[] = {0.0, 0.01};
 
@@ -492,7 +495,7 @@ bool Autopilot::tryLanding(const AutopilotInput& input) {
   // Landing from a shallow tilt leaves less to undo: the hovering helix
   // wobbles between about 0.2 and 0.6 rad, so the search waits for the low.
   const double tilt = uprightContact(constants_, input.state).tilt;
-  if (!atRest || uprightError(upright) > def_.refineConsider || input.time < nextRefinement_ || psiNearest > 3.0 ||
+  if (!atRest || uprightError(upright) > def_.refineConsider || input.time < nextRefinement_ || psiNearest > kRefinePsiBands ||
       tilt > def_.refineTilt)
     return false;
   if (!mayRefine()) return false;
@@ -506,7 +509,11 @@ bool Autopilot::refineLanding(const AutopilotInput& input, double horizon, bool 
   // defeated searches before gets longer ones (up to 4x the rounds).
   constexpr double kRateScale[] = {1.0, 0.5, 2.0};
   constexpr double kSpreadScale[] = {1.0, 1.5, 0.75};
-  const double escalation = 1.0 + static_cast<double>(std::min<std::uint64_t>(refinements_, 3));
+  // Turning psi on the spot, a search mostly fails because psi has not
+  // come round yet, not because the hover defeats it, so searches there are
+  // not lengthened (longer ones found no more landings on the generated
+  // tasks and cost psi tasks up to 0.3 s of CPU per simulated second).
+  const double escalation = planTurning_ ? 1.0 : 1.0 + static_cast<double>(std::min<std::uint64_t>(refinements_, 3));
   const std::uint64_t attempt = ++refinements_;
   LandingSearchDef search;
   search.population = std::max(8, static_cast<int>(std::lround(32 * def_.budget)));

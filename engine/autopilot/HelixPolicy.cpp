@@ -148,12 +148,45 @@ Vec3 HelixPolicy::despin(const physics::ForceDrivenState& x) {
   return {radius * std::cos(despinAngle_), radius * std::sin(despinAngle_), 0.0};
 }
 
+bool HelixPolicy::leansOnly() const { return !goal_.contactSet() && (goal_.set[9] || goal_.set[10]); }
+
+Vec3 HelixPolicy::leanGoal(const physics::ForceDrivenState& x) {
+  // The lean as a horizontal vector of angles, pointing to the low side:
+  // (-u_o, v_o) (a mass point at +x leans it to +x with u_o < 0). A slot
+  // the stage leaves free keeps its present value.
+  using namespace physics::force_slot;
+  const physics::HemisphereParams& p = constants_->params;
+  const Vec2 lean(-x[u_o], x[v_o]);
+  const Vec2 want(goal_.set[u_o] ? -goal_.target[u_o] : lean.x(), goal_.set[v_o] ? goal_.target[v_o] : lean.y());
+  // At rest at tilt t the mass point sits d = R sin t + (3R/8)(m_s/m_p) tan t
+  // towards the low side of the face's centre (the weights' moments about
+  // the contact balance: m_p cos t (d - R sin t) = (3R/8) m_s sin t), and the
+  // face's centre stands over the contact point. The spring's sag and the
+  // hand's softening are left to the integral, which turns the lean's
+  // error into a further offset.
+  const double t = std::min(want.norm(), 1.2);
+  const Vec2 towards = want.norm() > 1e-12 ? Vec2(want / want.norm()) : Vec2::Zero();
+  const double d = p.radius * std::sin(t) + 0.375 * p.radius * (p.shellMass / p.pointMass) * std::tan(t);
+  settleOffset_ += physics::limitedTo(params_.settleGain * p.radius * (want - lean), params_.glideSpeed) * dt_;
+  settleOffset_ = physics::limitedTo(settleOffset_, 0.5 * p.radius);
+  const Vec2 at = Vec2(x[u_a], x[v_a]) + d * std::cos(t) * towards + settleOffset_;
+  return {at.x(), at.y(), p.radius - d * std::sin(t)};
+}
+
 Vec3 HelixPolicy::proxyFor(const physics::ForceDrivenState& x) {
   using namespace physics::force_slot;
   const double R = constants_->params.radius;
   const UprightContact up = uprightContact(*constants_, x);
   Vec3 proxy;
-  if (phase_ == HelixPhase::Settle) {
+  if (phase_ == HelixPhase::Settle && leansOnly()) {
+    // Glide to the lean's goal at the settle's speed, as below.
+    const Vec3 goal = leanGoal(x);
+    motion_.goal = goal.head<2>();
+    Vec3 step = goal - last_;
+    const double most = params_.glideSpeed * dt_;
+    if (step.norm() > most) step *= most / step.norm();
+    proxy = last_ + step;
+  } else if (phase_ == HelixPhase::Settle) {
     const Vec2 land = detour(Vec2(x[u_a], x[v_a]), landingPoint(up.point));
     const Vec2 error = land - Vec2(x[u_a], x[v_a]);
     // The goal creeps only while the contact is not yet well inside its

@@ -116,6 +116,10 @@ class HelixPolicy {
   physics::Vec3 despin(const physics::ForceDrivenState& x);
   physics::Vec2 detour(const physics::Vec2& contact, const physics::Vec2& land);
   physics::Vec3 stiffened(const physics::Vec3& proxy, const physics::ForceDrivenState& x) const;
+  // A stage that asks for a lean (u_co) and no contact point: the settle
+  // goal that holds the hemisphere at that lean (HelixPolicy.cpp).
+  bool leansOnly() const;
+  physics::Vec3 leanGoal(const physics::ForceDrivenState& x);
 
   const physics::ModelConstants* constants_;
   HelixParams params_;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
 #include <numbers>
 
@@ -136,6 +137,13 @@ int autoplay(App& app, const PlayOptions& o) {
 
 // The main screens as PNGs in o.tourDir: title.png, levels.png, play.png, ...
 int tour(App& app, const PlayOptions& o) {
+  // The folder is made if it is missing, before the minute the tour takes.
+  std::error_code made;
+  std::filesystem::create_directories(o.tourDir, made);
+  if (made) {
+    std::cerr << kPrefix << "cannot make the folder " << o.tourDir << ": " << made.message() << "\n";
+    return kExitFailure;
+  }
   ScreenTourDef def;
   def.level = o.level;
   def.playSeconds = o.autoplay > 0.0 ? o.autoplay : 3.0;
