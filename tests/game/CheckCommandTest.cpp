@@ -1,0 +1,112 @@
+// `hemiroll check`, end to end (the real binary) and its kind guess: every
+// shipped file is clean; a broken level names its file and line; a level
+// that loads but cannot be played is told why (the device, a hold, a
+// target out of reach, a failing score); a protocol is checked through its
+// conditions' levels; a missing file or a FIFO is a problem, not a hang.
+#include "game/commands/CheckCommand.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+#include <sys/stat.h>
+#include <vector>
+
+#include "tests/support/ProcessRunner.h"
+#include "tests/support/TempDirectory.h"
+
+namespace hemiroll::test {
+namespace {
+
+using ::testing::HasSubstr;
+using ::testing::Not;
+
+const std::string kBinary = HEMIROLL_BINARY;
+const std::string kSource = HEMIROLL_SOURCE_DIR;
+
+ProcessResult check(const std::vector<std::string>& args) {
+  std::vector<std::string> all = {"check"};
+  all.insert(all.end(), args.begin(), args.end());
+  return runProcess(kBinary, all);
+}
+
+constexpr const char* kUnplayable = R"lua(
+return { name = "unplayable", force = { method = "M3", kr = 5000, kv = 10, alpha = 2 },
+  task = { time_limit = 10, stages = {
+    { name = "reach", hold = 12, targets = { u_ca = { value = { 0.5, 0 }, tol = 0.004 } } } } },
+  score = function(s) return s.nonexistent.field end,
+  medals = { bronze = 1, silver = 2, gold = 3 } }
+)lua";
+
+TEST(CheckCommandTest, EveryShippedFileIsClean) {
+  std::vector<std::string> files;
+  for (const char* folder : {"/levels", "/levels/protocols", "/levels/scenarios", "/levels/sweeps", "/levels/generated"})
+    for (const auto& entry : std::filesystem::directory_iterator(kSource + folder))
+      if (entry.path().extension() == ".lua") files.push_back(entry.path().string());
+  ASSERT_GT(files.size(), 20u);
+  const ProcessResult r = check(files);
+  EXPECT_EQ(r.exitCode, 0) << r.out << r.err;
+  EXPECT_THAT(r.out, Not(HasSubstr("problem")));
+  EXPECT_THAT(r.out, HasSubstr("paper_guidance.lua: ok (protocol)"));
+  EXPECT_THAT(r.out, HasSubstr("rose_paper.lua: ok (scenario)"));
+  EXPECT_THAT(r.out, HasSubstr("rose_k_omega.lua: ok (sweep spec)"));
+  EXPECT_THAT(r.out, HasSubstr("paper_reaching.lua: ok (level)"));
+}
+
+TEST(CheckCommandTest, ALevelThatLoadsButCannotBePlayedIsToldWhyEveryTime) {
+  TempDirectory dir;
+  const std::string level = dir.write("unplayable.lua", kUnplayable);
+  const ProcessResult r = check({level});
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_THAT(r.out, HasSubstr("4 problems (as a level)"));
+  EXPECT_THAT(r.out, HasSubstr("coupling stiffness exceeds the device's maxStiffness"));
+  EXPECT_THAT(r.out, HasSubstr("stage 1 (\"reach\") asks for a hold of 12 s, not shorter than the time limit of 10 s"));
+  EXPECT_THAT(r.out, HasSubstr("beyond its reach"));
+  EXPECT_THAT(r.out, HasSubstr("the score function fails on a won trial"));
+  EXPECT_THAT(r.out, HasSubstr("unplayable.lua:5:"));  // the score's own line
+
+  // Through a protocol: the condition's level and where it sits.
+  const std::string protocol =
+      dir.write("study.lua", "return { experiment = \"x\", blocks = { { name = \"train\", conditions = { { level = "
+                             "\"unplayable.lua\" } } } } }\n");
+  const ProcessResult p = check({protocol});
+  EXPECT_EQ(p.exitCode, 2);
+  EXPECT_THAT(p.out, HasSubstr("(as a protocol)"));
+  EXPECT_THAT(p.out, HasSubstr("block 1 (\"train\"), condition 1"));
+  EXPECT_THAT(p.out, HasSubstr("beyond its reach"));
+}
+
+TEST(CheckCommandTest, ALoadErrorNamesTheFileAndLineAndTheRestAreStillChecked) {
+  TempDirectory dir;
+  const std::string broken =
+      dir.write("broken.lua", "return { name = \"b\",\n task = { targets = { u_ca = { value = { 0.01, 0 }, tol = -1 } } } }\n");
+  const std::string fifo = (dir.path() / "fifo.lua").string();
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  const ProcessResult r = check({broken, dir.path().string() + "/missing.lua", fifo, kSource + "/levels/paper_reaching.lua"});
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_THAT(r.out, HasSubstr("broken.lua:2: task.targets.u_ca.tol"));
+  EXPECT_THAT(r.out, HasSubstr("missing.lua: no such file"));
+  EXPECT_THAT(r.out, HasSubstr("not a regular file"));
+  EXPECT_THAT(r.out, HasSubstr("paper_reaching.lua: ok (level)"));
+}
+
+TEST(CheckCommandTest, AWrongFlagIsUsage) {
+  const ProcessResult r = check({"--as", "nothing", "x.lua"});
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_THAT(r.err, HasSubstr("'level', 'protocol', 'scenario' or 'sweep'"));
+  EXPECT_EQ(check({}).exitCode, 2);
+}
+
+TEST(CheckCommandTest, TheKindIsGuessedFromTheKeys) {
+  using game::CheckedKind;
+  EXPECT_EQ(game::guessKind("return { experiment = 'x', blocks = {} }"), CheckedKind::Protocol);
+  EXPECT_EQ(game::guessKind("return {\n drive = { r1 = 0.01 },\n duration = 35,\n axes = {} }"), CheckedKind::Sweep);
+  EXPECT_EQ(game::guessKind("return { drive = { kind = 'rose' }, duration = 35 }"), CheckedKind::Scenario);
+  EXPECT_EQ(game::guessKind("return { name = 'l', task = { targets = {} } }"), CheckedKind::Level);
+  // A word inside another name is not the key.
+  EXPECT_EQ(game::guessKind("return { name = 'l', task = {}, myblocks = 1 }"), CheckedKind::Level);
+}
+
+}  // namespace
+}  // namespace hemiroll::test
