@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "game/commands/AnalyzeCommand.h"
+#include "game/commands/BidsCommand.h"
 #include "game/commands/CheckCommand.h"
 #include "game/commands/ExitCode.h"
 #include "game/commands/FiguresCommand.h"
@@ -38,6 +39,7 @@ constexpr CommandEntry kCommands[] = {
     {"analyze", "measure phases, rose and helix in recorded trials; tables and SVG plots", hemiroll::game::runAnalyzeCommand},
     {"figures", "regenerate the paper's Figs. 9-11 from the simulator, with their features", hemiroll::game::runFiguresCommand},
     {"sweep", "sweep the rose drive over a grid of parameters; shards, merge, heatmaps", hemiroll::game::runSweepCommand},
+    {"bids", "write session folders as a BIDS motion dataset", hemiroll::game::runBidsCommand},
     {"check", "load levels, protocols, scenarios or sweep specs and report every problem found", hemiroll::game::runCheckCommand},
     {"version", "print the version", hemiroll::game::runVersionCommand},
 };

@@ -126,11 +126,14 @@ BidsFiles BidsExport::write(const Recording& r, const std::filesystem::path& dir
   j["TrackedPointsCount"] = 5;  // mass point (face and scene), hemisphere, contact (plane, sphere), proxy, device
   // Not a BIDS key (BIDS allows more): the trial's haptic guidance, so that
   // the Fguide channels can be read without the hemiroll sidecar.
+  // No guidance has no spring: null numbers, as in the sidecar.
+  const bool guided = r.meta.guidance.kind != haptics::GuidanceKind::None;
+  const auto orNull = [guided](double v) { return guided ? nlohmann::ordered_json(v) : nlohmann::ordered_json(); };
   j["HapticGuidance"] = {{"Kind", haptics::guidanceKindName(r.meta.guidance.kind)},
-                         {"StiffnessNPerM", r.meta.guidance.stiffness},
-                         {"DampingNSPerM", r.meta.guidance.damping},
-                         {"MaxErrorM", r.meta.guidance.maxError},
-                         {"Fade", r.meta.guidance.scale}};
+                         {"StiffnessNPerM", orNull(r.meta.guidance.stiffness)},
+                         {"DampingNSPerM", orNull(r.meta.guidance.damping)},
+                         {"MaxErrorM", orNull(r.meta.guidance.maxError)},
+                         {"Fade", orNull(r.meta.guidance.scale)}};
   j["MissingValues"] = "n/a";
   j["SubjectArtefactDescription"] = "n/a";
   writeFileAtomically(files.motionJson, j.dump(2, ' ', false, decltype(j)::error_handler_t::replace) + "\n");

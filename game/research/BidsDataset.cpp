@@ -1,0 +1,179 @@
+#include "game/research/BidsDataset.h"
+
+#include <algorithm>
+#include <exception>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <system_error>
+
+#include "engine/record/BidsExport.h"
+#include "engine/record/DurableFile.h"
+#include "engine/record/RecordError.h"
+#include "engine/record/RecordingReader.h"
+#include "engine/record/TrialMeta.h"
+
+namespace hemiroll::game {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* kBidsVersion = "1.9.0";
+
+// The trial's place in the protocol, as the session wrote it into the
+// sidecar's `extra`, in the events file's column order.
+constexpr const char* kProtocolColumns[] = {"block", "block_name", "trial_in_block", "repetition", "condition",
+                                            "condition_label"};
+
+std::string extraOf(const record::TrialMeta& meta, const std::string& key) {
+  for (const auto& [k, v] : meta.extra)
+    if (k == key) return v;
+  return "n/a";
+}
+
+// A TSV cell: no tab or line break inside, "n/a" for nothing (BIDS).
+std::string cell(std::string text) {
+  if (text.empty()) return "n/a";
+  for (char& ch : text)
+    if (ch == '\t' || ch == '\n' || ch == '\r') ch = ' ';
+  return text;
+}
+
+std::string number(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", v);
+  return text;
+}
+
+// sub-<p>, ses-<s> (or "") and the stem without the tracking system, from
+// BidsExport's stem: the labels are BidsExport's, so the files agree.
+struct Entities {
+  std::string subject, session, eventsStem;
+};
+
+Entities entitiesOf(const std::string& stem) {
+  Entities e;
+  std::string rest = stem;
+  std::vector<std::string> kept;
+  while (!rest.empty()) {
+    const std::size_t cut = rest.find('_');
+    const std::string part = rest.substr(0, cut);
+    rest = cut == std::string::npos ? "" : rest.substr(cut + 1);
+    if (part.rfind("sub-", 0) == 0) e.subject = part;
+    if (part.rfind("ses-", 0) == 0) e.session = part;
+    if (part.rfind("tracksys-", 0) != 0) kept.push_back(part);
+  }
+  for (std::size_t i = 0; i < kept.size(); ++i) {
+    if (i > 0) e.eventsStem += '_';
+    e.eventsStem += kept[i];
+  }
+  return e;
+}
+
+std::string eventsTsv(const record::Recording& r) {
+  std::string out = "onset\tduration\ttrial_type";
+  for (const char* c : kProtocolColumns) {
+    out += '\t';
+    out += c;
+  }
+  out += "\tlevel\tguidance\tguidance_fade\toutcome\treason\n";
+  const double duration = r.rows.empty() ? 0.0 : r.rows.back().time;
+  const bool guided = r.meta.guidance.kind != haptics::GuidanceKind::None;
+  std::vector<std::string> row = {"0", number(duration), "trial"};
+  for (const char* c : kProtocolColumns) row.push_back(cell(extraOf(r.meta, c)));
+  row.push_back(cell(r.meta.levelName));
+  row.push_back(haptics::guidanceKindName(r.meta.guidance.kind));
+  row.push_back(guided ? number(r.meta.guidance.scale) : std::string("n/a"));
+  row.push_back(cell(r.status.end->outcome));
+  row.push_back(cell(r.status.end->reason));
+  for (std::size_t i = 0; i < row.size(); ++i) {
+    if (i > 0) out += '\t';
+    out += row[i];
+  }
+  out += '\n';
+  return out;
+}
+
+void writeTopFiles(const fs::path& out, const std::string& name, const std::vector<std::string>& participants) {
+  nlohmann::ordered_json d;
+  d["Name"] = name;
+  d["BIDSVersion"] = kBidsVersion;
+  d["DatasetType"] = "raw";
+  d["GeneratedBy"] = nlohmann::ordered_json::array(
+      {{{"Name", "hemiroll"}, {"Version", record::softwareVersion()},
+        {"Description", "hemiroll bids: session folders exported as BIDS motion"}}});
+  record::writeFileAtomically(out / "dataset_description.json", d.dump(2) + "\n");
+  std::string tsv = "participant_id\n";
+  for (const std::string& p : participants) tsv += p + "\n";
+  record::writeFileAtomically(out / "participants.tsv", tsv);
+  nlohmann::ordered_json pj;
+  pj["participant_id"] = {{"Description", "the participant id of the hemiroll session, letters and digits only"}};
+  record::writeFileAtomically(out / "participants.json", pj.dump(2) + "\n");
+  record::writeFileAtomically(
+      out / "README",
+      "Movements of a hemisphere rolling without slipping on a plane, steered by a mass point on its face\n"
+      "(hemiroll; Svinin et al. 2009). Written by `hemiroll bids` from session folders: one motion\n"
+      "recording per trial (sampled state, proxy, forces; channels.tsv names them, in SI units), and\n"
+      "an events file per trial with its place in the protocol and its outcome. Trials that did not\n"
+      "finish are not in it.\n");
+}
+
+}  // namespace
+
+std::vector<fs::path> sessionFolders(const fs::path& input) {
+  std::vector<fs::path> found;
+  std::error_code ec;
+  if (fs::is_regular_file(input / "session.json", ec)) return {input};
+  for (const auto& one : fs::directory_iterator(input, ec)) {
+    if (!one.is_directory(ec)) continue;
+    if (fs::is_regular_file(one.path() / "session.json", ec)) {
+      found.push_back(one.path());
+      continue;
+    }
+    for (const auto& two : fs::directory_iterator(one.path(), ec))
+      if (two.is_directory(ec) && fs::is_regular_file(two.path() / "session.json", ec)) found.push_back(two.path());
+  }
+  std::sort(found.begin(), found.end());
+  return found;
+}
+
+BidsDatasetReport writeBidsDataset(const std::vector<fs::path>& sessions, const fs::path& out,
+                                   const std::string& datasetName) {
+  BidsDatasetReport report;
+  std::error_code ec;
+  fs::create_directories(out, ec);
+  if (ec) throw record::RecordError(out.string() + ": cannot create: " + ec.message());
+  std::set<std::string> participants;
+  for (const fs::path& session : sessions) {
+    std::vector<fs::path> trials;
+    for (const auto& entry : fs::directory_iterator(session, ec))
+      if (entry.path().extension() == ".csv" && entry.path().filename().string().rfind("trial-", 0) == 0)
+        trials.push_back(entry.path());
+    std::sort(trials.begin(), trials.end());
+    for (const fs::path& csv : trials) {
+      record::Recording r;
+      try {
+        r = record::RecordingReader::load(csv);
+      } catch (const std::exception& e) {
+        report.leftOut.push_back(csv.string() + ": " + e.what());
+        continue;
+      }
+      if (!r.status.complete || !r.status.end || r.truncatedTail) {
+        report.leftOut.push_back(csv.string() + ": the trial did not finish (no outcome in its sidecar)");
+        continue;
+      }
+      const Entities e = entitiesOf(record::BidsExport::stem(r));
+      const fs::path dir = out / e.subject / e.session / "motion";
+      record::BidsExport::write(r, dir);
+      record::writeFileAtomically(dir / (e.eventsStem + "_events.tsv"), eventsTsv(r));
+      participants.insert(e.subject);
+      ++report.trials;
+    }
+  }
+  report.participants.assign(participants.begin(), participants.end());
+  writeTopFiles(out, datasetName, report.participants);
+  return report;
+}
+
+}  // namespace hemiroll::game

@@ -1,0 +1,38 @@
+#pragma once
+// A BIDS dataset (BIDS 1.9, "Motion") from session folders: what `hemiroll
+// bids` writes (issue 30).
+//   DIR/dataset_description.json, README, participants.tsv, participants.json
+//   DIR/sub-<p>/[ses-<s>/]motion/<stem>_motion.tsv, _channels.tsv, _motion.json
+//       (record::BidsExport, one set per trial)
+//   DIR/sub-<p>/[ses-<s>/]motion/sub-<p>[_ses-<s>]_task-<t>_run-<n>_events.tsv
+//       onset, duration, trial_type and the trial's place in the protocol
+//       (block, condition, trial in block, guidance and its fade) and its
+//       outcome, from the sidecar.
+// A trial that did not finish (no outcome in its sidecar, or a CSV cut
+// short) is left out and named in `leftOut`, never exported as if whole.
+// Knows the session folder's layout (PROTOCOLS.md); not the window.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace hemiroll::game {
+
+struct BidsDatasetReport {
+  int trials = 0;                    // exported
+  std::vector<std::string> participants;  // BIDS labels, in order
+  std::vector<std::string> leftOut;  // "<trial csv>: why"
+};
+
+// The session folders under `input`: itself when it holds session.json,
+// else every folder one or two levels down that does (an experiment's
+// participants and their sessions). Sorted.
+std::vector<std::filesystem::path> sessionFolders(const std::filesystem::path& input);
+
+// Writes the dataset for `sessions` into `out` (created; files in it that
+// the export writes are replaced). Throws record::RecordError or
+// files::FileReadError naming the file.
+BidsDatasetReport writeBidsDataset(const std::vector<std::filesystem::path>& sessions,
+                                   const std::filesystem::path& out, const std::string& datasetName);
+
+}  // namespace hemiroll::game
