@@ -74,6 +74,23 @@ void AutopilotCompanion::run() {
   }
 }
 
+void AutopilotCompanion::publishHint() {
+  const double dt = lastHintTime_ < 0.0 ? 0.0 : obs_.time - lastHintTime_;
+  lastHintTime_ = obs_.time;
+  const human::HintCue cue = smoother_.cue(autopilot_, obs_, dt);
+  HintRing ring;
+  ring.kind = cue.kind == human::HintKind::Stir ? HintRing::Stir
+              : cue.kind == human::HintKind::Settle ? HintRing::Settle
+                                                    : HintRing::None;
+  ring.centre[0] = cue.centre.x();
+  ring.centre[1] = cue.centre.y();
+  ring.radius = cue.radius;
+  ring.rate = cue.rate;
+  ring.point[0] = cue.point.x();
+  ring.point[1] = cue.point.y();
+  hints_.write(ring);
+}
+
 void AutopilotCompanion::step() {
   if (gaveUp_ || !loop_.latestForPlanner(snapshot_) || snapshot_.tick == lastTick_) return;
   lastTick_ = snapshot_.tick;
@@ -98,6 +115,7 @@ void AutopilotCompanion::step() {
   }
   if (guide_) loop_.publishGuide(plan);
   plans_.write(plan);
+  publishHint();
   planCount_.fetch_add(1, std::memory_order_relaxed);
 }
 

@@ -7,7 +7,9 @@
 // that plan to whoever needs it:
 //   - the autopilot's hand (HandoffBotDevice) while it drives ("watch");
 //   - the servo loop as the guide of haptic guidance (Guidance.h);
-//   - the UI as a hint (latestPlan), drawn, moving nothing.
+//   - the UI as a hint (latestPlan; latestHint, the same plan said as a
+//     ring to trace or a spot to settle over, HintSmoother), drawn, moving
+//     nothing.
 // Every crossing is lock free (TripleBuffers); only the give-up reason, a
 // string the UI reads now and then, takes a mutex, which the servo thread
 // never touches. The autopilot plans heavy rollouts on its own worker
@@ -25,11 +27,23 @@
 #include "engine/script/TaskJudge.h"
 #include "game/trial/AutopilotBot.h"
 #include "game/trial/HandoffBotDevice.h"
+#include "game/trial/HintSmoother.h"
 #include "game/trial/ObservationBuilder.h"
 
 namespace hemiroll::game {
 
 inline constexpr double kCompanionRate = 500.0;  // [Hz]
+
+// The hint at a person's bandwidth (HintSmoother), as the UI draws it: a
+// ring to trace at a pace, or a spot to settle over. Plain values: it
+// crosses threads through a TripleBuffer.
+struct HintRing {
+  enum Kind : int { None, Stir, Settle } kind = None;
+  double centre[2] = {0.0, 0.0};  // Stir: the ring's centre on the floor [m]
+  double radius = 0.0;            // Stir [m]
+  double rate = 0.0;              // Stir: [rad/s], positive anticlockwise seen from above
+  double point[2] = {0.0, 0.0};   // Settle: where the proxy should stand [m]
+};
 
 class AutopilotCompanion {
  public:
@@ -48,6 +62,8 @@ class AutopilotCompanion {
   void publishTask(const script::TaskJudge& judge);
   // UI thread: the latest plan (valid false before the first and after a give-up).
   bool latestPlan(haptics::GuideSample& out) { return plans_.read(out); }
+  // UI thread: the latest hint at a person's bandwidth (false before the first).
+  bool latestHint(HintRing& out) { return hints_.read(out); }
   // Any thread: stop handing poses to the autopilot's hand (the player took over).
   void stopDriving() { driving_.store(false, std::memory_order_release); }
   bool driving() const { return driving_.load(std::memory_order_acquire); }
@@ -59,6 +75,7 @@ class AutopilotCompanion {
  private:
   void run();
   void step();
+  void publishHint();
 
   haptics::ServoLoop& loop_;
   HandoffBotDevice* hand_;
@@ -69,6 +86,9 @@ class AutopilotCompanion {
   std::string initError_;
   haptics::TripleBuffer<script::BotObservation> tasks_;
   haptics::TripleBuffer<haptics::GuideSample> plans_;
+  haptics::TripleBuffer<HintRing> hints_;
+  HintSmoother smoother_;  // companion thread
+  double lastHintTime_ = -1.0;
   // Companion thread only.
   script::BotObservation obs_;
   haptics::ServoSnapshot snapshot_;

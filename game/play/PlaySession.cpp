@@ -176,6 +176,10 @@ void PlaySession::enableHints() {
 
 bool PlaySession::hint(haptics::GuideSample& out) { return companion_ && companion_->latestPlan(out) && out.valid; }
 
+bool PlaySession::hintRing(HintRing& out) {
+  return companion_ && companion_->latestHint(out) && out.kind != HintRing::None;
+}
+
 std::string PlaySession::autopilotNote() const { return companion_ ? companion_->giveUpReason() : std::string(); }
 
 std::uint64_t PlaySession::autopilotPlans() const { return companion_ ? companion_->plans() : 0; }

@@ -188,6 +188,8 @@ class PlaySession {
   // The autopilot's latest plan (false when it has none: no companion, not
   // yet, or it gave up); its give-up reason ("" while it plans).
   bool hint(haptics::GuideSample& out);
+  // The same plan as a ring to trace or a spot to settle over (HintRing).
+  bool hintRing(HintRing& out);
   std::string autopilotNote() const;
   std::uint64_t autopilotPlans() const;
 

@@ -266,7 +266,29 @@ void PlayScreen::showAutopilot() {
   const bool holding = session_->autopilotHolds();
   scene_.showHint = showHint_ && !holding && session_->hint(plan);
   compass_.hide();
-  if (scene_.showHint) {
+  HintRing ring;
+  if (scene_.showHint && session_->hintRing(ring)) {
+    // At a person's bandwidth (issue 26): the ring the autopilot stirs, with
+    // a dot going round at its pace, or the spot it settles over; the scene
+    // marks the dot (or the spot) and an arrow from the proxy to it.
+    const double heading = render::screenRightHeading(scene_.camera);
+    const double t = session_->snapshot().time;
+    scene_.hintFrom = scene_.proxyPosition;
+    if (ring.kind == HintRing::Stir) {
+      const double a = ring.rate * t;
+      const double pace[2] = {ring.centre[0] + ring.radius * std::cos(a), ring.centre[1] + ring.radius * std::sin(a)};
+      scene_.hintTo = {pace[0], pace[1], scene_.proxyPosition[2]};
+      double pr = 0.0, pu = 0.0, dr = 0.0, du = 0.0;
+      toScreenDirections(scene_.proxyPosition[0] - ring.centre[0], scene_.proxyPosition[1] - ring.centre[1], heading, pr, pu);
+      toScreenDirections(pace[0] - ring.centre[0], pace[1] - ring.centre[1], heading, dr, du);
+      compass_.showStir(pr, pu, dr, du, ring.radius, ring.rate);
+    } else {
+      scene_.hintTo = {ring.point[0], ring.point[1], scene_.proxyPosition[2]};
+      double right = 0.0, up = 0.0;
+      toScreenDirections(ring.point[0] - scene_.proxyPosition[0], ring.point[1] - scene_.proxyPosition[1], heading, right, up);
+      compass_.show(right, up, "settle");
+    }
+  } else if (scene_.showHint) {
     // Where the plan goes over the next moment, not only where it is: the
     // autopilot stays within a millimetre or two of the proxy, too close to
     // see; its motion is the lesson.
@@ -284,7 +306,7 @@ void PlayScreen::showAutopilot() {
     hud_.setAutopilot(note.empty() ? "AUTOPILOT playing: click or " + takeHold + " to take over" : note);
   else if (showHint_)
     hud_.setAutopilot(note.empty() ? "hint (" + host_.settings().keys.keyName(KeyAction::Hint) +
-                                         "): green = the autopilot's next move"
+                                         "): stir round the green ring at the green dot's pace; settle on the green spot"
                                    : note);
   else
     hud_.setAutopilot("");

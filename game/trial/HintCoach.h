@@ -1,19 +1,16 @@
 #pragma once
-// The hint at a person's bandwidth: what the autopilot is doing, said as a
-// movement a hand can follow late (visual delay 0.2 s, a correction every
-// 0.25 s or more): "trace this ring, this size, this pace", or "put the
-// proxy over this spot and keep it still". The autopilot's own proxy goes
-// round a centre that rides on the contact tick by tick; the ring's centre
-// here moves slowly (a low-pass of a second) and its size and pace only
-// change when the autopilot changes what it does, so a hint never reverses
-// within a second. The window draws it (a ring on the floor, a settle
-// marker); the human model follows it (engine/human).
+// The hint at a person's bandwidth for the human model (engine/human): an
+// autopilot of its own, planning at half effort beside the simulated
+// person, its law said as a ring to trace or a spot to settle over
+// (HintSmoother: a movement a hand can follow late, never reversing within
+// a second). The window shows the same cue from its AutopilotCompanion.
 
 #include <cstdint>
 #include <memory>
 
 #include "engine/human/ScreenView.h"
 #include "engine/script/BotObservation.h"
+#include "game/trial/HintSmoother.h"
 
 namespace hemiroll::game {
 
@@ -37,10 +34,8 @@ class HintCoach {
  private:
   HintCoachDef def_;
   std::unique_ptr<AutopilotBot> autopilot_;
+  HintSmoother smoother_;
   double dt_ = 0.001;
-  bool started_ = false;
-  bool settling_ = false;
-  physics::Vec2 centre_ = physics::Vec2::Zero();
 };
 
 }  // namespace hemiroll::game

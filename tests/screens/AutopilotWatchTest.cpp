@@ -119,9 +119,23 @@ TEST_F(AutopilotWatchTest, TheHintShowsThePlanAndMovesNothing) {
     planned = play->session()->hint(plan);
   }
   ASSERT_TRUE(planned) << play->session()->autopilotNote();
-  EXPECT_THAT(play->hud().autopilot(), HasSubstr("green = the autopilot's next move"));
+  EXPECT_THAT(play->hud().autopilot(), HasSubstr("stir round the green ring"));
   app.frame();
   EXPECT_TRUE(play->compass().shown());
+  // At a person's bandwidth (issue 26): once the autopilot stirs, the hint
+  // is its ring with a pace, not a point 0.3 s ahead; the same cue the
+  // human model follows (HintSmoother), a few millimetres across.
+  HintRing ring;
+  bool stirring = false;
+  const auto ringStart = std::chrono::steady_clock::now();
+  while (!stirring && std::chrono::steady_clock::now() - ringStart < 5s) {
+    app.frame();
+    stirring = play->session()->hintRing(ring) && ring.kind == HintRing::Stir && play->compass().stirring();
+  }
+  ASSERT_TRUE(stirring);
+  EXPECT_GT(ring.radius, 0.0);
+  EXPECT_LT(ring.radius, 0.01);
+  EXPECT_NE(ring.rate, 0.0);
   // The player holds the proxy and makes no strokes: it stays put however
   // the plan moves.
   const haptics::Vec3 before = play->session()->pointerScene();
