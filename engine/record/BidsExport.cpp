@@ -1,6 +1,7 @@
 #include "engine/record/BidsExport.h"
 
 #include <map>
+#include <set>
 #include <nlohmann/json.hpp>
 #include <system_error>
 
@@ -18,17 +19,18 @@ struct Channel {
 };
 
 // One channel per CSV column after tick, in CSV order (the tick counter is
-// implied by the row index and left out). BIDS motion types: LATENCY, POS,
-// VEL, ANGVEL, ORNT, MISC.
+// implied by the row index and left out). BIDS motion types (the
+// specification's restricted list: ACCEL, ANGACCEL, GYRO, JNTANG, LATENCY,
+// MAGN, MISC, ORNT, POS, VEL): angular velocity is GYRO.
 std::vector<Channel> channels() {
   std::vector<Channel> c = {{"time", "n/a", "LATENCY", "n/a", "s"},
                             {"x_p", "x", "POS", "mass_point_in_face", "m"},
                             {"y_p", "y", "POS", "mass_point_in_face", "m"},
                             {"xd_p", "x", "VEL", "mass_point_in_face", "m/s"},
                             {"yd_p", "y", "VEL", "mass_point_in_face", "m/s"},
-                            {"w_x", "x", "ANGVEL", "hemisphere", "rad/s"},
-                            {"w_y", "y", "ANGVEL", "hemisphere", "rad/s"},
-                            {"w_z", "z", "ANGVEL", "hemisphere", "rad/s"},
+                            {"w_x", "x", "GYRO", "hemisphere", "rad/s"},
+                            {"w_y", "y", "GYRO", "hemisphere", "rad/s"},
+                            {"w_z", "z", "GYRO", "hemisphere", "rad/s"},
                             {"u_a", "x", "POS", "contact_on_plane", "m"},
                             {"v_a", "y", "POS", "contact_on_plane", "m"},
                             {"u_o", "n/a", "MISC", "contact_on_sphere", "rad"},
@@ -123,7 +125,10 @@ BidsFiles BidsExport::write(const Recording& r, const std::filesystem::path& dir
   j["RecordingDuration"] = r.rows.empty() ? 0.0 : r.rows.back().time - r.rows.front().time;
   j["MotionChannelCount"] = chans.size();
   for (const auto& [type, n] : counts) j[type + "ChannelCount"] = n;
-  j["TrackedPointsCount"] = 5;  // mass point (face and scene), hemisphere, contact (plane, sphere), proxy, device
+  std::set<std::string> points;  // the tracked points the channels name
+  for (const Channel& c : chans)
+    if (c.trackedPoint != "n/a") points.insert(c.trackedPoint);
+  j["TrackedPointsCount"] = points.size();
   // Not a BIDS key (BIDS allows more): the trial's haptic guidance, so that
   // the Fguide channels can be read without the hemiroll sidecar.
   // No guidance has no spring: null numbers, as in the sidecar.

@@ -37,17 +37,19 @@ std::string bidsUsage() {
          "dataset_description.json, README, participants.tsv and .json, and per trial\n"
          "the motion recording (_motion.tsv, _channels.tsv, _motion.json) and an\n"
          "_events.tsv with its block, condition, trial in block, guidance, fade and\n"
-         "outcome. A trial that did not finish is left out and named.\n"
+         "outcome. A trial that did not finish or cannot be read is left out and named\n"
+         "on stderr (the rest are written, exit 0).\n"
          "\n"
          "SESSION_OR_EXPERIMENT is a session folder (with session.json) or a folder\n"
          "above them: an experiment's (every participant, every session).\n"
          "\n"
-         "  --out DIR    the dataset's folder (created; the files it writes are replaced)\n"
+         "  --out DIR    the dataset's folder: new or empty\n"
          "  --name NAME  the dataset's Name (default: the experiment's folder name)\n"
          "  --help       print this help\n"
          "\n"
          "Exit codes: 0 written, 1 a file could not be written, 2 bad input (a flag, no\n"
-         "session folder, a file that cannot be read).\n";
+         "session folder, an --out that is not empty, two trials whose ids give the same\n"
+         "BIDS names; nothing is written then).\n";
 }
 
 BidsOptionsResult parseBidsOptions(const std::vector<std::string>& args) {
@@ -98,12 +100,17 @@ int runBidsCommand(const std::vector<std::string>& args) {
   BidsDatasetReport report;
   try {
     report = writeBidsDataset(sessions, *o.out, o.name.value_or(defaultName(o.inputs.front())));
+  } catch (const BidsInputError& e) {
+    std::cerr << kPrefix << e.what() << "\n";
+    return kExitUsage;
   } catch (const std::exception& e) {
     std::cerr << kPrefix << e.what() << "\n";
     return kExitFailure;
   }
   for (const std::string& why : report.leftOut) std::cerr << kPrefix << "left out " << why << "\n";
-  std::cout << kPrefix << report.trials << " trials of " << report.participants.size() << " participants in "
+  const std::size_t people = report.participants.size();
+  std::cout << kPrefix << report.trials << (report.trials == 1 ? " trial of " : " trials of ") << people
+            << (people == 1 ? " participant in " : " participants in ")
             << *o.out << (report.leftOut.empty() ? "" : " (" + std::to_string(report.leftOut.size()) + " left out)")
             << "\n";
   return kExitOk;

@@ -138,7 +138,7 @@ void checkLoadedLevel(script::LoadedLevel& level, const std::string& where, std:
     const std::string name = stageName(stage, i);
     if (stage.hold >= def.task.timeLimit) {
       char line[160];
-      std::snprintf(line, sizeof line, " asks for a hold of %g s, not shorter than the time limit of %g s", stage.hold,
+      std::snprintf(line, sizeof line, " asks for a hold of %.6g s, not shorter than the time limit of %.6g s", stage.hold,
                     def.task.timeLimit);
       problems.push_back(where + ": " + name + line);
     }
@@ -150,6 +150,8 @@ void checkLoadedLevel(script::LoadedLevel& level, const std::string& where, std:
     // The score function on the summaries a trial can end with: won at
     // half the time limit, failed at the limit.
     for (const bool won : {true, false}) {
+      // A summary a trial could end with: the last stage's components at
+      // half their bands, paths and effort of a plausible trial.
       script::TrialSummary s;
       s.outcome = won ? script::TrialOutcome::Success : script::TrialOutcome::Failure;
       s.reason = won ? "target held" : "time limit reached";
@@ -157,15 +159,31 @@ void checkLoadedLevel(script::LoadedLevel& level, const std::string& where, std:
       s.ticks = static_cast<long long>(std::llround(s.time * 1000.0));
       s.stageCount = static_cast<int>(def.task.stages.size());
       s.stagesPassed = won ? s.stageCount : 0;
+      s.contactPath = 0.1;
+      s.pointPath = 0.1;
+      s.effort = 1.0;
+      s.smoothness = 1.0;
+      s.bestMargin = s.finalMargin = won ? 0.5 : -0.5;
+      if (!def.task.stages.empty())
+        for (const script::TargetDef& t : def.task.stages.back().targets) {
+          script::ComponentStatus c;
+          c.variable = t.variable;
+          c.target = t.value;
+          c.tolerance = t.tolerance;
+          c.error = 0.5 * t.tolerance;
+          c.margin = 0.5 * t.tolerance;
+          c.inside = true;
+          s.finalComponents.push_back(c);
+        }
       const script::ScoreResult r = level.script->score(s);
       if (!r.error.empty()) {
-        problems.push_back(where + ": the score function fails on a " + (won ? "won" : "failed") + " trial: " +
-                           r.error);
+        problems.push_back(where + ": the score function fails on a " + (won ? "won" : "failed") +
+                           " trial made up for the check (half the time limit, every band at half): " + r.error);
         break;
       }
       if (r.score && !std::isfinite(*r.score))
         problems.push_back(where + ": the score function gives a value that is not a finite number for a " +
-                           (won ? "won" : "failed") + " trial");
+                           (won ? "won" : "failed") + " trial made up for the check");
     }
   }
 }
@@ -183,7 +201,7 @@ std::vector<std::string> checkProtocol(const std::string& path) {
     for (std::size_t c = 0; c < block.conditions.size(); ++c) {
       const script::ConditionDef& condition = block.conditions[c];
       const std::string where = path + ": block " + std::to_string(b + 1) + " (\"" + block.name + "\"), condition " +
-                                std::to_string(c + 1) + " (" + condition.levelPath + ")";
+                                std::to_string(c + 1) + " (\"" + condition.label + "\", " + condition.levelPath + ")";
       try {
         script::LevelLoadOptions options;
         options.adjust = [&](script::LevelDef& level) { script::applyTrialOverrides(condition.overrides, level); };

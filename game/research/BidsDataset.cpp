@@ -78,7 +78,8 @@ std::string eventsTsv(const record::Recording& r) {
     out += c;
   }
   out += "\tlevel\tguidance\tguidance_fade\toutcome\treason\n";
-  const double duration = r.rows.empty() ? 0.0 : r.rows.back().time;
+  // From the first sample to the last, as the motion file's RecordingDuration.
+  const double duration = r.rows.empty() ? 0.0 : r.rows.back().time - r.rows.front().time;
   const bool guided = r.meta.guidance.kind != haptics::GuidanceKind::None;
   std::vector<std::string> row = {"0", number(duration), "trial"};
   for (const char* c : kProtocolColumns) row.push_back(cell(extraOf(r.meta, c)));
@@ -142,34 +143,71 @@ BidsDatasetReport writeBidsDataset(const std::vector<fs::path>& sessions, const 
                                    const std::string& datasetName) {
   BidsDatasetReport report;
   std::error_code ec;
-  fs::create_directories(out, ec);
-  if (ec) throw record::RecordError(out.string() + ": cannot create: " + ec.message());
-  std::set<std::string> participants;
+  // Into a new or empty folder only: files of an earlier export left beside
+  // this one would be read as part of it (a subject participants.tsv omits).
+  if (fs::exists(out, ec) && !fs::is_empty(out, ec))
+    throw BidsInputError(out.string() + ": exists and is not empty; give a new folder for the dataset");
+  // Every trial read and named first, so that two that would land on the
+  // same files (ids that differ only in characters BIDS labels drop, the
+  // same session given twice) are refused before anything is written.
+  struct Planned {
+    record::Recording recording;
+    fs::path csv;
+    std::string stem;
+    Entities entities;
+  };
+  std::vector<Planned> planned;
+  std::map<std::string, fs::path> taken;  // stem -> the trial it came from
+  std::set<fs::path> seen;
   for (const fs::path& session : sessions) {
+    const fs::path canonical = fs::weakly_canonical(session, ec);
+    if (!seen.insert(ec ? session : canonical).second) continue;  // the same folder given twice
     std::vector<fs::path> trials;
-    for (const auto& entry : fs::directory_iterator(session, ec))
-      if (entry.path().extension() == ".csv" && entry.path().filename().string().rfind("trial-", 0) == 0)
+    for (const auto& entry : fs::directory_iterator(session, ec)) {
+      const std::string name = entry.path().filename().string();
+      if (name.rfind("trial-", 0) != 0) continue;
+      if (entry.path().extension() == ".csv") {
         trials.push_back(entry.path());
+      } else if (entry.path().extension() == ".json") {
+        fs::path csv = entry.path();
+        csv.replace_extension(".csv");
+        if (!fs::exists(csv, ec)) report.leftOut.push_back(entry.path().string() + ": its samples (" +
+                                                           csv.filename().string() + ") are missing");
+      }
+    }
     std::sort(trials.begin(), trials.end());
     for (const fs::path& csv : trials) {
-      record::Recording r;
+      Planned p;
+      p.csv = csv;
       try {
-        r = record::RecordingReader::load(csv);
+        p.recording = record::RecordingReader::load(csv);
+        if (!p.recording.status.complete || !p.recording.status.end || p.recording.truncatedTail) {
+          report.leftOut.push_back(csv.string() + ": the trial did not finish (no outcome in its sidecar)");
+          continue;
+        }
+        p.stem = record::BidsExport::stem(p.recording);
       } catch (const std::exception& e) {
         report.leftOut.push_back(csv.string() + ": " + e.what());
         continue;
       }
-      if (!r.status.complete || !r.status.end || r.truncatedTail) {
-        report.leftOut.push_back(csv.string() + ": the trial did not finish (no outcome in its sidecar)");
-        continue;
-      }
-      const Entities e = entitiesOf(record::BidsExport::stem(r));
-      const fs::path dir = out / e.subject / e.session / "motion";
-      record::BidsExport::write(r, dir);
-      record::writeFileAtomically(dir / (e.eventsStem + "_events.tsv"), eventsTsv(r));
-      participants.insert(e.subject);
-      ++report.trials;
+      p.entities = entitiesOf(p.stem);
+      const auto [at, fresh] = taken.emplace(p.stem, csv);
+      if (!fresh)
+        throw BidsInputError(csv.string() + " and " + at->second.string() + " would both be " + p.stem +
+                             " (BIDS labels keep letters and digits only): export them to separate datasets, or "
+                             "give the participants or sessions ids that differ in letters or digits");
+      planned.push_back(std::move(p));
     }
+  }
+  fs::create_directories(out, ec);
+  if (ec) throw record::RecordError(out.string() + ": cannot create: " + ec.message());
+  std::set<std::string> participants;
+  for (const Planned& p : planned) {
+    const fs::path dir = out / p.entities.subject / p.entities.session / "motion";
+    record::BidsExport::write(p.recording, dir);
+    record::writeFileAtomically(dir / (p.entities.eventsStem + "_events.tsv"), eventsTsv(p.recording));
+    participants.insert(p.entities.subject);
+    ++report.trials;
   }
   report.participants.assign(participants.begin(), participants.end());
   writeTopFiles(out, datasetName, report.participants);

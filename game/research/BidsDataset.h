@@ -13,6 +13,7 @@
 // Knows the session folder's layout (PROTOCOLS.md); not the window.
 
 #include <filesystem>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -29,9 +30,16 @@ struct BidsDatasetReport {
 // participants and their sessions). Sorted.
 std::vector<std::filesystem::path> sessionFolders(const std::filesystem::path& input);
 
-// Writes the dataset for `sessions` into `out` (created; files in it that
-// the export writes are replaced). Throws record::RecordError or
-// files::FileReadError naming the file.
+// What the input rules out (an --out that is not empty, two trials that
+// would get the same BIDS names): nothing has been written.
+struct BidsInputError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Writes the dataset for `sessions` into `out`, which must be new or empty.
+// A trial that cannot be read or did not finish is left out and named.
+// Throws BidsInputError (nothing written) or record::RecordError (a write
+// failed), naming the file.
 BidsDatasetReport writeBidsDataset(const std::vector<std::filesystem::path>& sessions,
                                    const std::filesystem::path& out, const std::string& datasetName);
 

@@ -122,7 +122,7 @@ TEST(BidsCommandTest, ASessionBecomesAValidDatasetWithItsProtocolInTheEvents) {
   const fs::path out = dir.path() / "bids";
   const ProcessResult r = runProcess(kBinary, {"bids", experiment.string(), "--out", out.string()});
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  EXPECT_THAT(r.out, HasSubstr("3 trials of 1 participants"));
+  EXPECT_THAT(r.out, HasSubstr("3 trials of 1 participant in"));
   expectValidBidsMotion(out, 3);
   const std::string events = slurp(out / "sub-p01" / "ses-1" / "motion" / "sub-p01_ses-1_task-tutorialdemo_run-2_events.tsv");
   EXPECT_THAT(events, HasSubstr("block_name"));
@@ -147,9 +147,41 @@ TEST(BidsCommandTest, AnUnfinishedTrialIsLeftOutAndNamed) {
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_THAT(r.err, HasSubstr("left out"));
   EXPECT_THAT(r.err, HasSubstr("trial-002.csv"));
-  EXPECT_THAT(r.out, HasSubstr("2 trials of 1 participants"));
+  EXPECT_THAT(r.out, HasSubstr("2 trials of 1 participant in"));
   expectValidBidsMotion(out, 2);
   EXPECT_FALSE(fs::exists(out / "sub-p01" / "ses-1" / "motion" / "sub-p01_ses-1_task-tutorialdemo_run-2_events.tsv"));
+}
+
+// Ids that differ only in what BIDS labels drop ("p-1" and "p1") would
+// write the same files: refused before anything is written, as is an --out
+// that already holds something (an earlier export's subjects would look
+// like this one's). A finished trial whose samples are missing is named.
+TEST(BidsCommandTest, TrialsThatWouldShareNamesAreRefusedAndNothingIsLost) {
+  TempDirectory dir;
+  const fs::path data = dir.path() / "data";
+  for (const char* who : {"p-1", "p1"}) {
+    const ProcessResult r = runProcess(kBinary, {"session", kSource + "/levels/protocols/tutorial_demo.lua", "--participant",
+                                                 who, "--data", data.string(), "--bot",
+                                                 kSource + "/scripts/bots/tutorial_solver.lua"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+  }
+  const fs::path out = dir.path() / "bids";
+  ProcessResult r = runProcess(kBinary, {"bids", (data / "tutorial-demo").string(), "--out", out.string()});
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_THAT(r.err, HasSubstr("would both be sub-p1_ses-1"));
+  EXPECT_FALSE(fs::exists(out));
+  // One of them alone is fine; a second export into the same folder is not.
+  r = runProcess(kBinary, {"bids", (data / "tutorial-demo" / "p1").string(), "--out", out.string()});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  r = runProcess(kBinary, {"bids", (data / "tutorial-demo" / "p-1").string(), "--out", out.string()});
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_THAT(r.err, HasSubstr("exists and is not empty"));
+  // A finished trial without its samples.
+  fs::remove(data / "tutorial-demo" / "p-1" / "1" / "trial-003.csv");
+  r = runProcess(kBinary, {"bids", (data / "tutorial-demo" / "p-1").string(), "--out", (dir.path() / "b2").string()});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_THAT(r.err, HasSubstr("trial-003.json: its samples (trial-003.csv) are missing"));
+  EXPECT_THAT(r.out, HasSubstr("2 trials of 1 participant in"));
 }
 
 TEST(BidsCommandTest, BadInputIsNamed) {

@@ -60,7 +60,9 @@ TEST(BidsExportTest, ChannelsDescribeEveryColumnOfTheMotionFile) {
   const auto motion = tsv(f.motionTsv);
   ASSERT_FALSE(channels.empty());
   EXPECT_EQ(channels[0], (std::vector<std::string>{"name", "component", "type", "tracked_point", "units"}));
-  const std::set<std::string> types = {"LATENCY", "POS", "VEL", "ANGVEL", "ORNT", "MISC"};
+  // BIDS motion's restricted list of channel types.
+  const std::set<std::string> types = {"ACCEL", "ANGACCEL", "GYRO", "JNTANG", "LATENCY",
+                                       "MAGN", "MISC", "ORNT", "POS", "VEL"};
   for (std::size_t i = 1; i < channels.size(); ++i) {
     ASSERT_EQ(channels[i].size(), 5u) << i;
     EXPECT_TRUE(types.count(channels[i][2])) << channels[i][2];
@@ -86,7 +88,7 @@ TEST(BidsExportTest, ChannelsDescribeEveryColumnOfTheMotionFile) {
   EXPECT_EQ(j["HapticGuidance"]["Fade"].get<double>(), 0.75);
   EXPECT_EQ(j["MotionChannelCount"].get<std::size_t>(), channels.size() - 1);
   int sum = 0;
-  for (const char* type : {"LATENCY", "POS", "VEL", "ANGVEL", "MISC"}) sum += j.value(std::string(type) + "ChannelCount", 0);
+  for (const char* type : {"LATENCY", "POS", "VEL", "GYRO", "MISC"}) sum += j.value(std::string(type) + "ChannelCount", 0);
   EXPECT_EQ(static_cast<std::size_t>(sum), channels.size() - 1);
 }
 
