@@ -18,6 +18,17 @@ constexpr TaskVariableGroup kGroups[] = {
 
 }  // namespace
 
+const char* taskVariableUnitTag(TaskVariable variable) {
+  switch (variable) {
+    case TaskVariable::x_p: case TaskVariable::y_p: case TaskVariable::u_a: case TaskVariable::v_a: return "m";
+    case TaskVariable::xd_p: case TaskVariable::yd_p: return "m_per_s";
+    case TaskVariable::w_x: case TaskVariable::w_y: case TaskVariable::w_z: case TaskVariable::omega_norm:
+      return "rad_per_s";
+    case TaskVariable::u_o: case TaskVariable::v_o: case TaskVariable::psi: return "rad";
+  }
+  return "?";
+}
+
 const char* taskVariableName(TaskVariable variable) {
   const int index = static_cast<int>(variable);
   return index >= 0 && index < kTaskVariableCount ? kNames[index] : "?";

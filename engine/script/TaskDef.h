@@ -26,6 +26,8 @@ inline constexpr int kTaskVariableCount = 13;
 
 // "x_p", ..., "psi", "omega_norm".
 const char* taskVariableName(TaskVariable variable);
+// Its unit as a column name carries it: "m", "m_per_s", "rad_per_s", "rad".
+const char* taskVariableUnitTag(TaskVariable variable);
 // The variable of a name; nullopt for anything else (including group names).
 std::optional<TaskVariable> taskVariableFromName(std::string_view name);
 

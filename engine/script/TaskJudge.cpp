@@ -63,6 +63,8 @@ void TaskJudge::reset() {
   finishTime_ = 0.0;
   stage_ = 0;
   stagesPassed_ = 0;
+  stagePassTimes_.clear();
+  stagePassTimes_.reserve(task_.stages.size());  // judging a tick allocates nothing
   held_ = 0.0;
   insideSince_ = 0.0;
   wasInside_ = false;
@@ -184,6 +186,7 @@ TrialOutcome TaskJudge::judge(const JudgeInput& input) {
     held_ = t - insideSince_;
     if (held_ < currentStage()->hold - kHoldSlack) break;
     ++stagesPassed_;
+    stagePassTimes_.push_back(t);
     if (stage_ + 1 == stageCount()) {
       // Success. components_ keep the last stage's values for the summary.
       ++stage_;

@@ -109,6 +109,8 @@ class TaskJudge {
   int stage() const { return stage_; }               // 0-based current stage
   int stageCount() const { return static_cast<int>(task_.stages.size()); }
   int stagesPassed() const { return stagesPassed_; }
+  // When each passed stage was passed [s], in order.
+  const std::vector<double>& stagePassTimes() const { return stagePassTimes_; }
   const StageDef* currentStage() const;              // nullptr when watch-only or all passed
   double holdTime() const { return held_; }          // [s] inside so far in this stage
   double requiredHold() const;                       // [s] of the current stage
@@ -158,6 +160,7 @@ class TaskJudge {
   double finishTime_ = 0.0;
   int stage_ = 0;
   int stagesPassed_ = 0;
+  std::vector<double> stagePassTimes_;
   double held_ = 0.0;
   double insideSince_ = 0.0;  // [s] time of the first tick of the current inside run
   bool wasInside_ = false;

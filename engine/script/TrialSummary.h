@@ -18,6 +18,7 @@ struct TrialSummary {
   long long ticks = 0;          // `ticks`: judged ticks
   int stagesPassed = 0;         // `stages_passed`
   int stageCount = 0;           // `stage_count`
+  std::vector<double> stageTimes;  // when each passed stage was passed [s] (results.csv's stage_times_s)
   double contactPath = 0.0;     // `contact_path`: path length of (u_a, v_a) on the plane [m]
   double pointPath = 0.0;       // `point_path`: path length of p = (x_p, y_p) on the face [m]
   // `effort`: integral of |F_h|^2 dt, F_h the coupling force on the mass

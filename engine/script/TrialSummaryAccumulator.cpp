@@ -56,6 +56,7 @@ TrialSummary TrialSummaryAccumulator::summary(const TaskJudge& judge) const {
   s.ticks = ticks_;
   s.stagesPassed = judge.stagesPassed();
   s.stageCount = judge.stageCount();
+  s.stageTimes = judge.stagePassTimes();
   s.contactPath = contactPath_;
   s.pointPath = pointPath_;
   s.effort = effort_;

@@ -52,6 +52,7 @@ TrialRecordingDef recordingDef(const RunOptions& o) {
 
 record::Fields resultColumns(const RunOptions& o, const TrialResult& r) {
   record::Fields extra = TrialRecording::scoreFields(r);
+  for (auto& field : TrialRecording::measureFields(r)) extra.push_back(std::move(field));
   extra.emplace_back("bot_file", o.botPath);
   extra.emplace_back("ticks", std::to_string(r.ticks));
   return extra;

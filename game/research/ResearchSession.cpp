@@ -339,6 +339,7 @@ record::Fields ResearchSession::resultsFields(const ManifestTrial& t, const Tria
                           {"guidance_damping_N_s_per_m", number(t.guidance.damping)},
                           {"guidance_fade", number(t.guidance.scale)}};
   for (auto& field : TrialRecording::scoreFields(result)) extra.push_back(std::move(field));
+  for (auto& field : TrialRecording::measureFields(result)) extra.push_back(std::move(field));
   extra.emplace_back("ticks", std::to_string(result.ticks));
   extra.emplace_back("player", player_);
   return extra;

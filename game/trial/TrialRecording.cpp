@@ -59,6 +59,44 @@ void TrialRecording::attach(TrialSettings& settings) {
 
 void TrialRecording::startWriter() { recorder_->startWriter(*ring_); }
 
+record::Fields TrialRecording::measureFields(const TrialResult& result) {
+  const script::TrialSummary& s = result.summary;
+  char text[64];
+  const auto number = [&text](double v) {
+    std::snprintf(text, sizeof text, "%.17g", v);
+    return std::string(text);
+  };
+  std::string times;
+  for (std::size_t i = 0; i < s.stageTimes.size(); ++i) {
+    if (i > 0) times += ';';
+    std::snprintf(text, sizeof text, "%.6f", s.stageTimes[i]);  // a tick's time, to the microsecond
+    times += text;
+  }
+  record::Fields out = {{"stages_passed", std::to_string(s.stagesPassed)},
+                        {"stage_count", std::to_string(s.stageCount)},
+                        {"stage_times_s", times},
+                        {"contact_path_m", number(s.contactPath)},
+                        {"point_path_m", number(s.pointPath)},
+                        {"effort_N2_s", number(s.effort)},
+                        {"smoothness_m2_per_s6", number(s.smoothness)},
+                        {"best_margin", number(s.bestMargin)},
+                        {"final_margin", number(s.finalMargin)}};
+  // The current stage's error per variable at the end, every variable in
+  // one fixed set of columns (a session's levels judge different ones, and
+  // every row of results.csv has the header's columns); empty where the
+  // stage does not judge it.
+  for (int v = 0; v < script::kTaskVariableCount; ++v) {
+    const auto variable = static_cast<script::TaskVariable>(v);
+    std::string value;
+    for (const script::ComponentStatus& c : s.finalComponents)
+      if (c.variable == variable) value = number(c.error);
+    out.emplace_back(std::string("final_error_") + script::taskVariableName(variable) + "_" +
+                         script::taskVariableUnitTag(variable),
+                     value);
+  }
+  return out;
+}
+
 record::Fields TrialRecording::scoreFields(const TrialResult& result) {
   const bool hasScore = result.score && std::isfinite(*result.score);
   return {{"has_score", hasScore ? "true" : "false"}, {"medal", script::medalName(result.medal)}};

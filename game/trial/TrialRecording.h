@@ -73,6 +73,10 @@ class TrialRecording {
   // has_score ("true"/"false": results.csv's score column is 0 when the
   // level has none) and medal.
   static record::Fields scoreFields(const TrialResult& result);
+  // The trial's measures for results.csv, SI units in the column names:
+  // stages passed and their times, path lengths, effort, smoothness, the
+  // margins, and the end's error per task variable (RECORDING.md).
+  static record::Fields measureFields(const TrialResult& result);
 
   const std::string& trialId() const { return trialId_; }
   const record::RecordingSession& session() const { return *session_; }

@@ -133,7 +133,14 @@ TEST_F(ResearchSessionTest, EachFinishedTrialHasItsFilesAndOneResultsRowWithTheP
                                          "condition", "condition_label", "level_file", "method", "kr_N_per_m",
                                          "kv_N_s_per_m", "alpha", "time_limit_s", "seed", "guidance",
                                          "guidance_stiffness_N_per_m", "guidance_damping_N_s_per_m", "guidance_fade",
-                                         "has_score", "medal", "ticks", "player"};
+                                         "has_score", "medal", "stages_passed", "stage_count", "stage_times_s",
+                                         "contact_path_m", "point_path_m", "effort_N2_s", "smoothness_m2_per_s6",
+                                         "best_margin", "final_margin", "final_error_x_p_m", "final_error_y_p_m",
+                                         "final_error_xd_p_m_per_s", "final_error_yd_p_m_per_s",
+                                         "final_error_w_x_rad_per_s", "final_error_w_y_rad_per_s",
+                                         "final_error_w_z_rad_per_s", "final_error_u_a_m", "final_error_v_a_m",
+                                         "final_error_u_o_rad", "final_error_v_o_rad", "final_error_psi_rad",
+                                         "final_error_omega_norm_rad_per_s", "ticks", "player"};
   ASSERT_EQ(table.columns.size(), 12u + plan.size());
   EXPECT_EQ(std::vector<std::string>(table.columns.begin() + 12, table.columns.end()), plan);
   ASSERT_EQ(table.rows.size(), 1u);
@@ -145,8 +152,9 @@ TEST_F(ResearchSessionTest, EachFinishedTrialHasItsFilesAndOneResultsRowWithTheP
   EXPECT_EQ(row[24], "12");     // time_limit_s
   EXPECT_EQ(row[26], "none");   // guidance
   EXPECT_EQ(row[29], "0");      // guidance_fade: none at all
-  EXPECT_EQ(row[32], "1500");   // ticks
-  EXPECT_EQ(row[33], "bot.lua");
+  EXPECT_EQ(row[32], "0");      // stages_passed (a result made up here, with an empty summary)
+  EXPECT_EQ(row[54], "1500");   // ticks
+  EXPECT_EQ(row[55], "bot.lua");
 }
 
 // A results.csv whose header the next row cannot join was found only when

@@ -9,12 +9,14 @@
 #include <cmath>
 #include <filesystem>
 #include <regex>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "engine/record/RecordingReader.h"
+#include "engine/record/ResultsFile.h"
 #include "tests/support/ProcessRunner.h"
 #include "tests/support/TempDirectory.h"
 
@@ -145,6 +147,44 @@ TEST(RunCommand, StringsAreEscaped) {
   const ProcessResult r = hemiroll({"run", dir.write("quick.lua", kQuickLevel), "--bot", bot});
   EXPECT_THAT(onlyLine(r.out), MatchesRegex(kLinePattern));
   EXPECT_THAT(r.out, HasSubstr(R"(say \"no\"\\)"));
+}
+
+namespace fs = std::filesystem;
+
+// results.csv carries the trial's measures (issue 30): stages passed and
+// when, the paths, effort, smoothness, margins and the end's error per
+// variable, in SI units, in the same columns whatever the level judges.
+TEST(RunCommand, TheResultsRowCarriesTheTrialsMeasures) {
+  const TempDirectory dir;
+  const fs::path out = dir.path() / "rec";
+  const ProcessResult r = hemiroll({"run", kSource + "/levels/tutorial_05_helix.lua", "--bot", "autopilot", "--record",
+                                    out.string()});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const record::ResultsTable table = record::ResultsFile(out / "results.csv").read();
+  ASSERT_EQ(table.rows.size(), 1u);
+  const auto value = [&](const std::string& name) {
+    const auto at = std::find(table.columns.begin(), table.columns.end(), name);
+    EXPECT_NE(at, table.columns.end()) << name;
+    return at == table.columns.end() ? std::string() : table.rows[0][static_cast<std::size_t>(at - table.columns.begin())];
+  };
+  EXPECT_EQ(value("stages_passed"), "3");
+  EXPECT_EQ(value("stage_count"), "3");
+  // Three times, increasing, the last the trial's end.
+  std::vector<double> times;
+  std::stringstream list(value("stage_times_s"));
+  for (std::string t; std::getline(list, t, ';');) times.push_back(std::stod(t));
+  ASSERT_EQ(times.size(), 3u);
+  EXPECT_LT(times[0], times[1]);
+  EXPECT_LT(times[1], times[2]);
+  const nlohmann::json line = nlohmann::json::parse(onlyLine(r.out));
+  EXPECT_NEAR(times[2], line["time"].get<double>(), 1e-6);
+  EXPECT_GT(std::stod(value("contact_path_m")), 0.02);  // it rolled 2 cm at least
+  EXPECT_GT(std::stod(value("effort_N2_s")), 0.0);
+  EXPECT_GE(std::stod(value("final_margin")), 0.0);  // won: inside every band
+  // The last stage judges the contact point: its error is within its band
+  // (tutorial 05's 4 mm); psi it does not judge: empty.
+  EXPECT_LE(std::abs(std::stod(value("final_error_u_a_m"))), 0.004);
+  EXPECT_EQ(value("final_error_psi_rad"), "");
 }
 
 TEST(RunCommand, RealtimeTakesRealTime) {
