@@ -47,17 +47,10 @@ TrialRecording::TrialRecording(const TrialRecordingDef& def, const script::Level
   } catch (const std::filesystem::filesystem_error& e) {
     throw TrialRecordingError(def.dir + ": " + e.what());
   }
+  recorder_->startWriter(*ring_);  // until finish() (or the destructor)
 }
 
 TrialRecording::~TrialRecording() = default;
-
-void TrialRecording::attach(TrialSettings& settings) {
-  settings.recordRing = ring_.get();
-  settings.recordEvery = recordEvery_;
-  settings.drainRecording = [this] { recorder_->drain(*ring_); };
-}
-
-void TrialRecording::startWriter() { recorder_->startWriter(*ring_); }
 
 record::Fields TrialRecording::scoreFields(const TrialResult& result) {
   const bool hasScore = result.score && std::isfinite(*result.score);

@@ -22,11 +22,12 @@ haptics::ServoLoopDef trialLoopDef(const script::LevelDef& level, const std::str
   return def;
 }
 
-script::BotLevelInfo botLevelInfo(const script::LevelDef& level, const std::string& file) {
-  const haptics::ServoLoopDef def = trialLoopDef(level);
+script::BotLevelInfo botLevelInfo(const script::LevelDef& level) { return botLevelInfo(level, trialLoopDef(level)); }
+
+script::BotLevelInfo botLevelInfo(const script::LevelDef& level, const haptics::ServoLoopDef& def) {
   script::BotLevelInfo info;
   info.name = level.name;
-  info.file = file;
+  info.file = level.source;
   info.radius = level.params.radius;
   info.shellMass = level.params.shellMass;
   info.pointMass = level.params.pointMass;

@@ -1,4 +1,4 @@
-// game/trial/AutopilotBot through the real trial loop (HeadlessTrial: servo
+// game/trial/AutopilotBot through the real trial loop (BotTrial: servo
 // loop, coupling, ramp, safety, judge): the shipped levels it must win, a few
 // generated tasks, determinism per seed, and refusals with "autopilot: ...".
 
@@ -12,7 +12,7 @@
 #include <string>
 
 #include "engine/script/LevelLoader.h"
-#include "game/trial/HeadlessTrial.h"
+#include "game/trial/BotTrial.h"
 #include "game/trial/TrialSetup.h"
 
 namespace hemiroll::game {
@@ -29,7 +29,7 @@ TrialResult playFile(const std::string& path, std::uint64_t seed = 0) {
   AutopilotBot bot;
   TrialSettings settings;
   settings.seed = seed;
-  return HeadlessTrial(level, bot, settings).run();
+  return BotTrial(level, bot, settings).run();
 }
 
 std::string readFile(const std::string& path) {
@@ -42,7 +42,7 @@ std::string readFile(const std::string& path) {
 TrialResult playSource(const char* source) {
   script::LoadedLevel level = script::LevelLoader().loadSource(source, "level.lua");
   AutopilotBot bot;
-  return HeadlessTrial(level, bot, TrialSettings{}).run();
+  return BotTrial(level, bot, TrialSettings{}).run();
 }
 
 TEST(AutopilotBot, WinsThePapersTaskWithGold) {
@@ -93,7 +93,7 @@ TEST(AutopilotBot, WinsWithEveryForceMethodAndStiffnessRatio) {
     source.replace(source.find(shipped), shipped.size(), force);
     script::LoadedLevel level = script::LevelLoader().loadSource(source, "paper_variant.lua");
     AutopilotBot bot;
-    const TrialResult r = HeadlessTrial(level, bot, TrialSettings{}).run();
+    const TrialResult r = BotTrial(level, bot, TrialSettings{}).run();
     EXPECT_EQ(r.outcome, TrialOutcome::Success) << force << ": " << r.reason;
   }
 }
