@@ -66,7 +66,7 @@ void TrialRecording::finish(const TrialResult& result, const record::Fields& ext
   if (timing) end.timing = *timing;
   try {
     recorder_->finish(end);
-    record::TrialResult row = record::RecordingSession::resultOf(*recorder_, end, result.time);
+    record::ResultsRow row = record::RecordingSession::resultOf(*recorder_, end, result.time);
     // results.csv has a number column for the score; an undefined score
     // (no score function) is 0 there and marked by has_score = false.
     const bool hasScore = result.score && std::isfinite(*result.score);

@@ -1,7 +1,5 @@
 #include "game/trial/TrialSetup.h"
 
-#include "engine/physics/ForceCoupling.h"
-
 namespace hemiroll::game {
 
 haptics::DeviceSpec botDeviceSpec() {
@@ -28,14 +26,8 @@ script::BotLevelInfo botLevelInfo(const script::LevelDef& level, const haptics::
   script::BotLevelInfo info;
   info.name = level.name;
   info.file = level.source;
-  info.radius = level.params.radius;
-  info.shellMass = level.params.shellMass;
-  info.pointMass = level.params.pointMass;
-  info.gravity = level.params.gravity;
-  info.method = level.coupling.visualOnly ? "visual" : physics::forceMethodName(level.coupling.method);
-  info.stiffness = level.coupling.stiffness;
-  info.damping = level.coupling.damping;
-  info.alpha = level.coupling.alpha;
+  info.params = level.params;
+  info.coupling = level.coupling;
   info.dt = def.period;
   info.timeLimit = level.task.timeLimit;
   info.engageDistance = def.safety.engagement.engageDistance;
