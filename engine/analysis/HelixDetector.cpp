@@ -64,58 +64,25 @@ void measureArc(const std::vector<double>& lx, const std::vector<double>& ly, do
   }
 }
 
-}  // namespace
-
-HelixFeatures detectHelix(std::span<const double> time, std::span<const double> x, std::span<const double> y,
-                          const HelixDef& def) {
-  HelixFeatures out;
-  ArcFeatures& arc = out.arc;
-  LoopFeatures& loops = out.loops;
-  const std::span<const double> channels[] = {x, y};
-  const UniformSeries s = resampleUniform(time, channels, def.sampling);
-  if (!s.ok()) {
-    arc.reason = "no arc: " + s.problem;
-    loops.reason = "no loops: " + s.problem;
-    return out;
-  }
-  const std::size_t light = halfWidthFor(def.lightSmoothing, s.dt);
-  const std::vector<double> sx = movingAverage(s.channels[0], light), sy = movingAverage(s.channels[1], light);
-  const std::vector<double> vx = localSlope(sx, s.dt, 1), vy = localSlope(sy, s.dt, 1);
-  std::vector<std::complex<double>> velocity(vx.size());
-  for (std::size_t i = 0; i < vx.size(); ++i) velocity[i] = {vx[i], vy[i]};
-  const Tone tone = dominantTone(velocity, s.dt, {.minFrequency = 3.0 / s.duration(), .maxFrequency = def.maxLoopFrequency});
-  loops.frequency = tone.frequency;
-  loops.toneShare = tone.share;
-  const bool periodic = tone.found && tone.share >= def.minShare;
-  const double period = periodic ? 1.0 / std::abs(tone.frequency) : def.fallbackWindow;
-
-  // The arc: a moving average over one loop period (an odd number of samples
-  // nearest to it), without the ends where the window is not full.
-  const auto h = static_cast<std::size_t>(std::max(0L, std::lround(0.5 * (period / s.dt - 1.0))));
+// The arc: a moving average over one loop period (an odd number of samples,
+// 2 h + 1, nearest to it), without the ends where the window is not full.
+void lowPassArc(const UniformSeries& s, double period, std::size_t h, ArcFeatures& arc) {
   if (s.size() < 2 * h + 8) {
     arc.reason = "no arc: " + shortNumber(s.duration()) + " s is too short for the low-pass window of " + shortNumber(period) + " s";
-  } else {
-    const std::vector<double> ax = movingAverage(s.channels[0], h), ay = movingAverage(s.channels[1], h);
-    arc.x.assign(ax.begin() + static_cast<std::ptrdiff_t>(h), ax.end() - static_cast<std::ptrdiff_t>(h));
-    arc.y.assign(ay.begin() + static_cast<std::ptrdiff_t>(h), ay.end() - static_cast<std::ptrdiff_t>(h));
-    arc.span = {s.time(h), s.time(s.size() - 1 - h)};
-    measureArc(arc.x, arc.y, s.dt, period, arc);
+    return;
   }
+  const std::vector<double> ax = movingAverage(s.channels[0], h), ay = movingAverage(s.channels[1], h);
+  arc.x.assign(ax.begin() + static_cast<std::ptrdiff_t>(h), ax.end() - static_cast<std::ptrdiff_t>(h));
+  arc.y.assign(ay.begin() + static_cast<std::ptrdiff_t>(h), ay.end() - static_cast<std::ptrdiff_t>(h));
+  arc.span = {s.time(h), s.time(s.size() - 1 - h)};
+  measureArc(arc.x, arc.y, s.dt, period, arc);
+}
 
-  if (!periodic) {
-    loops.reason = tone.found ? "no loops: the trace's velocity has no clear period (its strongest tone holds " +
-                                    shortNumber(100.0 * tone.share) + " % of its variation, needs " +
-                                    shortNumber(100.0 * def.minShare) + " %)"
-                              : "no loops: the trace's velocity has no periodic part (it moves uniformly, turns "
-                                "slowly or stands still)";
-    return out;
-  }
-  if (arc.x.size() < 2) {
-    loops.reason = "no loops: " + arc.reason.substr(arc.reason.find(':') + 2);
-    return out;
-  }
-  // Direction of travel relative to the arc's tangent (held constant over the cut ends).
-  const std::vector<double> tx = localSlope(arc.x, s.dt, 1), ty = localSlope(arc.y, s.dt, 1);
+// Direction of travel relative to the arc's tangent (held constant over the
+// cut ends), unwrapped and shifted to start within (-pi, pi].
+std::vector<double> travelAgainstArc(const ArcFeatures& arc, const std::vector<double>& vx,
+                                     const std::vector<double>& vy, double dt, std::size_t h) {
+  const std::vector<double> tx = localSlope(arc.x, dt, 1), ty = localSlope(arc.y, dt, 1);
   const std::vector<double> tangent = headings(tx, ty), travel = headings(vx, vy);
   std::vector<double> relative(travel.size());
   for (std::size_t i = 0; i < relative.size(); ++i) {
@@ -125,11 +92,17 @@ HelixFeatures detectHelix(std::span<const double> time, std::span<const double> 
   relative = unwrapAngles(relative);
   const double shift = -2.0 * kPi * std::round(relative.front() / (2.0 * kPi));
   for (double& r : relative) r += shift;
-  const double start = relative.front();
-  loops.sense = tone.frequency >= 0.0 ? 1 : -1;
+  return relative;
+}
+
+// A loop each time the relative direction passes an odd multiple of pi in
+// the loops' sense: its time, place and distance along the arc; then the
+// spacings between loops.
+void findLoops(const std::vector<double>& relative, const UniformSeries& s, const std::vector<double>& sx,
+               const std::vector<double>& sy, const ArcFeatures& arc, std::size_t h, LoopFeatures& loops) {
   const double sense = loops.sense;
   // The first odd multiple of pi beyond the start, in the loops' sense.
-  double target = sense * kPi * (2.0 * std::floor((sense * start / kPi + 1.0) / 2.0) + 1.0);
+  double target = sense * kPi * (2.0 * std::floor((sense * relative.front() / kPi + 1.0) / 2.0) + 1.0);
   std::vector<double> arcLength(arc.x.size(), 0.0);
   for (std::size_t i = 1; i < arc.x.size(); ++i)
     arcLength[i] = arcLength[i - 1] + std::hypot(arc.x[i] - arc.x[i - 1], arc.y[i] - arc.y[i - 1]);
@@ -153,6 +126,51 @@ HelixFeatures detectHelix(std::span<const double> time, std::span<const double> 
   }
   loops.spacingTime = summarize(dtLoops);
   loops.spacingArc = summarize(dsLoops);
+}
+
+}  // namespace
+
+// Smooth, find the loops' period in the velocity, low-pass the trace over
+// one period into the arc, then count the loops against the arc's tangent.
+HelixFeatures detectHelix(std::span<const double> time, std::span<const double> x, std::span<const double> y,
+                          const HelixDef& def) {
+  HelixFeatures out;
+  ArcFeatures& arc = out.arc;
+  LoopFeatures& loops = out.loops;
+  const std::span<const double> channels[] = {x, y};
+  const UniformSeries s = resampleUniform(time, channels, def.sampling);
+  if (!s.ok()) {
+    arc.reason = "no arc: " + s.problem;
+    loops.reason = "no loops: " + s.problem;
+    return out;
+  }
+  const std::size_t light = halfWidthFor(def.lightSmoothing, s.dt);
+  const std::vector<double> sx = movingAverage(s.channels[0], light), sy = movingAverage(s.channels[1], light);
+  const std::vector<double> vx = localSlope(sx, s.dt, 1), vy = localSlope(sy, s.dt, 1);
+  std::vector<std::complex<double>> velocity(vx.size());
+  for (std::size_t i = 0; i < vx.size(); ++i) velocity[i] = {vx[i], vy[i]};
+  const Tone tone = dominantTone(velocity, s.dt, {.minFrequency = 3.0 / s.duration(), .maxFrequency = def.maxLoopFrequency});
+  loops.frequency = tone.frequency;
+  loops.toneShare = tone.share;
+  const bool periodic = tone.found && tone.share >= def.minShare;
+  const double period = periodic ? 1.0 / std::abs(tone.frequency) : def.fallbackWindow;
+  const auto h = static_cast<std::size_t>(std::max(0L, std::lround(0.5 * (period / s.dt - 1.0))));
+  lowPassArc(s, period, h, arc);
+
+  if (!periodic) {
+    loops.reason = tone.found ? "no loops: the trace's velocity has no clear period (its strongest tone holds " +
+                                    shortNumber(100.0 * tone.share) + " % of its variation, needs " +
+                                    shortNumber(100.0 * def.minShare) + " %)"
+                              : "no loops: the trace's velocity has no periodic part (it moves uniformly, turns "
+                                "slowly or stands still)";
+    return out;
+  }
+  if (arc.x.size() < 2) {
+    loops.reason = "no loops: " + arc.reason.substr(arc.reason.find(':') + 2);
+    return out;
+  }
+  loops.sense = tone.frequency >= 0.0 ? 1 : -1;
+  findLoops(travelAgainstArc(arc, vx, vy, s.dt, h), s, sx, sy, arc, h, loops);
   if (loops.count < def.minLoops) {
     loops.reason = "no loops: the direction of travel turns full circle only " + std::to_string(loops.count) +
                    " times (a wiggle, not a loop; needs " + std::to_string(def.minLoops) + ")";

@@ -89,8 +89,73 @@ std::pair<std::size_t, std::size_t> regularRun(const std::vector<Leaf>& leaves, 
   return {first, last};
 }
 
+// The centre the leaves turn about: the bounding box's, then (up to three
+// times) the centre of the circle through the leaf tips, while that stays
+// inside the box. Returns the path about it; (cx, cy) is the centre.
+Path centredPath(const std::vector<double>& sx, const std::vector<double>& sy, double xMin, double xMax, double yMin,
+                 double yMax, double hysteresis, double& cx, double& cy) {
+  cx = 0.5 * (xMin + xMax), cy = 0.5 * (yMin + yMax);
+  Path path = about(sx, sy, cx, cy);
+  for (int iteration = 0; iteration < 3; ++iteration) {
+    std::vector<double> tx, ty;
+    for (const Extremum& e : findExtrema(path.rho, rhoDelta(path.rho, hysteresis)))
+      if (e.isMaximum) tx.push_back(at(sx, e.position)), ty.push_back(at(sy, e.position));
+    const CircleFit tips = fitCircle(tx, ty);
+    if (tx.size() < 3 || !tips.ok || !(tips.curvature > 0.0)) break;
+    if (tips.centreX < xMin || tips.centreX > xMax || tips.centreY < yMin || tips.centreY > yMax) break;
+    cx = tips.centreX, cy = tips.centreY;
+    path = about(sx, sy, cx, cy);
+  }
+  return path;
+}
+
+// The run's leaves [first, last) measured: per revolution, radii, periods,
+// tips. Returns the angle the run sweeps about the centre [rad].
+double measureRun(const std::vector<Leaf>& leaves, std::size_t first, std::size_t last, double dt,
+                  const std::vector<double>& sx, const std::vector<double>& sy, RoseFeatures& out,
+                  std::vector<double>& outer, std::vector<double>& inner, std::vector<double>& radius,
+                  std::vector<double>& period) {
+  std::vector<double> perLeaf;
+  double runAngle = 0.0;
+  for (std::size_t i = first; i < last; ++i) {
+    const Leaf& l = leaves[i];
+    runAngle += std::abs(l.angle);
+    perLeaf.push_back(kTwoPi / std::abs(l.angle));
+    outer.push_back(l.outer), inner.push_back(l.inner), radius.push_back(0.5 * (l.outer - l.inner));
+    period.push_back((l.end - l.start) * dt);
+    out.tipX.push_back(at(sx, l.tip)), out.tipY.push_back(at(sy, l.tip));
+  }
+  out.leavesPerCycle = kTwoPi * static_cast<double>(out.leafCount) / runAngle;
+  out.leavesPerCycleSpread = standardDeviation(perLeaf);
+  out.cycles = runAngle / kTwoPi;
+  return runAngle;
+}
+
+// Leaves per complete revolution: each leaf belongs to the revolution its
+// middle lies in; a revolution counts when the run covers it to within half
+// a leaf. Then the confidence: equal leaves over a full revolution are 1.
+void countRevolutions(const std::vector<Leaf>& leaves, std::size_t first, std::size_t last, double runAngle,
+                      RoseFeatures& out) {
+  const double halfLeaf = 0.5 * runAngle / static_cast<double>(out.leafCount);
+  const auto complete = static_cast<std::size_t>(std::floor((runAngle + halfLeaf) / kTwoPi));
+  out.leavesPerClosedCycle.assign(complete, 0);
+  double swept = 0.0;
+  for (std::size_t i = first; i < last; ++i) {
+    const auto cycle = static_cast<std::size_t>(std::floor((swept + 0.5 * std::abs(leaves[i].angle)) / kTwoPi));
+    if (cycle < complete) ++out.leavesPerClosedCycle[cycle];
+    swept += std::abs(leaves[i].angle);
+  }
+  std::vector<double> angles;
+  for (std::size_t i = first; i < last; ++i) angles.push_back(std::abs(leaves[i].angle));
+  const double cv = standardDeviation(angles) / mean(angles);
+  out.confidence = std::clamp(1.0 - cv, 0.0, 1.0) * std::min(1.0, out.cycles);
+}
+
 }  // namespace
 
+// Smooth, find the centre, check that the distance from it is modulated
+// with one clear period, cut the path into leaves, keep the longest regular
+// run, measure it.
 RoseFeatures detectRose(std::span<const double> time, std::span<const double> x, std::span<const double> y,
                         const RoseDef& def) {
   RoseFeatures out;
@@ -108,20 +173,8 @@ RoseFeatures detectRose(std::span<const double> time, std::span<const double> x,
     out.reason = "no rose: the point does not move (extent below 1 um)";
     return out;
   }
-
-  // The centre: of the bounding box, then of the circle through the tips.
-  double cx = 0.5 * (*xMin + *xMax), cy = 0.5 * (*yMin + *yMax);
-  Path path = about(sx, sy, cx, cy);
-  for (int iteration = 0; iteration < 3; ++iteration) {
-    std::vector<double> tx, ty;
-    for (const Extremum& e : findExtrema(path.rho, rhoDelta(path.rho, def.hysteresis)))
-      if (e.isMaximum) tx.push_back(at(sx, e.position)), ty.push_back(at(sy, e.position));
-    const CircleFit tips = fitCircle(tx, ty);
-    if (tx.size() < 3 || !tips.ok || !(tips.curvature > 0.0)) break;
-    if (tips.centreX < *xMin || tips.centreX > *xMax || tips.centreY < *yMin || tips.centreY > *yMax) break;
-    cx = tips.centreX, cy = tips.centreY;
-    path = about(sx, sy, cx, cy);
-  }
+  double cx = 0.0, cy = 0.0;
+  const Path path = centredPath(sx, sy, *xMin, *xMax, *yMin, *yMax, def.hysteresis, cx, cy);
   out.centreX = cx, out.centreY = cy;
 
   const double rhoMedian = median(path.rho);
@@ -154,19 +207,8 @@ RoseFeatures detectRose(std::span<const double> time, std::span<const double> x,
     return out;
   }
 
-  std::vector<double> perLeaf, outer, inner, radius, period;
-  double runAngle = 0.0;
-  for (std::size_t i = first; i < last; ++i) {
-    const Leaf& l = leaves[i];
-    runAngle += std::abs(l.angle);
-    perLeaf.push_back(kTwoPi / std::abs(l.angle));
-    outer.push_back(l.outer), inner.push_back(l.inner), radius.push_back(0.5 * (l.outer - l.inner));
-    period.push_back((l.end - l.start) * series.dt);
-    out.tipX.push_back(at(sx, l.tip)), out.tipY.push_back(at(sy, l.tip));
-  }
-  out.leavesPerCycle = kTwoPi * static_cast<double>(out.leafCount) / runAngle;
-  out.leavesPerCycleSpread = standardDeviation(perLeaf);
-  out.cycles = runAngle / kTwoPi;
+  std::vector<double> outer, inner, radius, period;
+  const double runAngle = measureRun(leaves, first, last, series.dt, sx, sy, out, outer, inner, radius, period);
   if (out.leavesPerCycle < def.minLeavesPerCycle) {
     out.reason = "no rose: the leaves do not go round the centre (" + shortNumber(out.leavesPerCycle) +
                  " leaves per revolution, needs " + shortNumber(def.minLeavesPerCycle) + ")";
@@ -179,23 +221,7 @@ RoseFeatures detectRose(std::span<const double> time, std::span<const double> x,
   out.innerRadius = summarize(inner);
   out.leafPeriod = summarize(period);
   out.span = {series.time(0) + leaves[first].start * series.dt, series.time(0) + leaves[last - 1].end * series.dt};
-
-  // Leaves per complete revolution: each leaf belongs to the revolution its
-  // middle lies in; a revolution counts when the run covers it to within
-  // half a leaf.
-  const double halfLeaf = 0.5 * runAngle / static_cast<double>(out.leafCount);
-  const auto complete = static_cast<std::size_t>(std::floor((runAngle + halfLeaf) / kTwoPi));
-  out.leavesPerClosedCycle.assign(complete, 0);
-  double swept = 0.0;
-  for (std::size_t i = first; i < last; ++i) {
-    const auto cycle = static_cast<std::size_t>(std::floor((swept + 0.5 * std::abs(leaves[i].angle)) / kTwoPi));
-    if (cycle < complete) ++out.leavesPerClosedCycle[cycle];
-    swept += std::abs(leaves[i].angle);
-  }
-  std::vector<double> angles;
-  for (std::size_t i = first; i < last; ++i) angles.push_back(std::abs(leaves[i].angle));
-  const double cv = standardDeviation(angles) / mean(angles);
-  out.confidence = std::clamp(1.0 - cv, 0.0, 1.0) * std::min(1.0, out.cycles);
+  countRevolutions(leaves, first, last, runAngle, out);
   return out;
 }
 

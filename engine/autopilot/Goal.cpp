@@ -43,13 +43,6 @@ double squaredError(const Goal& goal, const physics::ForceDrivenState& x) {
   return std::isfinite(sum) ? sum : 1e30;
 }
 
-double Zone::clearance(const physics::Vec2& point) const {
-  if (circle) return (point - centre).norm() - radius;
-  const physics::Vec2 outside = (min - point).cwiseMax(point - max);
-  if (outside.maxCoeff() <= 0.0) return outside.maxCoeff();
-  return outside.cwiseMax(0.0).norm();
-}
-
 bool inForbiddenZone(const Goal& goal, const physics::ForceDrivenState& x) {
   const physics::Vec2 contact(x[physics::force_slot::u_a], x[physics::force_slot::v_a]);
   for (int i = 0; i < goal.zoneCount; ++i)

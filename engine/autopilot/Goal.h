@@ -5,21 +5,13 @@
 
 #include <array>
 
+#include "engine/physics/PlaneZone.h"
 #include "engine/physics/StateLayout.h"
 
 namespace hemiroll::autopilot {
 
 // A region of the plane the contact point must never enter.
-struct Zone {
-  bool circle = true;
-  physics::Vec2 centre = physics::Vec2::Zero();  // circle [m]
-  double radius = 0.0;                           // circle [m]
-  physics::Vec2 min = physics::Vec2::Zero(), max = physics::Vec2::Zero();  // box [m]
-
-  // Distance from the zone's edge, negative inside [m].
-  double clearance(const physics::Vec2& point) const;
-  bool operator==(const Zone&) const = default;
-};
+using Zone = physics::PlaneZone;
 
 struct Goal {
   static constexpr int kMaxZones = 8;

@@ -113,8 +113,9 @@ Vec2 HelixPolicy::detour(const Vec2& contact, const Vec2& land) {
   };
   const auto circleOf = [&](int i, Vec2& centre, double& radius) {
     const Zone& z = goal_.zones[static_cast<std::size_t>(i)];
-    centre = z.circle ? z.centre : Vec2(0.5 * (z.min + z.max));
-    radius = z.circle ? z.radius : 0.5 * (z.max - z.min).norm();
+    const Vec2 low(z.min[0], z.min[1]), high(z.max[0], z.max[1]);
+    centre = z.circle ? Vec2(z.centre[0], z.centre[1]) : Vec2(0.5 * (low + high));
+    radius = z.circle ? z.radius : 0.5 * (high - low).norm();
   };
   if (detourZone_ >= 0) {
     Vec2 centre;

@@ -30,7 +30,7 @@
 //     the ticks that run (the world slows down for a moment; it never jumps
 //     and never tries to catch up a backlog - no spiral of death).
 // A device without force output (the mouse) runs with a larger
-// maxCatchUpTicks (PlaySession: kForcelessCatchUpTicks): a stall the
+// maxCatchUpTicks (game/trial/TrialRig: kForcelessCatchUpTicks): a stall the
 // watchdog would stop a force device for is caught up in full up to that
 // many ticks and slows the clock beyond; stalls() counts such wake-ups
 // (later than safety.maxTickLateness), what a summary says about them.

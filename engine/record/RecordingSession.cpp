@@ -21,15 +21,15 @@ TrialRecorder RecordingSession::beginTrial(TrialMeta meta, const RecorderOptions
   return TrialRecorder(dir_, meta, options);
 }
 
-void RecordingSession::appendResult(TrialResult result) const {
+void RecordingSession::appendResult(ResultsRow result) const {
   if (result.participant.empty()) result.participant = ids_.participant;
   if (result.session.empty()) result.session = ids_.session;
   results_.append(result);
 }
 
-TrialResult RecordingSession::resultOf(const TrialRecorder& recorder, const TrialEnd& end, double duration) {
+ResultsRow RecordingSession::resultOf(const TrialRecorder& recorder, const TrialEnd& end, double duration) {
   const TrialMeta& m = recorder.meta();
-  TrialResult r;
+  ResultsRow r;
   r.participant = m.participant;
   r.session = m.session;
   r.trialId = m.trialId;

@@ -26,10 +26,10 @@ class RecordingSession {
   // Fills meta's empty participant and session with the session's ids.
   TrialRecorder beginTrial(TrialMeta meta, const RecorderOptions& options = {}) const;
   // Fills the result's empty participant and session likewise.
-  void appendResult(TrialResult result) const;
+  void appendResult(ResultsRow result) const;
   // A result row from a finished recorder's metadata; the caller adds score
   // and extras.
-  static TrialResult resultOf(const TrialRecorder& recorder, const TrialEnd& end, double duration);
+  static ResultsRow resultOf(const TrialRecorder& recorder, const TrialEnd& end, double duration);
 
   const std::filesystem::path& dir() const { return dir_; }
   const SessionIds& ids() const { return ids_; }

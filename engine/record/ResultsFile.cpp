@@ -138,7 +138,7 @@ ResultsTable ResultsFile::read() const {
   return table;
 }
 
-std::vector<std::string> ResultsFile::columns(const TrialResult& r) {
+std::vector<std::string> ResultsFile::columns(const ResultsRow& r) {
   std::vector<std::string> c = {"participant", "session", "trial",     "level",        "level_hash",
                                 "outcome",     "reason",  "duration_s", "score",       "rows",
                                 "dropped_rows", "start_time"};
@@ -146,7 +146,7 @@ std::vector<std::string> ResultsFile::columns(const TrialResult& r) {
   return c;
 }
 
-void ResultsFile::checkColumns(const TrialResult& r) const {
+void ResultsFile::checkColumns(const ResultsRow& r) const {
   const std::string header = csvLine(columns(r));
   std::error_code ec;
   if (!std::filesystem::exists(path_, ec) && !std::filesystem::is_symlink(path_, ec)) return;
@@ -172,7 +172,7 @@ void ResultsFile::checkColumns(const TrialResult& r) const {
                       header.substr(0, header.size() - 1) + ")");
 }
 
-void ResultsFile::append(const TrialResult& r) const {
+void ResultsFile::append(const ResultsRow& r) const {
   const std::string header = csvLine(columns(r));
   checkColumns(r);
   std::error_code ec;

@@ -17,7 +17,9 @@
 
 namespace hemiroll::record {
 
-struct TrialResult {
+// One row of results.csv (what the file keeps of a trial; the judge's
+// verdict is game::TrialResult).
+struct ResultsRow {
   std::string participant;
   std::string session;
   std::string trialId;
@@ -51,11 +53,11 @@ class ResultsFile {
       : path_(std::move(path)), kind_(kind) {}
 
   // Throws RecordError naming the file on an I/O error or a column mismatch.
-  void append(const TrialResult& result) const;
+  void append(const ResultsRow& result) const;
   // Throws RecordError when the file holds a header other than `result`'s
   // columns: what append() would refuse, asked before a trial is played
   // rather than after it.
-  void checkColumns(const TrialResult& result) const;
+  void checkColumns(const ResultsRow& result) const;
   const std::filesystem::path& path() const { return path_; }
   // The file's header and rows (RFC 4180: quoted fields may hold commas,
   // quotes and line breaks); a missing file is an empty table. Throws
@@ -71,7 +73,7 @@ class ResultsFile {
                   const std::function<void(const std::vector<std::string>& fields, int line)>& row) const;
   static constexpr std::size_t kMaxRecordBytes = std::size_t{1} << 20;
 
-  static std::vector<std::string> columns(const TrialResult& result);
+  static std::vector<std::string> columns(const ResultsRow& result);
 
  private:
   std::filesystem::path path_;

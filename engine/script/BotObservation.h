@@ -11,6 +11,10 @@
 #include <array>
 #include <string>
 
+#include "engine/physics/ForceCoupling.h"
+#include "engine/physics/HemisphereParams.h"
+#include "engine/physics/PlaneZone.h"
+
 namespace hemiroll::script {
 
 using Triple3 = std::array<double, 3>;
@@ -42,12 +46,7 @@ struct BotObservation {
   // Forbidden zones of the task (the contact point must never enter them),
   // the first kMaxZones of them: a circle (centre, radius) or a box (min, max).
   static constexpr int kMaxZones = 8;
-  struct Zone {
-    bool circle = true;
-    double centreX = 0.0, centreY = 0.0, radius = 0.0;  // circle [m]
-    double minX = 0.0, minY = 0.0, maxX = 0.0, maxY = 0.0;  // box [m]
-  };
-  std::array<Zone, kMaxZones> zones{};
+  std::array<physics::PlaneZone, kMaxZones> zones{};
   int zoneCount = 0;
   double timeLimit = 0.0;            // [s]; 0 = none
   double holdTime = 0.0;             // how long the target must hold [s]
@@ -55,13 +54,14 @@ struct BotObservation {
   int stage = 0;                     // index of the current waypoint/target (0-based)
 };
 
-// Once per trial, for init(level_info, seed).
+// Once per trial, for init(level_info, seed). The model's parameters and
+// coupling as the level has them (a built-in bot takes them as they are; a
+// Lua bot gets them as numbers and the method's name: BotScript).
 struct BotLevelInfo {
   std::string name;                  // the level's name
   std::string file;                  // the level file as given
-  double radius = 0.04, shellMass = 0.1, pointMass = 1.0, gravity = 9.81;  // [m], [kg], [kg], [m/s^2]
-  std::string method = "M3";         // coupling method
-  double stiffness = 250.0, damping = 10.0, alpha = 2.0;  // [N/m], [N s/m], [-]
+  physics::HemisphereParams params;  // R, m_s, m_p, g
+  physics::CouplingDef coupling;     // method (or visual only), kr, kv, alpha
   double dt = 0.001;                 // servo tick [s]
   double timeLimit = 0.0;            // [s]; 0 = none
   double engageDistance = 0.01;      // the proxy must come this close to the mass point to engage [m]

@@ -2,7 +2,7 @@
 // What plays a level in a trial: anything that, once per tick, turns the
 // observation into a proxy pose. A Lua module (BotScript) is one; the
 // built-in autopilot (game/trial/AutopilotBot) is another. The trial loops
-// (HeadlessTrial, RealtimeTrial) know only this interface.
+// (game/trial/BotTrial, either driver) know only this interface.
 
 #include <cstdint>
 #include <string>

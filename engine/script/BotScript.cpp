@@ -212,14 +212,15 @@ void BotScript::init(const BotLevelInfo& info, std::int64_t seed) {
   };
   text("name", info.name);
   text("file", info.file);
-  number("R", info.radius);
-  number("m_s", info.shellMass);
-  number("m_p", info.pointMass);
-  number("g", info.gravity);
-  text("method", info.method);
-  number("kr", info.stiffness);
-  number("kv", info.damping);
-  number("alpha", info.alpha);
+  number("R", info.params.radius);
+  number("m_s", info.params.shellMass);
+  number("m_p", info.params.pointMass);
+  number("g", info.params.gravity);
+  // The one place the method becomes a name: Lua's.
+  text("method", info.coupling.visualOnly ? "visual" : physics::forceMethodName(info.coupling.method));
+  number("kr", info.coupling.stiffness);
+  number("kv", info.coupling.damping);
+  number("alpha", info.coupling.alpha);
   number("dt", info.dt);
   number("time_limit", info.timeLimit);
   number("engage_distance", info.engageDistance);

@@ -130,7 +130,7 @@ void checkLoadedLevel(script::LoadedLevel& level, const std::string& where, std:
     problems.push_back(where + ": force: " + why + line);
   }
   autopilot::Workspace workspace;
-  const script::BotLevelInfo info = botLevelInfo(def, def.source);
+  const script::BotLevelInfo info = botLevelInfo(def);
   workspace.centre = physics::vec3Of(info.workspaceCentre);
   workspace.radius = info.workspaceRadius;
   for (std::size_t i = 0; i < def.task.stages.size(); ++i) {

@@ -16,9 +16,8 @@
 #include "game/commands/ExitCode.h"
 #include "game/commands/RunOptions.h"
 #include "game/trial/BuiltinBots.h"
-#include "game/trial/HeadlessTrial.h"
+#include "game/trial/BotTrial.h"
 #include "game/trial/JsonLine.h"
-#include "game/trial/ReplayCapture.h"
 #include "game/trial/TrialRecording.h"
 #include "game/trial/TrialSetup.h"
 
@@ -114,14 +113,13 @@ int runRunCommand(const std::vector<std::string>& args) {
   TrialResult result;
   double cpuTime = 0.0;  // [s]
   try {
+    BotTrial trial(level, *bot, settings);
     if (options.recordDir) {
-      haptics::ServoLoopDef loop = trialLoopDef(level.def);
-      loop.guidance = settings.guidance;  // into the sidecar
-      recording = std::make_unique<TrialRecording>(recordingDef(options), level.def, loop);
-      recording->attach(settings);
+      recording = std::make_unique<TrialRecording>(recordingDef(options), level.def, trial.rig().loopDef());
+      trial.rig().record(recording->tap());
     }
     const double cpuBefore = processCpuSeconds();
-    result = HeadlessTrial(level, *bot, settings).run();
+    result = trial.run();
     cpuTime = processCpuSeconds() - cpuBefore;
   } catch (const std::invalid_argument& e) {
     // The level asks for something the device cannot do (a coupling stiffer

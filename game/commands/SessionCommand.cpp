@@ -10,9 +10,8 @@
 #include "game/commands/CommandUsage.h"
 #include "game/commands/ExitCode.h"
 #include "game/commands/SessionOptions.h"
-#include "engine/script/BotScript.h"
+#include "game/trial/BotTrial.h"
 #include "game/trial/BuiltinBots.h"
-#include "game/trial/HeadlessTrial.h"
 #include "game/trial/JsonLine.h"
 #include "game/research/ResearchSession.h"
 #include "game/trial/TrialSetup.h"
@@ -71,20 +70,20 @@ TrialResult playNext(ResearchSession& session, const std::string& botPath) {
   } catch (const script::ScriptError& e) {
     throw SessionError(SessionError::Kind::BadInput, e.what());
   }
-  haptics::ServoLoopDef loop = trialLoopDef(level.def);
-  loop.guidance = trial.guidance;
-  const std::unique_ptr<TrialRecording> recording = session.recordNext(level.def, loop, "bot", botDeviceSpec());
   TrialSettings settings;
   settings.seed = trial.seed;
   settings.guidance = trial.guidance;
-  recording->attach(settings);
-  TrialResult result;
+  std::unique_ptr<BotTrial> playing;
   try {
-    result = HeadlessTrial(level, *bot, settings).run();
+    playing = std::make_unique<BotTrial>(level, *bot, settings);
   } catch (const std::invalid_argument& e) {
     // A coupling the device cannot render stably, found when the loop is built.
     throw SessionError(SessionError::Kind::BadInput, trial.levelFile + " (" + trial.trialId + "): " + e.what());
   }
+  const std::unique_ptr<TrialRecording> recording =
+      session.recordNext(level.def, playing->rig().loopDef(), "bot", botDeviceSpec());
+  playing->rig().record(recording->tap());
+  const TrialResult result = playing->run();
   if (!result.scoreError.empty()) std::cerr << "hemiroll session: " << trial.trialId << ": " << result.scoreError << "\n";
   if (!result.endCallbackError.empty())
     std::cerr << "hemiroll session: " << trial.trialId << ": " << result.endCallbackError << "\n";

@@ -29,7 +29,7 @@ AutopilotCompanion::AutopilotCompanion(const script::LevelDef& level, haptics::S
       autopilot_(plannerOnItsOwnThread(hand != nullptr)) {
   driving_.store(hand != nullptr);
   try {
-    autopilot_.init(botLevelInfo(level, level.source), static_cast<std::int64_t>(seed));
+    autopilot_.init(botLevelInfo(level), static_cast<std::int64_t>(seed));
   } catch (const script::ScriptError& e) {
     initError_ = e.what();  // e.g. a visual-only level: no plans, and the reason says why
     reason_ = initError_;

@@ -1,74 +1,78 @@
 #include "game/play/PlaySession.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "engine/physics/StateKinematics.h"
-#include "game/trial/TrialSetup.h"
 
 namespace hemiroll::game {
 
+namespace {
+
+TrialRigDef rigDefOf(const PlaySessionDef& def) {
+  TrialRigDef rig;
+  rig.device = def.device;
+  rig.coupling = def.coupling;
+  rig.safety = def.safety;
+  rig.guidance = def.guidance;
+  rig.threaded = true;
+  rig.requestRealtime = def.requestRealtime;
+  rig.clock = def.clock;
+  rig.faultsEndTrial = false;  // a safety fault pauses a person's trial
+  rig.replayFile = def.replayFile;
+  rig.levelHash = def.levelHash;
+  return rig;
+}
+
+}  // namespace
+
 PlaySession::PlaySession(script::LoadedLevel& level, const PlaySessionDef& def)
     : level_(level),
-      loopDef_(trialLoopDef(level.def, def.device)),
       mapping_(def.pointer),
-      ring_(std::make_unique<haptics::RecordRing>()),
       deviceName_(def.device),
-      judging_(level, def.recordRing, def.recordEvery, /*faultsEndTrial=*/false) {
-  if (def.device == "mouse") {
-    auto mouse = std::make_unique<haptics::MouseDevice>(def.deviceOptions.mouse);
-    mouse_ = mouse.get();
-    device_ = std::move(mouse);
-  } else {
-    haptics::DeviceChoice choice = haptics::DeviceFactory().makeAndOpen(def.device, def.deviceOptions);
-    if (!choice.device) throw std::runtime_error(def.device + ": " + choice.error);
-    device_ = std::move(choice.device);
-  }
+      rig_(level, rigDefOf(def), [&](const haptics::ServoLoopDef& loop) { return makeDevice(def, loop); }) {
   clockStartsOnTakeHold_ = def.clockStartsOnTakeHold;
-  // Nothing to hold still on a device without force: a stall is caught up
-  // (then the clock slows) instead of stopping the game (ForceSafety).
-  if (!device_->spec().hasForceOutput) loopDef_.maxCatchUpTicks = kForcelessCatchUpTicks;
-  loopDef_.requestRealtime = def.requestRealtime;
-  loopDef_.clock = def.clock;
-  loopDef_.recordRing = ring_.get();
-  loopDef_.recordEvery = 1;  // the judge sees every tick
-  if (def.coupling) loopDef_.coupling = *def.coupling;
-  if (def.safety) loopDef_.safety = *def.safety;
-  if (!def.replayFile.empty()) {
-    try {
-      capture_ = std::make_unique<ReplayCapture>(def.replayFile, def.levelHash, loopDef_.period, def.device);
-      capture_->attach(loopDef_);
-    } catch (const std::exception& e) {
-      capture_.reset();
-      replayError_ = e.what();  // the trial goes on without a replay
-    }
-  }
-  loopDef_.guidance = def.guidance;
-  if (def.watchAutopilot) {
-    autopilotHand_ = std::make_unique<HandoffBotDevice>(device_->spec(), loopDef_.mapping);
-    takeover_ = std::make_unique<TakeoverDevice>(*autopilotHand_, *device_);
-  }
-  loop_ = std::make_unique<haptics::ServoLoop>(loopDef_, takeover_ ? static_cast<haptics::HapticDevice&>(*takeover_)
-                                                                   : *device_);
   if (def.watchAutopilot || def.guidance.active())
-    companion_ = std::make_unique<AutopilotCompanion>(level.def, *loop_, loopDef_.mapping, autopilotHand_.get(),
+    companion_ = std::make_unique<AutopilotCompanion>(level.def, rig_.loop(), rig_.loopDef().mapping, autopilotHand_,
                                                       def.guidance.active());
-  initial_ = physics::forceStateOf(loopDef_.initialState);
-  snapshot_.state = loopDef_.initialState;
   if (mouse_) {
     // The proxy starts on the mass point (the device origin is mapped to
     // where a level's mass point starts, at its height), so that a click
     // takes hold at once, without aiming or touching the wheel.
-    const physics::Vec3 p = physics::massPointPosition(initial_, level.def.params.radius);
-    const double zDevice = (p.z() - loopDef_.mapping.offset.z()) / loopDef_.mapping.scale;
+    const haptics::WorkspaceMapping& m = rig_.loopDef().mapping;
+    const physics::Vec3 p = physics::massPointPosition(rig_.initial(), level.def.params.radius);
+    const double zDevice = (p.z() - m.offset.z()) / m.scale;
     mapping_.wheel(zDevice / mapping_.def().wheelStep);
     sendPointer(/*jump=*/true);
   }
 }
 
+// The person's device (the mouse, or one the factory opens); watching, the
+// autopilot's hand beside it behind a TakeoverDevice.
+std::unique_ptr<haptics::HapticDevice> PlaySession::makeDevice(const PlaySessionDef& def,
+                                                               const haptics::ServoLoopDef& loop) {
+  std::unique_ptr<haptics::HapticDevice> player;
+  if (def.device == "mouse") {
+    auto mouse = std::make_unique<haptics::MouseDevice>(def.deviceOptions.mouse);
+    mouse_ = mouse.get();
+    player = std::move(mouse);
+  } else {
+    haptics::DeviceChoice choice = haptics::DeviceFactory().makeAndOpen(def.device, def.deviceOptions);
+    if (!choice.device) throw std::runtime_error(def.device + ": " + choice.error);
+    player = std::move(choice.device);
+  }
+  player_ = player.get();
+  if (!def.watchAutopilot) return player;
+  auto hand = std::make_unique<HandoffBotDevice>(player->spec(), loop.mapping);
+  autopilotHand_ = hand.get();
+  auto takeover = std::make_unique<TakeoverDevice>(std::move(hand), std::move(player));
+  takeover_ = takeover.get();
+  return takeover;
+}
+
 PlaySession::~PlaySession() {
   if (companion_) companion_->stop();
-  if (!stopped_) loop_->stop();
-  device_->close();  // on this (the SDL) thread, after the loop let go of it
+  // The rig stops its loop, then closes the device on this (the SDL) thread.
 }
 
 void PlaySession::start() {
@@ -80,9 +84,9 @@ void PlaySession::start() {
 // The bridge says "no client yet" until its first good state; starting the
 // loop before that would trip its watchdog at once.
 bool PlaySession::startLoopWhenReady() {
-  if (loop_->running() || stopped_) return true;
-  if (!device_->ready()) {
-    const char* why = device_->error();
+  if (rig_.loop().running() || stopped_) return true;
+  if (!player_->ready()) {
+    const char* why = player_->error();
     waitingFor_ = deviceName_ + ": " + (why ? why : "not ready");
     return false;
   }
@@ -92,23 +96,22 @@ bool PlaySession::startLoopWhenReady() {
     // The level's callbacks run on the window's thread, once per frame for
     // the ticks it drains: each on_update has a frame's CPU as its deadline.
     level_.script->setTiming({.realtime = true, .tickSeconds = kWindowLuaTickSeconds});
-    judging_.start(initial_);
+    rig_.judging().start(rig_.initial());
   }
-  if (judging_.finished()) return true;   // on_start ended it
+  if (rig_.judging().finished()) return true;   // on_start ended it
   if (holdsClock() && !takenHold_) return false;
   startedAt_ = std::chrono::steady_clock::now();
-  if (capture_) capture_->start();
   if (autopilotHolds()) {
     // The autopilot's hand rests on the mass point until its first plan
     // lands (a few ms on its own thread; without this pose the loop would
     // read a device with nothing to say), and takes hold at once.
-    autopilotHand_->publish(loopDef_.startTime, physics::massPointPosition(initial_, level_.def.params.radius),
-                            haptics::Vec3::Zero());
+    autopilotHand_->publish(rig_.loopDef().startTime,
+                            physics::massPointPosition(rig_.initial(), level_.def.params.radius), haptics::Vec3::Zero());
     post(haptics::ServoCommandKind::Engage);
   }
-  loop_->start();
+  rig_.startLoop();  // the replay log, then the servo thread
   if (companion_) {
-    companion_->publishTask(judging_.judge());  // the goal before the first plan
+    companion_->publishTask(rig_.judging().judge());  // the goal before the first plan
     companion_->start();
   }
   return true;
@@ -132,10 +135,10 @@ void PlaySession::wheel(double notches) {
 
 haptics::Vec3 PlaySession::pointerScene() const {
   if (autopilotHolds()) {
-    const haptics::Triple& p = snapshot_.proxyPosition;
+    const haptics::Triple& p = snapshot().proxyPosition;
     return {p[0], p[1], p[2]};
   }
-  return loopDef_.mapping.positionToScene(mapping_.position());
+  return rig_.loopDef().mapping.positionToScene(mapping_.position());
 }
 
 void PlaySession::takeOver() {
@@ -144,8 +147,8 @@ void PlaySession::takeOver() {
     companion_->stopDriving();
     // The pointer picks the proxy up where the autopilot left it: no jump,
     // no gap in the coupling.
-    const haptics::Triple& p = snapshot_.proxyPosition;
-    const haptics::Vec3 device = (haptics::Vec3(p[0], p[1], p[2]) - loopDef_.mapping.offset) / loopDef_.mapping.scale;
+    const haptics::Triple& p = snapshot().proxyPosition;
+    const haptics::Vec3 device = (haptics::Vec3(p[0], p[1], p[2]) - rig_.loopDef().mapping.offset) / rig_.loopDef().mapping.scale;
     mapping_.moveTo(device.x(), device.y());
     sendPointer(/*jump=*/true);
     takeover_->handToPlayer();
@@ -161,7 +164,7 @@ void PlaySession::takeOver() {
 }
 
 void PlaySession::handOverWhenLetGo() {
-  if (!handoverPending_ || snapshot_.engagement != haptics::Engagement::Disengaged) return;
+  if (!handoverPending_ || snapshot().engagement != haptics::Engagement::Disengaged) return;
   companion_->stopDriving();
   takeover_->handToPlayer();
   handoverPending_ = false;
@@ -169,9 +172,9 @@ void PlaySession::handOverWhenLetGo() {
 
 void PlaySession::enableHints() {
   if (companion_ || stopped_) return;
-  companion_ = std::make_unique<AutopilotCompanion>(level_.def, *loop_, loopDef_.mapping, nullptr, false);
-  companion_->publishTask(judging_.judge());
-  if (loop_->running()) companion_->start();  // else startLoopWhenReady starts it with the loop
+  companion_ = std::make_unique<AutopilotCompanion>(level_.def, rig_.loop(), rig_.loopDef().mapping, nullptr, false);
+  companion_->publishTask(rig_.judging().judge());
+  if (rig_.loop().running()) companion_->start();  // else startLoopWhenReady starts it with the loop
 }
 
 bool PlaySession::hint(haptics::GuideSample& out) { return companion_ && companion_->latestPlan(out) && out.valid; }
@@ -183,12 +186,6 @@ bool PlaySession::hintRing(HintRing& out) {
 std::string PlaySession::autopilotNote() const { return companion_ ? companion_->giveUpReason() : std::string(); }
 
 std::uint64_t PlaySession::autopilotPlans() const { return companion_ ? companion_->plans() : 0; }
-
-void PlaySession::post(haptics::ServoCommandKind kind) {
-  haptics::ServoCommand c;
-  c.kind = kind;
-  loop_->post(c);  // a full ring (64 commands) drops it; the player clicks again
-}
 
 void PlaySession::click() {
   if (stopped_ || autopilotHolds()) return;
@@ -204,12 +201,12 @@ void PlaySession::click() {
 // proxy would be a jump in the force.
 void PlaySession::putProxyOnMassPoint() {
   if (!mouse_) return;
-  if (frozen_ == Freeze::None && snapshot_.engagement != haptics::Engagement::Disengaged &&
-      snapshot_.engagement != haptics::Engagement::Armed)
+  if (frozen_ == Freeze::None && snapshot().engagement != haptics::Engagement::Disengaged &&
+      snapshot().engagement != haptics::Engagement::Armed)
     return;
   const physics::Vec3 p =
-      physics::massPointPosition(physics::forceStateOf(snapshot_.state), level_.def.params.radius);
-  const haptics::Vec3 device = (haptics::Vec3(p.x(), p.y(), p.z()) - loopDef_.mapping.offset) / loopDef_.mapping.scale;
+      physics::massPointPosition(physics::forceStateOf(snapshot().state), level_.def.params.radius);
+  const haptics::Vec3 device = (haptics::Vec3(p.x(), p.y(), p.z()) - rig_.loopDef().mapping.offset) / rig_.loopDef().mapping.scale;
   if (!device.allFinite()) return;
   mapping_.moveTo(device.x(), device.y());
   mapping_.setHeight(device.z());
@@ -221,7 +218,7 @@ void PlaySession::putProxyOnMassPoint() {
 void PlaySession::release() {
   if (autopilotHolds()) return;  // its hold is not the player's to drop: they take over first
   post(haptics::ServoCommandKind::Disengage);
-  if (takenHold_ && !autopilotHolds() && loop_->running()) freeze(Freeze::LetGo);
+  if (takenHold_ && !autopilotHolds() && rig_.loop().running()) freeze(Freeze::LetGo);
 }
 
 // A safety stop outranks the other causes: the results name it.
@@ -237,7 +234,7 @@ void PlaySession::pause() {
   post(haptics::ServoCommandKind::Pause);
   // A force device's handle is free while paused (no force holds it): the
   // hold is let go, and taken again when play goes on, where the handle is.
-  if (!mouse_ && takenHold_ && !autopilotHolds() && loop_->running()) {
+  if (!mouse_ && takenHold_ && !autopilotHolds() && rig_.loop().running()) {
     post(haptics::ServoCommandKind::Disengage);
     freeze(Freeze::Paused);
   }
@@ -251,7 +248,7 @@ void PlaySession::resume() {
     post(haptics::ServoCommandKind::ClearFault);
     // Commands are applied at the start of a tick: by the next-but-one tick
     // from the one running now at the latest.
-    faultClearedBy_ = loop_->ticks() + 2;
+    faultClearedBy_ = rig_.loop().ticks() + 2;
   }
   if (frozen_ != Freeze::None) {
     // Stopped: the physics waits for the next take-hold. The autopilot,
@@ -268,19 +265,19 @@ void PlaySession::resume() {
 // A stop is recorded once, when a snapshot first shows it latched (and not
 // one older than a ClearFault already asked for).
 void PlaySession::noteStops() {
-  if (snapshot_.fault == haptics::SafetyFault::None) {
+  if (snapshot().fault == haptics::SafetyFault::None) {
     stopOpen_ = false;
     return;
   }
-  if (snapshot_.tick <= faultClearedBy_ || stopOpen_) return;
+  if (snapshot().tick <= faultClearedBy_ || stopOpen_) return;
   stopOpen_ = true;
-  if (stops_.size() < 1000) stops_.push_back({snapshot_.fault, snapshot_.time});
+  if (stops_.size() < 1000) stops_.push_back({snapshot().fault, snapshot().time});
   freeze(Freeze::SafetyStop);
 }
 
 void PlaySession::thawWhenHeld() {
   if (frozen_ == Freeze::None || !holdWanted_ || paused_ || fault() != haptics::SafetyFault::None) return;
-  if (snapshot_.engagement != haptics::Engagement::Engaged) return;
+  if (snapshot().engagement != haptics::Engagement::Engaged) return;
   post(haptics::ServoCommandKind::Resume);
   frozen_ = Freeze::None;
   holdWanted_ = false;
@@ -292,34 +289,30 @@ std::string PlaySession::stopReason() const {
   return "quit by the player";
 }
 
-void PlaySession::quit() { judging_.fail(stopReason()); }
+void PlaySession::quit() { rig_.judging().fail(stopReason()); }
 
 bool PlaySession::frame() {
   if (stopped_) return false;
   if (started_ && !startLoopWhenReady()) return true;
-  judging_.drain(*ring_);
-  if (companion_) companion_->publishTask(judging_.judge());
-  if (!judging_.finished() && loop_->recordDropped() > 0)
-    judging_.fail("the judge fell behind the servo loop (ticks dropped)");
-  loop_->latest(snapshot_);
-  everEngaged_ = everEngaged_ || snapshot_.engagement == haptics::Engagement::Engaged;
+  rig_.drain();  // every tick judged and tapped; a judge fallen behind fails the trial
+  if (companion_) companion_->publishTask(rig_.judging().judge());
+  rig_.takeLatest();
+  everEngaged_ = everEngaged_ || snapshot().engagement == haptics::Engagement::Engaged;
   noteStops();
   thawWhenHeld();
   handOverWhenLetGo();
-  if (judging_.finished()) finish();
-  return !judging_.finished();
+  if (rig_.judging().finished()) finish();
+  return !rig_.judging().finished();
 }
 
 TrialResult PlaySession::finish() {
   if (companion_) companion_->stop();
   if (!stopped_) {
-    loop_->stop();
+    rig_.stopLoop();  // the last tick run, the replay log completed
     stopped_ = true;
-    loop_->latest(snapshot_);  // the last tick run
-    if (capture_) replayError_ = capture_->finish(loop_->inputDropped());
   }
-  if (!judging_.finished()) judging_.fail(stopReason());
-  TrialResult result = judging_.result(initial_);
+  if (!rig_.judging().finished()) rig_.judging().fail(stopReason());
+  TrialResult result = rig_.result();
   result.wallTime = std::chrono::duration<double>(std::chrono::steady_clock::now() - startedAt_).count();
   return result;
 }

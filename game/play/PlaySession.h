@@ -1,18 +1,21 @@
 #pragma once
-// A human playing a level in real time: the shape of runRealtimeTrial with a
+// A human playing a level in real time: a TrialRig (the loop, judge and
+// record tap a bot's trial has) driven by its threaded driver, with a
 // person's device instead of a bot: the mouse (MouseDevice), a
 // force-feedback joystick (SdlJoystickDevice) or a haptic device behind the
-// UDP bridge (UdpBridgeDevice), made by haptics::DeviceFactory.
+// UDP bridge (UdpBridgeDevice), made by haptics::DeviceFactory. What is
+// here is what is about the person: the pointer, taking hold and letting
+// go, stops and pauses, the autopilot's takeover.
 //   servo thread:  device (its latest sample, lock-free) ->
 //                  coupling -> physics -> safety -> snapshot + a RecordRow
-//                  of every tick into a lock-free ring;
+//                  of every tick into the rig's lock-free ring;
 //   UI thread:     mouse only: pointer motion -> PointerMapping ->
 //                  MouseDevice (the proxy moves by the mouse's strokes,
 //                  turned with the camera: PointerMapping.h says why not by
 //                  its place);
-//                  once per frame: TrialJudge drains the ring (every tick
-//                  judged, level callbacks at their rate), latest snapshot
-//                  for the renderer and the HUD.
+//                  once per frame: the rig drains the ring (every tick
+//                  judged and tapped, level callbacks at their rate), latest
+//                  snapshot for the renderer and the HUD.
 // frame() never waits for the servo loop. A safety fault (a watchdog: the
 // loop starved a force device, stale input) does not end the trial: the
 // loop has already taken the force off and stopped; fault() says which, and
@@ -23,7 +26,7 @@
 // Stops that fit the device (issue 27): a device without force output (the
 // mouse) has no force to hold while its loop runs late, so its loop is not
 // stopped by a late tick (ForceSafety) and catches up to
-// kForcelessCatchUpTicks, then slows its clock (ServoLoop); a device that
+// kForcelessCatchUpTicks (TrialRig), then slows its clock (ServoLoop); a device that
 // renders force keeps every watchdog. After any stop - a safety stop, the
 // player letting go, a pause with a force device (its handle is free while
 // paused) - the physics stands still (frozen()) until the player takes hold
@@ -54,18 +57,14 @@
 #include "engine/haptics/ServoLoop.h"
 #include "game/play/AutopilotCompanion.h"
 #include "game/play/TakeoverDevice.h"
-#include "game/trial/ReplayCapture.h"
 #include "game/trial/TrialJudge.h"
+#include "game/trial/TrialRig.h"
 
 namespace hemiroll::game {
 
 // The CPU one call of a level's on_update may take in the window: a frame
 // at 60 Hz (the judge runs the callbacks of a frame's ticks once per frame).
 inline constexpr double kWindowLuaTickSeconds = 1.0 / 60.0;
-
-// Ticks a device without force output catches up after a stall (100 ms at
-// 1 kHz, a few ms of CPU); a longer stall slows the clock by the rest.
-inline constexpr int kForcelessCatchUpTicks = 100;
 
 // Why the physics stands still until the player takes hold again.
 enum class Freeze { None, LetGo, SafetyStop, Paused };
@@ -88,11 +87,6 @@ struct PlaySessionDef {
   // its header (record::fileContentHash of the level file).
   std::filesystem::path replayFile;
   std::string levelHash;
-  // Recording (a research session's trial): every recordEvery-th judged
-  // tick is forwarded into this ring, which a TrialRecorder's writer thread
-  // drains. nullptr = not recorded.
-  haptics::RecordRing* recordRing = nullptr;
-  int recordEvery = 10;
   // The autopilot beside the player (AutopilotCompanion, on its own thread):
   // watchAutopilot: it holds the proxy until takeOver(); guidance: its plan
   // pulls the player's device (Guidance.h; felt only on a device with force
@@ -113,20 +107,25 @@ class PlaySession {
   PlaySession(script::LoadedLevel& level, const PlaySessionDef& def);
   ~PlaySession();
 
+  // Its loop definition (for a recording's sidecar) and record tap (a
+  // research session's trial: TrialRecording::tap), before start().
+  const haptics::ServoLoopDef& loopDef() const { return rig_.loopDef(); }
+  void record(const RecordTap& tap) { rig_.record(tap); }
+
   void start();  // on_start, then the servo thread (once the device is ready)
   // "" once the loop runs, else what the start waits for (a sentence).
   const std::string& waitingFor() const { return waitingFor_; }
   // The device is ready and the trial waits for the player's first take-hold.
-  bool awaitingTakeHold() const { return judgeStarted_ && !takenHold_ && holdsClock() && !judging_.finished(); }
+  bool awaitingTakeHold() const { return judgeStarted_ && !takenHold_ && holdsClock() && !rig_.judging().finished(); }
   // The player has held the proxy and let go since (the trial goes on:
   // taking hold again is how to carry on).
-  bool letGo() const { return everEngaged_ && snapshot_.engagement == haptics::Engagement::Disengaged; }
+  bool letGo() const { return everEngaged_ && snapshot().engagement == haptics::Engagement::Disengaged; }
   // The physics stands still until the player takes hold again, and why.
   Freeze frozen() const { return frozen_; }
   // Every safety stop of this trial, in order.
   const std::vector<SafetyStop>& stops() const { return stops_; }
   const std::string& deviceName() const { return deviceName_; }
-  const haptics::HapticDevice& device() const { return *device_; }
+  const haptics::HapticDevice& device() const { return *player_; }
   // UI thread, mouse only (ignored for other devices): the pointer moved by
   // (dx, dy) [window px].
   void pointerMotion(double dx, double dy);
@@ -148,7 +147,7 @@ class PlaySession {
   // The latched fault of the latest snapshot; None once resume() asked to
   // clear it (snapshots older than the clearing tick still show it).
   haptics::SafetyFault fault() const {
-    return snapshot_.tick <= faultClearedBy_ ? haptics::SafetyFault::None : snapshot_.fault;
+    return snapshot().tick <= faultClearedBy_ ? haptics::SafetyFault::None : snapshot().fault;
   }
   // Ends the trial as a failure: "quit by the player", or while stopped
   // for safety, "safety stop: <what>".
@@ -156,18 +155,18 @@ class PlaySession {
 
   // Once per frame: judge what the loop produced; returns true while running.
   bool frame();
-  const haptics::ServoSnapshot& snapshot() const { return snapshot_; }
-  const TrialJudge& judging() const { return judging_; }
+  const haptics::ServoSnapshot& snapshot() const { return rig_.snapshot(); }
+  const TrialJudge& judging() const { return rig_.judging(); }
   bool paused() const { return paused_; }
-  bool finished() const { return judging_.finished(); }
+  bool finished() const { return rig_.judging().finished(); }
   // Stops the loop (idempotent) and returns the result.
   TrialResult finish();
-  haptics::LoopTimingSummary timing() const { return loop_->timingSummary(); }
-  const char* realtimeNote() const { return loop_->realtime().note; }
+  haptics::LoopTimingSummary timing() const { return rig_.loop().timingSummary(); }
+  const char* realtimeNote() const { return rig_.loop().realtime().note; }
   // After finish(): the replay log when one was asked for and came out
   // usable, else "" (replayError() says why).
-  std::filesystem::path replayFile() const { return replayError_.empty() && capture_ ? capture_->file() : ""; }
-  const std::string& replayError() const { return replayError_; }
+  std::filesystem::path replayFile() const { return rig_.replayFile(); }
+  const std::string& replayError() const { return rig_.replayError(); }
   // Where the pointer has put the proxy now, scene frame [m] (what the game
   // draws in place of the system cursor). While the autopilot holds, where it does.
   haptics::Vec3 pointerScene() const;
@@ -194,7 +193,8 @@ class PlaySession {
   std::uint64_t autopilotPlans() const;
 
  private:
-  void post(haptics::ServoCommandKind kind);
+  std::unique_ptr<haptics::HapticDevice> makeDevice(const PlaySessionDef& def, const haptics::ServoLoopDef& loop);
+  void post(haptics::ServoCommandKind kind) { rig_.post(kind); }  // a full ring drops it; the player clicks again
   void sendPointer(bool jump);
   void handOverWhenLetGo();
   bool startLoopWhenReady();
@@ -206,24 +206,17 @@ class PlaySession {
   void thawWhenHeld();
 
   script::LoadedLevel& level_;
-  haptics::ServoLoopDef loopDef_;
   haptics::PointerMapping mapping_;
-  // Every tick, for the judge: 4096 rows let a frame take up to ~4 s (a
-  // dragged window, a hitch) before the judge falls behind.
-  std::unique_ptr<haptics::RecordRing> ring_;
-  std::unique_ptr<ReplayCapture> capture_;
-  std::string replayError_;
   std::string deviceName_;
-  std::unique_ptr<haptics::HapticDevice> device_;
-  haptics::MouseDevice* mouse_ = nullptr;  // device_ when it is the mouse
-  // Watching: the autopilot's hand and the switch between it and device_.
-  std::unique_ptr<HandoffBotDevice> autopilotHand_;
-  std::unique_ptr<TakeoverDevice> takeover_;
-  std::unique_ptr<haptics::ServoLoop> loop_;
-  std::unique_ptr<AutopilotCompanion> companion_;  // after loop_: stopped before it
-  TrialJudge judging_;
-  haptics::ServoSnapshot snapshot_;
-  physics::ForceDrivenState initial_;
+  // The rig owns the devices; these name its parts (set while it is built,
+  // so declared before it).
+  haptics::HapticDevice* player_ = nullptr;  // the person's device
+  haptics::MouseDevice* mouse_ = nullptr;    // player_ when it is the mouse
+  // Watching: the autopilot's hand and the switch between it and player_.
+  HandoffBotDevice* autopilotHand_ = nullptr;
+  TakeoverDevice* takeover_ = nullptr;
+  TrialRig rig_;
+  std::unique_ptr<AutopilotCompanion> companion_;  // after rig_: stopped before its loop
   std::string waitingFor_;
   bool paused_ = false, stopped_ = false, started_ = false;
   bool clockStartsOnTakeHold_ = true;

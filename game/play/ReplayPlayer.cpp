@@ -4,7 +4,6 @@
 
 #include "engine/haptics/devices/DeviceFactory.h"
 #include "engine/record/ContentHash.h"
-#include "game/trial/HeadlessTrial.h"
 #include "game/trial/ReplayCapture.h"
 #include "game/trial/TrialSetup.h"
 

@@ -7,6 +7,7 @@
 // stays fed) but feels nothing: the autopilot's forces are not the player's.
 
 #include <atomic>
+#include <memory>
 
 #include "engine/haptics/HapticDevice.h"
 #include "game/trial/HandoffBotDevice.h"
@@ -17,6 +18,12 @@ class TakeoverDevice final : public haptics::HapticDevice {
  public:
   // Both must outlive this device.
   TakeoverDevice(HandoffBotDevice& autopilot, haptics::HapticDevice& player) : autopilot_(autopilot), player_(player) {}
+  // Owns both (the one device a TrialRig owns).
+  TakeoverDevice(std::unique_ptr<HandoffBotDevice> autopilot, std::unique_ptr<haptics::HapticDevice> player)
+      : ownedAutopilot_(std::move(autopilot)),
+        ownedPlayer_(std::move(player)),
+        autopilot_(*ownedAutopilot_),
+        player_(*ownedPlayer_) {}
 
   const haptics::DeviceSpec& spec() const override { return player_.spec(); }
   bool open() override { return player_.open(); }
@@ -31,6 +38,8 @@ class TakeoverDevice final : public haptics::HapticDevice {
   bool playerHolds() const { return playerHolds_.load(std::memory_order_acquire); }
 
  private:
+  std::unique_ptr<HandoffBotDevice> ownedAutopilot_;  // null when not owned
+  std::unique_ptr<haptics::HapticDevice> ownedPlayer_;
   HandoffBotDevice& autopilot_;
   haptics::HapticDevice& player_;
   std::atomic<bool> playerHolds_{false};

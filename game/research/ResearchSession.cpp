@@ -294,7 +294,7 @@ std::unique_ptr<TrialRecording> ResearchSession::recordNext(const script::LevelD
   // A results.csv whose header this trial's row could not join is found
   // now, not after the participant has played the trial.
   try {
-    record::TrialResult row;
+    record::ResultsRow row;
     row.extra = resultsFields(t, TrialResult{});
     record::ResultsFile(folder_ / "results.csv").checkColumns(row);
   } catch (const record::RecordError& e) {

@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "game/trial/HeadlessTrial.h"
+#include "game/trial/TrialJudge.h"
 #include "game/scores/ScoreStore.h"
 #include "game/hud/WindowRects.h"
 #include "game/screens/Screen.h"

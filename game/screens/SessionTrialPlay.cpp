@@ -7,7 +7,6 @@
 #include "game/screens/ScreenHost.h"
 #include "game/screens/ScreenStack.h"
 #include "game/trial/TrialRecording.h"
-#include "game/trial/TrialSetup.h"
 
 namespace hemiroll::game {
 
@@ -22,19 +21,16 @@ std::unique_ptr<PlaySession> SessionTrialPlay::begin(script::LoadedLevel& level,
   def.coupling = level.def.coupling;
   def.replayFile = research_.folder() / (trial.trialId + ".replay");
   def.levelHash = trial.levelHash;
-  // The player's device: its mapping and spec go into the trial's sidecar.
-  haptics::ServoLoopDef loop = trialLoopDef(level.def, def.device);
   // The plan's haptic guidance: the autopilot plans beside the participant
   // and the device pulls towards its plan (felt on a device with force output).
-  loop.guidance = trial.guidance;
   def.guidance = trial.guidance;
   const std::optional<haptics::DeviceSpec> spec = haptics::DeviceFactory().specOf(def.device, def.deviceOptions);
   if (!spec) throw std::runtime_error("unknown device '" + def.device + "'");
-  recording_ = research_.recordNext(level.def, loop, def.device, *spec);
-  def.recordRing = &recording_->ring();
-  def.recordEvery = recording_->recordEvery();
   auto session = std::make_unique<PlaySession>(level, def);
-  recording_->startWriter();
+  // The trial's loop (the player's device's mapping, the coupling, the
+  // guidance) and the device's spec go into the sidecar.
+  recording_ = research_.recordNext(level.def, session->loopDef(), def.device, *spec);
+  session->record(recording_->tap());
   return session;
 }
 

@@ -2,7 +2,7 @@
 // A research session's next trial in the window (PlayMode.h): its level
 // with the plan's overrides and seed (the settings' override is not used),
 // recorded into the session folder (trial CSV and sidecar through the
-// judge's forward ring, the replay log beside them), no ghost (a condition
+// trial rig's record tap, the replay log beside them), no ghost (a condition
 // the protocol did not ask for), no restart (a trial is recorded once).
 // When it ends the results row is appended, the play screen goes and
 // `done` says how it went (no results screen, no scores).

@@ -80,17 +80,8 @@ long long stoppedRows(const fs::path& csv) {
   return std::count_if(rows.begin(), rows.end(), [&](const std::vector<std::string>& row) { return row[event] != "none"; });
 }
 
-}  // namespace
-
-SweepPartReport runSweepPart(const SweepPartRequest& r) {
-  const SweepGrid grid(r.def);
-  const std::vector<long long> points = r.shard.points(grid.size());
-  SweepPartReport report;
-  report.points = static_cast<long long>(points.size());
-  report.manifest = r.outDir / (r.shard.stem() + ".json");
-  report.csv = r.outDir / (r.shard.stem() + ".csv");
-  const fs::path partial = r.outDir / (r.shard.stem() + ".csv.partial");
-
+// The part's manifest before its first row: which spec, shard and program.
+SweepManifest manifestOf(const SweepPartRequest& r, const SweepGrid& grid, const SweepPartReport& report) {
   SweepManifest m;
   m.program = r.program;
   m.specFile = files::printable(r.specFile);  // text in JSON: \xNN for bytes that are not UTF-8
@@ -102,28 +93,79 @@ SweepPartReport runSweepPart(const SweepPartRequest& r) {
   m.pointCount = report.points;
   m.csv = report.csv.filename().string();
   m.threads = r.threads;
+  return m;
+}
+
+// What an earlier run left in the folder: nothing, an interrupted part (its
+// rows may be kept) or a complete one. Another sweep's part is refused.
+enum class EarlierRun { None, Interrupted, Complete };
+
+EarlierRun earlierRun(const SweepPartRequest& r, const SweepManifest& m, const SweepPartReport& report) {
+  std::error_code ec;
+  if (!fs::exists(report.manifest, ec)) return EarlierRun::None;
+  const SweepManifest old = readManifest(report.manifest);
+  if (old.specHash != m.specHash || old.program != m.program)
+    throw SweepError(SweepError::Kind::BadInput,
+                     r.outDir.string() + " already holds shard " + r.shard.label() + " of another sweep (" +
+                         old.specHash + " by " + old.program + "; this is " + m.specHash + " by " + m.program +
+                         "): give another --out or remove " + report.manifest.filename().string());
+  if (old.complete && fs::exists(report.csv, ec)) return EarlierRun::Complete;
+  return old.complete ? EarlierRun::None : EarlierRun::Interrupted;
+}
+
+// The shard's points after the kept ones, in jobs of up to laneWidth points
+// integrated together, on the ordered pool; rows appended to `out` in point
+// order as jobs finish.
+void computeRows(const SweepPartRequest& r, const SweepGrid& grid, const std::vector<long long>& points,
+                 std::size_t first, record::DurableFile& out, SweepProgress& progress) {
+  const std::size_t batch = static_cast<std::size_t>(std::max(1, r.laneWidth));
+  const std::size_t remaining = points.size() - first;
+  std::size_t delivered = 0;  // points, on the delivering thread
+  OrderedPool(r.threads).run(
+      (remaining + batch - 1) / batch,
+      [&](std::size_t job) {
+        std::vector<SweepPoint> jobPoints;
+        for (std::size_t i = first + job * batch; i < std::min(points.size(), first + (job + 1) * batch); ++i)
+          jobPoints.push_back(grid.point(points[i]));
+        const std::vector<PointMeasurement> measured = measurePoints(grid, jobPoints, r.laneWidth);
+        std::string rows;
+        for (std::size_t i = 0; i < jobPoints.size(); ++i) rows += sweepRow(jobPoints[i], measured[i]);
+        return rows;
+      },
+      [&](std::size_t job, std::string&& rows) {
+        if (!out.write(rows) || !out.flush()) environment(out.path().string() + ": " + out.error());
+        delivered = std::min(remaining, (job + 1) * batch);
+      },
+      [&](std::size_t) { progress.update(static_cast<long long>(first + delivered)); });
+}
+
+}  // namespace
+
+// Manifest, what an earlier run left, the rows (kept, then computed into
+// CSV.partial, moved into place when whole), the manifest complete.
+SweepPartReport runSweepPart(const SweepPartRequest& r) {
+  const SweepGrid grid(r.def);
+  const std::vector<long long> points = r.shard.points(grid.size());
+  SweepPartReport report;
+  report.points = static_cast<long long>(points.size());
+  report.manifest = r.outDir / (r.shard.stem() + ".json");
+  report.csv = r.outDir / (r.shard.stem() + ".csv");
+  const fs::path partial = r.outDir / (r.shard.stem() + ".csv.partial");
+  SweepManifest m = manifestOf(r, grid, report);
 
   std::error_code ec;
   fs::create_directories(r.outDir, ec);
   if (!fs::is_directory(r.outDir, ec)) environment("cannot create the output folder " + r.outDir.string());
-  bool resume = false;
-  if (fs::exists(report.manifest, ec)) {
-    const SweepManifest old = readManifest(report.manifest);
-    if (old.specHash != m.specHash || old.program != m.program)
-      throw SweepError(SweepError::Kind::BadInput,
-                       r.outDir.string() + " already holds shard " + r.shard.label() + " of another sweep (" +
-                           old.specHash + " by " + old.program + "; this is " + m.specHash + " by " + m.program +
-                           "): give another --out or remove " + report.manifest.filename().string());
-    if (old.complete && fs::exists(report.csv, ec)) {
-      report.alreadyComplete = true;
-      report.resumed = report.points;
-      report.stopped = stoppedRows(report.csv);
-          return report;
-    }
-    resume = !old.complete;
+  const EarlierRun earlier = earlierRun(r, m, report);
+  if (earlier == EarlierRun::Complete) {
+    report.alreadyComplete = true;
+    report.resumed = report.points;
+    report.stopped = stoppedRows(report.csv);
+    return report;
   }
 
-  const std::vector<std::string> kept = resume ? keptRows(partial, points) : std::vector<std::string>{};
+  const std::vector<std::string> kept =
+      earlier == EarlierRun::Interrupted ? keptRows(partial, points) : std::vector<std::string>{};
   report.resumed = static_cast<long long>(kept.size());
   m.resumedPoints = report.resumed;
   writeManifest(report.manifest, m);
@@ -133,27 +175,7 @@ SweepPartReport runSweepPart(const SweepPartRequest& r) {
   try {
     record::writeFileAtomically(partial, start);
     record::DurableFile out(partial, "ab");
-    const std::size_t first = kept.size();
-    // A job is one batch of up to laneWidth points, integrated together.
-    const std::size_t batch = static_cast<std::size_t>(std::max(1, r.laneWidth));
-    const std::size_t remaining = points.size() - first;
-    std::size_t delivered = 0;  // points, on the delivering thread
-    OrderedPool(r.threads).run(
-        (remaining + batch - 1) / batch,
-        [&](std::size_t job) {
-          std::vector<SweepPoint> jobPoints;
-          for (std::size_t i = first + job * batch; i < std::min(points.size(), first + (job + 1) * batch); ++i)
-            jobPoints.push_back(grid.point(points[i]));
-          const std::vector<PointMeasurement> measured = measurePoints(grid, jobPoints, r.laneWidth);
-          std::string rows;
-          for (std::size_t i = 0; i < jobPoints.size(); ++i) rows += sweepRow(jobPoints[i], measured[i]);
-          return rows;
-        },
-        [&](std::size_t job, std::string&& rows) {
-          if (!out.write(rows) || !out.flush()) environment(out.path().string() + ": " + out.error());
-          delivered = std::min(remaining, (job + 1) * batch);
-        },
-        [&](std::size_t) { progress.update(static_cast<long long>(first + delivered)); });
+    computeRows(r, grid, points, kept.size(), out, progress);
     if (!out.close()) environment(out.path().string() + ": " + out.error());
     report.computed = report.points - report.resumed;
     progress.finish(report.points);

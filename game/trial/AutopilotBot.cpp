@@ -7,36 +7,18 @@
 
 namespace hemiroll::game {
 
-namespace {
-
-// The coupling of a level info whose method is "M1", "M2" or "M3" (init
-// refuses "visual" before this).
-physics::CouplingDef couplingOf(const script::BotLevelInfo& info) {
-  physics::CouplingDef c;
-  c.stiffness = info.stiffness;
-  c.damping = info.damping;
-  c.alpha = info.alpha;
-  c.method = physics::forceMethodFromName(info.method).value_or(physics::ForceMethod::M3);
-  return c;
-}
-
-}  // namespace
-
 AutopilotBot::AutopilotBot(const AutopilotBotOptions& options) : options_(options) {}
 AutopilotBot::~AutopilotBot() = default;
 
 void AutopilotBot::init(const script::BotLevelInfo& info, std::int64_t seed) {
-  if (info.method == "visual")
+  if (info.coupling.visualOnly)
     // "Visual only" renders no force but drives the model as its method
     // would; the level info does not say which, so the autopilot cannot
     // model it.
     throw script::ScriptError("autopilot: a visual-only coupling hides the method that drives the model");
   autopilot::AutopilotDef def;
-  def.params.radius = info.radius;
-  def.params.shellMass = info.shellMass;
-  def.params.pointMass = info.pointMass;
-  def.params.gravity = info.gravity;
-  def.coupling = couplingOf(info);
+  def.params = info.params;
+  def.coupling = info.coupling;
   def.dt = info.dt;
   def.workspace.centre = physics::vec3Of(info.workspaceCentre);
   def.workspace.radius = info.workspaceRadius;
@@ -65,15 +47,7 @@ script::BotAction AutopilotBot::act(const script::BotObservation& obs) {
   goal.omegaNormTolerance = obs.omegaNormTolerance;
   goal.hold = obs.holdTime;
   goal.zoneCount = std::min(obs.zoneCount, autopilot::Goal::kMaxZones);
-  for (int i = 0; i < goal.zoneCount; ++i) {
-    const script::BotObservation::Zone& z = obs.zones[static_cast<std::size_t>(i)];
-    autopilot::Zone& out = goal.zones[static_cast<std::size_t>(i)];
-    out.circle = z.circle;
-    out.centre = physics::Vec2(z.centreX, z.centreY);
-    out.radius = z.radius;
-    out.min = physics::Vec2(z.minX, z.minY);
-    out.max = physics::Vec2(z.maxX, z.maxY);
-  }
+  for (int i = 0; i < goal.zoneCount; ++i) goal.zones[static_cast<std::size_t>(i)] = obs.zones[static_cast<std::size_t>(i)];
   const autopilot::ProxyCommand command = autopilot_->act(input_);
   script::BotAction action;
   action.position = physics::tripleOf(command.position);

@@ -57,8 +57,8 @@ HumanBot::HumanBot(const HumanBotOptions& options) : options_(options) {}
 HumanBot::~HumanBot() = default;
 
 void HumanBot::init(const script::BotLevelInfo& info, std::int64_t seed) {
-  radius_ = info.radius;
-  model_.emplace(options_.human, options_.technique, info.radius, info.dt, static_cast<std::uint64_t>(seed));
+  radius_ = info.params.radius;
+  model_.emplace(options_.human, options_.technique, info.params.radius, info.dt, static_cast<std::uint64_t>(seed));
   holding_ = false;
   coach_.reset();
   if (options_.aids) {

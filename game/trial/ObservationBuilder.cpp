@@ -59,15 +59,12 @@ void ObservationBuilder::fillTask(const script::TaskJudge& judge, script::BotObs
   out.zoneCount = static_cast<int>(std::min<std::size_t>(forbidden.size(), script::BotObservation::kMaxZones));
   for (int i = 0; i < out.zoneCount; ++i) {
     const script::ZoneDef& z = forbidden[static_cast<std::size_t>(i)];
-    script::BotObservation::Zone& o = out.zones[static_cast<std::size_t>(i)];
+    physics::PlaneZone& o = out.zones[static_cast<std::size_t>(i)];
     o.circle = z.shape == script::ZoneShape::Circle;
-    o.centreX = z.center[0];
-    o.centreY = z.center[1];
+    o.centre = z.center;
     o.radius = z.radius;
-    o.minX = z.min[0];
-    o.minY = z.min[1];
-    o.maxX = z.max[0];
-    o.maxY = z.max[1];
+    o.min = z.min;
+    o.max = z.max;
   }
   out.timeLimit = judge.task().timeLimit;
   out.holdTime = judge.requiredHold();

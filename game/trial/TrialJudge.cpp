@@ -8,12 +8,8 @@ namespace hemiroll::game {
 
 using script::TrialOutcome;
 
-TrialJudge::TrialJudge(script::LoadedLevel& level, haptics::RecordRing* forward, int forwardEvery, bool faultsEndTrial)
-    : level_(level),
-      forward_(forward),
-      forwardEvery_(std::max(1, forwardEvery)),
-      faultsEndTrial_(faultsEndTrial),
-      judge_(level.def.task) {}
+TrialJudge::TrialJudge(script::LoadedLevel& level, bool faultsEndTrial)
+    : level_(level), faultsEndTrial_(faultsEndTrial), judge_(level.def.task) {}
 
 void TrialJudge::start(const physics::ForceDrivenState& initial) {
   view_.state = initial;
@@ -49,17 +45,6 @@ void TrialJudge::judgeAny(const Tick& tick) {
 
 void TrialJudge::judgeTick(const haptics::ServoSnapshot& tick) { judgeAny(tick); }
 void TrialJudge::judgeTick(const haptics::RecordRow& tick) { judgeAny(tick); }
-
-std::size_t TrialJudge::drain(haptics::RecordRing& ring) {
-  haptics::RecordRow row;
-  std::size_t judged = 0;
-  while (!judge_.finished() && ring.pop(row)) {
-    judgeAny(row);
-    if (forward_ != nullptr && row.tick % static_cast<std::uint64_t>(forwardEvery_) == 0) forward_->push(row);
-    ++judged;
-  }
-  return judged;
-}
 
 void TrialJudge::fail(const std::string& reason) {
   if (judge_.finished()) return;

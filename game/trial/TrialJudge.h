@@ -1,8 +1,8 @@
 #pragma once
 // The one judge of a trial, whoever plays it and on whichever thread the
-// servo loop runs: headless bots (HeadlessTrial, one tick at a time), `run
-// --realtime` (runRealtimeTrial) and a person in the window (PlaySession, both
-// draining the loop's record ring). Every tick, in order, none skipped:
+// servo loop runs (TrialRig owns it: its stepping driver judges each tick's
+// snapshot, its threaded one drains the loop's ring of every tick, for `run
+// --realtime` and a person in the window). Every tick, in order, none skipped:
 //   TaskJudge::judge -> TrialSummaryAccumulator::add -> LevelScript::update
 // and a safety fault ends the trial (a bot's), or is left to the caller (a
 // human's: the game pauses with the reason and goes on when asked). A rule
@@ -40,18 +40,14 @@ struct TrialResult {
 
 class TrialJudge {
  public:
-  // `level` must outlive this; `forward` (may be null) receives every
-  // `forwardEvery`-th row drain() judges (a recording's ring).
-  TrialJudge(script::LoadedLevel& level, haptics::RecordRing* forward = nullptr, int forwardEvery = 10,
-             bool faultsEndTrial = true);
+  // `level` must outlive this.
+  explicit TrialJudge(script::LoadedLevel& level, bool faultsEndTrial = true);
 
   // on_start at the initial state (and on_fail for a trial failed before it).
   void start(const physics::ForceDrivenState& initial);
   // Judges one tick as the loop published it. Ignored once finished.
   void judgeTick(const haptics::ServoSnapshot& tick);
   void judgeTick(const haptics::RecordRow& tick);
-  // Judges every row the ring holds now; returns the number judged.
-  std::size_t drain(haptics::RecordRing& ring);
   // Ends the trial from outside (bot error, stall, the player quit) at the
   // last judged time; runs on_fail.
   void fail(const std::string& reason);
@@ -73,8 +69,6 @@ class TrialJudge {
   void judgeAny(const Tick& tick);
 
   script::LoadedLevel& level_;
-  haptics::RecordRing* forward_;
-  int forwardEvery_;
   bool faultsEndTrial_;
   script::TaskJudge judge_;
   script::TrialSummaryAccumulator accumulator_;

@@ -47,17 +47,10 @@ TrialRecording::TrialRecording(const TrialRecordingDef& def, const script::Level
   } catch (const std::filesystem::filesystem_error& e) {
     throw TrialRecordingError(def.dir + ": " + e.what());
   }
+  recorder_->startWriter(*ring_);  // until finish() (or the destructor)
 }
 
 TrialRecording::~TrialRecording() = default;
-
-void TrialRecording::attach(TrialSettings& settings) {
-  settings.recordRing = ring_.get();
-  settings.recordEvery = recordEvery_;
-  settings.drainRecording = [this] { recorder_->drain(*ring_); };
-}
-
-void TrialRecording::startWriter() { recorder_->startWriter(*ring_); }
 
 record::Fields TrialRecording::measureFields(const TrialResult& result) {
   const script::TrialSummary& s = result.summary;
@@ -112,7 +105,7 @@ void TrialRecording::finish(const TrialResult& result, const record::Fields& ext
   if (timing) end.timing = *timing;
   try {
     recorder_->finish(end);
-    record::TrialResult row = record::RecordingSession::resultOf(*recorder_, end, result.time);
+    record::ResultsRow row = record::RecordingSession::resultOf(*recorder_, end, result.time);
     // results.csv has a number column for the score; an undefined score
     // (no score function) is 0 there and marked by has_score = false.
     const bool hasScore = result.score && std::isfinite(*result.score);

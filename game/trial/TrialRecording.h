@@ -1,11 +1,11 @@
 #pragma once
 // One trial recorded through engine/record, for `hemiroll run --record DIR`,
-// `hemiroll session` and the game's research sessions: the servo loop's
-// record ring drained into a TrialRecorder (DIR/<trial>.csv + sidecar
-// DIR/<trial>.json), and one summary row appended to DIR/results.csv when
-// the trial ends. The ring is drained on the trial's own thread between
-// ticks (headless: attach()) or by the recorder's writer thread (real time:
-// startWriter()); both write through the same formatting code.
+// `hemiroll session` and the game's research sessions: the rows the trial's
+// rig taps (TrialRig::record(tap())) go through a ring to a TrialRecorder
+// (DIR/<trial>.csv + sidecar DIR/<trial>.json), and one summary row is
+// appended to DIR/results.csv when the trial ends. How often a row is kept
+// is decided here once (the level's record rate), and the recorder's writer
+// thread is the one writer of the rows, whoever plays the trial.
 
 #include <memory>
 #include <optional>
@@ -15,7 +15,7 @@
 #include "engine/haptics/RecordRow.h"
 #include "engine/record/RecordingSession.h"
 #include "engine/script/LevelDef.h"
-#include "game/trial/HeadlessTrial.h"
+#include "game/trial/TrialRig.h"
 #include "game/trial/TrialSetup.h"
 
 namespace hemiroll::record {
@@ -48,21 +48,18 @@ struct TrialRecordingDef {
 class TrialRecording {
  public:
   // Opens the session folder and the trial's files (the sidecar says
-  // "complete": false until finish()). `loop` is the trial's servo loop
-  // definition (its period); rows are kept at the level's record rate.
-  // Throws TrialRecordingError.
+  // "complete": false until finish()) and starts the writer thread. `loop`
+  // is the trial's servo loop definition (TrialRig::loopDef: its period,
+  // coupling and guidance go into the sidecar); rows are kept at the
+  // level's record rate. Throws TrialRecordingError.
   TrialRecording(const TrialRecordingDef& def, const script::LevelDef& level, const haptics::ServoLoopDef& loop);
   ~TrialRecording();
   TrialRecording(const TrialRecording&) = delete;
   TrialRecording& operator=(const TrialRecording&) = delete;
 
-  // The ring the rows go through, and every how many ticks one is kept.
-  haptics::RecordRing& ring() { return *ring_; }
-  int recordEvery() const { return recordEvery_; }
-  // Headless: points the trial's settings at the ring and the drain.
-  void attach(TrialSettings& settings);
-  // Real time: the recorder's writer thread drains the ring until finish().
-  void startWriter();
+  // The ring the rows go through and every how many ticks one is kept: for
+  // the trial's rig, before its first tick.
+  RecordTap tap() { return {ring_.get(), recordEvery_}; }
 
   // Completes the sidecar (outcome, reason; the loop's timing for real-time
   // trials) and appends the results row with `extra` as its extra columns

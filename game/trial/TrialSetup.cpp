@@ -1,7 +1,5 @@
 #include "game/trial/TrialSetup.h"
 
-#include "engine/physics/ForceCoupling.h"
-
 namespace hemiroll::game {
 
 haptics::DeviceSpec botDeviceSpec() {
@@ -22,19 +20,14 @@ haptics::ServoLoopDef trialLoopDef(const script::LevelDef& level, const std::str
   return def;
 }
 
-script::BotLevelInfo botLevelInfo(const script::LevelDef& level, const std::string& file) {
-  const haptics::ServoLoopDef def = trialLoopDef(level);
+script::BotLevelInfo botLevelInfo(const script::LevelDef& level) { return botLevelInfo(level, trialLoopDef(level)); }
+
+script::BotLevelInfo botLevelInfo(const script::LevelDef& level, const haptics::ServoLoopDef& def) {
   script::BotLevelInfo info;
   info.name = level.name;
-  info.file = file;
-  info.radius = level.params.radius;
-  info.shellMass = level.params.shellMass;
-  info.pointMass = level.params.pointMass;
-  info.gravity = level.params.gravity;
-  info.method = level.coupling.visualOnly ? "visual" : physics::forceMethodName(level.coupling.method);
-  info.stiffness = level.coupling.stiffness;
-  info.damping = level.coupling.damping;
-  info.alpha = level.coupling.alpha;
+  info.file = level.source;
+  info.params = level.params;
+  info.coupling = level.coupling;
   info.dt = def.period;
   info.timeLimit = level.task.timeLimit;
   info.engageDistance = def.safety.engagement.engageDistance;

@@ -23,7 +23,12 @@ haptics::ServoLoopDef trialLoopDef(const script::LevelDef& level, const std::str
 // held to.
 haptics::DeviceSpec botDeviceSpec();
 
-// The level as a bot's init sees it (`file`: the level's path).
-script::BotLevelInfo botLevelInfo(const script::LevelDef& level, const std::string& file);
+// The level as a bot's init sees it, in the trial's loop (`loop`: built by
+// trialLoopDef for "bot"; its period, engagement and mapping), held to
+// botDeviceSpec's workspace.
+script::BotLevelInfo botLevelInfo(const script::LevelDef& level, const haptics::ServoLoopDef& loop);
+// The same for a planner beside a trial whose loop is not a bot's (the
+// autopilot in the window plans in the level's bot loop).
+script::BotLevelInfo botLevelInfo(const script::LevelDef& level);
 
 }  // namespace hemiroll::game

@@ -135,14 +135,14 @@ TEST(Goal, ErrorIsTheWorstBandAndPsiWraps) {
 
 TEST(Goal, ZonesKnowTheirEdge) {
   Zone circle;
-  circle.centre = physics::Vec2(0.01, 0.0);
+  circle.centre = {0.01, 0.0};
   circle.radius = 0.002;
   EXPECT_NEAR(circle.clearance(physics::Vec2(0.0, 0.0)), 0.008, 1e-15);
   EXPECT_NEAR(circle.clearance(physics::Vec2(0.01, 0.001)), -0.001, 1e-15);
   Zone box;
   box.circle = false;
-  box.min = physics::Vec2(0.0, 0.0);
-  box.max = physics::Vec2(0.01, 0.02);
+  box.min = {0.0, 0.0};
+  box.max = {0.01, 0.02};
   EXPECT_NEAR(box.clearance(physics::Vec2(0.013, 0.024)), 0.005, 1e-15);  // 3-4-5 from the corner
   EXPECT_NEAR(box.clearance(physics::Vec2(0.002, 0.01)), -0.002, 1e-15);  // nearest side 2 mm away
   Goal g;

@@ -1,4 +1,4 @@
-// game/trial/AutopilotBot through the real trial loop (HeadlessTrial: servo
+// game/trial/AutopilotBot through the real trial loop (BotTrial: servo
 // loop, coupling, ramp, safety, judge): the shipped levels it must win, a few
 // generated tasks, determinism per seed, and refusals with "autopilot: ...".
 
@@ -13,7 +13,7 @@
 #include <utility>
 
 #include "engine/script/LevelLoader.h"
-#include "game/trial/HeadlessTrial.h"
+#include "game/trial/BotTrial.h"
 #include "game/trial/TrialSetup.h"
 
 namespace hemiroll::game {
@@ -30,7 +30,7 @@ TrialResult playFile(const std::string& path, std::uint64_t seed = 0) {
   AutopilotBot bot;
   TrialSettings settings;
   settings.seed = seed;
-  return HeadlessTrial(level, bot, settings).run();
+  return BotTrial(level, bot, settings).run();
 }
 
 std::string readFile(const std::string& path) {
@@ -43,7 +43,7 @@ std::string readFile(const std::string& path) {
 TrialResult playSource(const char* source) {
   script::LoadedLevel level = script::LevelLoader().loadSource(source, "level.lua");
   AutopilotBot bot;
-  return HeadlessTrial(level, bot, TrialSettings{}).run();
+  return BotTrial(level, bot, TrialSettings{}).run();
 }
 
 TEST(AutopilotBot, WinsThePapersTaskWithGold) {
@@ -110,7 +110,7 @@ TEST(AutopilotBot, WinsEachKindOfTheWidenedGenerator) {
     AutopilotBot bot;
     TrialSettings settings;
     settings.seed = seed;
-    const TrialResult r = HeadlessTrial(level, bot, settings).run();
+    const TrialResult r = BotTrial(level, bot, settings).run();
     EXPECT_EQ(r.outcome, TrialOutcome::Success) << level.def.name << ": " << r.reason;
   }
 }
@@ -125,7 +125,7 @@ TEST(AutopilotBot, WinsWithEveryForceMethodAndStiffnessRatio) {
     source.replace(source.find(shipped), shipped.size(), force);
     script::LoadedLevel level = script::LevelLoader().loadSource(source, "paper_variant.lua");
     AutopilotBot bot;
-    const TrialResult r = HeadlessTrial(level, bot, TrialSettings{}).run();
+    const TrialResult r = BotTrial(level, bot, TrialSettings{}).run();
     EXPECT_EQ(r.outcome, TrialOutcome::Success) << force << ": " << r.reason;
   }
 }

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "engine/script/LevelLoader.h"
-#include "game/trial/HeadlessTrial.h"
+#include "game/trial/BotTrial.h"
 #include "game/trial/PassiveHandBot.h"
 
 namespace hemiroll::game {
@@ -22,7 +22,7 @@ TrialResult passiveHandOn(const std::string& level, haptics::GuidanceKind kind, 
   settings.guidance.kind = kind;
   settings.guidance.stiffness = stiffness;
   settings.guidance.damping = 10.0;
-  return HeadlessTrial(loaded, hand, settings).run();
+  return BotTrial(loaded, hand, settings).run();
 }
 
 // The passive hand on its own: still without force, and under a steady push

@@ -1,4 +1,4 @@
-// game/trial/HumanBot through the real trial loop (HeadlessTrial: servo
+// game/trial/HumanBot through the real trial loop (BotTrial: servo
 // loop, coupling, ramp, safety, judge): the simulated person wins the first
 // two tutorials as a person with a mouse does, plays the same per seed, and
 // sees the task as the screen shows it.
@@ -10,7 +10,7 @@
 #include <string>
 
 #include "engine/script/LevelLoader.h"
-#include "game/trial/HeadlessTrial.h"
+#include "game/trial/BotTrial.h"
 
 namespace hemiroll::game {
 namespace {
@@ -26,7 +26,7 @@ TrialResult play(const std::string& file, std::uint64_t seed, const HumanBotOpti
   HumanBot bot(options);
   TrialSettings settings;
   settings.seed = seed;
-  return HeadlessTrial(level, bot, settings).run();
+  return BotTrial(level, bot, settings).run();
 }
 
 // A person is not a machine: judged over seeds, at the model's floor (the

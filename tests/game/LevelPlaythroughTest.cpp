@@ -15,7 +15,7 @@
 
 #include "engine/script/BotScript.h"
 #include "engine/script/LevelLoader.h"
-#include "game/trial/HeadlessTrial.h"
+#include "game/trial/BotTrial.h"
 #include "game/trial/TrialSetup.h"
 
 namespace hemiroll::game {
@@ -45,7 +45,7 @@ TrialResult play(const std::string& levelPath, const std::string& bot, std::uint
   script::BotScript script(kSource + "/scripts/bots/" + bot, botOptions);
   TrialSettings settings;
   settings.seed = seed;
-  return HeadlessTrial(level, script, settings).run();
+  return BotTrial(level, script, settings).run();
 }
 
 TEST(LevelPlaythrough, ThePackIsThere) {

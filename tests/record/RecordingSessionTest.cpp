@@ -23,7 +23,7 @@ TEST(RecordingSessionTest, TrialsAndResultsCarryTheSessionIds) {
     TrialEnd end;
     end.outcome = "failure";
     rec.finish(end);
-    TrialResult r = RecordingSession::resultOf(rec, end, 1.5);
+    ResultsRow r = RecordingSession::resultOf(rec, end, 1.5);
     r.score = 2.0;
     session.appendResult(r);
   }

@@ -9,8 +9,8 @@
 namespace hemiroll::record {
 namespace {
 
-TrialResult result(const std::string& trial, const std::string& reason) {
-  return TrialResult{.participant = "p01",
+ResultsRow result(const std::string& trial, const std::string& reason) {
+  return ResultsRow{.participant = "p01",
                      .session = "1",
                      .trialId = trial,
                      .level = "tutorial",
@@ -43,7 +43,7 @@ TEST(ResultsFileTest, AFolderInItsPlaceIsNamedNotReadAsEmpty) {
   for (int attempt = 0; attempt < 2; ++attempt) {
     try {
       if (attempt == 0) (void)file.read();
-      else file.append(TrialResult{});
+      else file.append(ResultsRow{});
       FAIL() << attempt;
     } catch (const RecordError& e) {
       EXPECT_NE(std::string(e.what()).find("results.csv: not a regular file"), std::string::npos) << e.what();
@@ -68,7 +68,7 @@ TEST(ResultsFileTest, OtherColumnsThanTheFilesAreRefused) {
   hemiroll::test::TempDirectory dir;
   const ResultsFile file(dir.path() / "results.csv");
   file.append(result("t1", "goal"));
-  TrialResult other = result("t2", "goal");
+  ResultsRow other = result("t2", "goal");
   other.extra = {{"block", "2"}};
   try {
     file.append(other);

@@ -145,7 +145,7 @@ TEST(BotScript, InitGetsTheLevelAndTheSeed) {
       "  act = function(t, obs) return k, s, r end}");
   BotScript bot(file.path);
   BotLevelInfo info;
-  info.stiffness = 125.0;
+  info.coupling.stiffness = 125.0;
   info.workspaceRadius = 0.5;
   bot.init(info, 42);
   EXPECT_EQ(bot.act({}).position, (Triple3{125.0, 42.0, 0.5}));

@@ -20,7 +20,7 @@
 
 #include "engine/script/LevelLoader.h"
 #include "game/trial/AutopilotBot.h"
-#include "game/trial/HeadlessTrial.h"
+#include "game/trial/BotTrial.h"
 
 namespace {
 
@@ -38,7 +38,7 @@ void playLevel(benchmark::State& state, const std::string& level) {
     game::AutopilotBot bot;
     state.ResumeTiming();
     const auto wall0 = std::chrono::steady_clock::now();
-    const game::TrialResult r = game::HeadlessTrial(loaded, bot, game::TrialSettings{}).run();
+    const game::TrialResult r = game::BotTrial(loaded, bot, game::TrialSettings{}).run();
     wall += std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
     const bool success = r.outcome == script::TrialOutcome::Success;
     won += success ? 1.0 : 0.0;

@@ -1,6 +1,6 @@
 // Headless playthroughs (issue 5): the paper's level (levels/paper_reaching.lua,
 // 240 s time limit) played by a bot that calls Lua every tick, through the
-// same tick code as `hemiroll run` (game/trial/HeadlessTrial). One iteration
+// same tick code as `hemiroll run` (game/trial/BotTrial). One iteration
 // is one whole trial; loading the level and the bot is not timed.
 //   speedup_cpu   simulated seconds per second of CPU time on the one core
 //                 that runs it: the issue's figure (target >= 500);
@@ -18,7 +18,7 @@
 
 #include "engine/script/BotScript.h"
 #include "engine/script/LevelLoader.h"
-#include "game/trial/HeadlessTrial.h"
+#include "game/trial/BotTrial.h"
 
 namespace {
 
@@ -41,7 +41,7 @@ void playPaperLevel(benchmark::State& state, const std::string& botPath) {
     state.ResumeTiming();
     const double cpu0 = cpuSeconds();
     const auto wall0 = std::chrono::steady_clock::now();
-    const game::TrialResult r = game::HeadlessTrial(level, bot, game::TrialSettings{}).run();
+    const game::TrialResult r = game::BotTrial(level, bot, game::TrialSettings{}).run();
     cpu += cpuSeconds() - cpu0;
     wall += std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
     simulated += r.time;

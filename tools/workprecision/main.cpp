@@ -97,10 +97,11 @@ double errorOf(const StateVector<N>& x, const StateVector<N>& ref) {
   return x.allFinite() ? (x - ref).cwiseAbs().maxCoeff() : std::numeric_limits<double>::infinity();
 }
 
+// The reference end state: our DOP853 in long double at tol 1e-16, checked
+// against a second one at 1e-15. Returns it; `floor` is the error below
+// which a point cannot be told from the reference's own.
 template <int N>
-void study(const Settings& settings, const Scenario<N>& s, std::vector<WorkPoint>& points,
-           std::vector<ReferenceCheck>& refs) {
-  std::fprintf(stderr, "work_precision: %s (T = %g s)\n", s.name.c_str(), s.horizon);
+StateVector<N> referenceOf(const Scenario<N>& s, std::vector<ReferenceCheck>& refs, double& floor) {
   double refSeconds = 0.0;
   const double t0 = cpuNow();
   // Tol 1e-16 is meaningful here: the state and the step updates are in long
@@ -114,27 +115,74 @@ void study(const Settings& settings, const Scenario<N>& s, std::vector<WorkPoint
   // Errors must stand well clear of what the reference itself may be off by:
   // the disagreement bounds the error of the looser of the two references,
   // so 10x it is >= 10x the error of the reference used.
-  const double floor = 10.0 * std::max(disagreement, 1e-16);
+  floor = 10.0 * std::max(disagreement, 1e-16);
+  return ref;
+}
 
+// Tolerances 1, 2, 5 per decade from 1e-3 to 1e-14, the same for every
+// adaptive method, ours and the peers': at the end of a chaotic horizon the
+// error is not monotone in tol, and a coarse grid makes the interpolated
+// times depend on where the decade points happen to fall.
+std::vector<double> tolerances(bool quick) {
+  if (quick) return {1e-5, 1e-8};
+  std::vector<double> tols;
+  for (int e = -3; e >= -14; --e)
+    for (double m : {5.0, 2.0, 1.0})
+      if (e < -3 || m == 1.0) tols.push_back(m * std::pow(10.0, e));
+  return tols;
+}
+
+// One adaptive method at one tol, timed over the passes.
+template <int N>
+struct AdaptiveJob {
+  std::string method;
+  bool ours;
+  double tol;
+  std::function<RunResult<N>()> run;
+  RunResult<N> result;
+  std::vector<double> seconds;
+};
+
+template <int N>
+std::vector<AdaptiveJob<N>> adaptiveJobs(const Scenario<N>& s, const std::vector<double>& tols) {
+  std::vector<AdaptiveJob<N>> jobs;
+  for (double tol : tols) {
+    jobs.push_back({"dopri5", true, tol, [&s, tol] { return runAdaptive<N, DormandPrince54<N>>(s, tol); }, {}, {}});
+    jobs.push_back({"tsit5", true, tol, [&s, tol] { return runAdaptive<N, Tsitouras54<N>>(s, tol); }, {}, {}});
+    jobs.push_back({"vern7", true, tol, [&s, tol] { return runAdaptive<N, Verner76<N>>(s, tol); }, {}, {}});
+    jobs.push_back({"vern9", true, tol, [&s, tol] { return runAdaptive<N, Verner98<N>>(s, tol); }, {}, {}});
+    jobs.push_back({"dop853", true, tol, [&s, tol] { return runAdaptive<N, DormandPrince853<N>>(s, tol); }, {}, {}});
+    for (Peer peer : {Peer::CvodeAdams, Peer::OdeintDopri5, Peer::OdeintFehlberg78})
+      jobs.push_back({peerName(peer), false, tol,
+                      [&s, tol, peer] {
+                        const PeerResult<N> p = runPeer<N>(peer, *s.system, s.x0, s.horizon, tol);
+                        return RunResult<N>{
+                            p.ok ? p.x : StateVector<N>::Constant(std::numeric_limits<double>::quiet_NaN()),
+                            p.evaluations};
+                      },
+                      {},
+                      {}});
+  }
+  return jobs;
+}
+
+// The reference, the fixed-step methods over the steps, then the adaptive
+// methods, ours and the peers', over the tolerances, each point's error
+// against the reference and its CPU time.
+template <int N>
+void study(const Settings& settings, const Scenario<N>& s, std::vector<WorkPoint>& points,
+           std::vector<ReferenceCheck>& refs) {
+  std::fprintf(stderr, "work_precision: %s (T = %g s)\n", s.name.c_str(), s.horizon);
+  double floor = 0.0;
+  const StateVector<N> ref = referenceOf<N>(s, refs, floor);
   auto add = [&](const std::string& method, bool ours, const char* parameter, double value, const RunResult<N>& r,
                  double seconds) {
     const double e = errorOf<N>(r.x, ref);
     points.push_back({s.name, method, ours, parameter, value, e, seconds, r.evaluations, e > floor});
   };
 
-  std::vector<double> steps = {1e-2, 5e-3, 2e-3, 1e-3, 5e-4, 2e-4, 1e-4};
-  // Tolerances 1, 2, 5 per decade from 1e-3 to 1e-14, the same for every
-  // adaptive method, ours and the peers': at the end of a chaotic horizon the
-  // error is not monotone in tol, and a coarse grid makes the interpolated
-  // times depend on where the decade points happen to fall.
-  std::vector<double> tols;
-  for (int e = -3; e >= -14; --e)
-    for (double m : {5.0, 2.0, 1.0})
-      if (e < -3 || m == 1.0) tols.push_back(m * std::pow(10.0, e));
-  if (settings.quick) {
-    steps = {4e-3, 1e-3};
-    tols = {1e-5, 1e-8};
-  }
+  const std::vector<double> steps =
+      settings.quick ? std::vector<double>{4e-3, 1e-3} : std::vector<double>{1e-2, 5e-3, 2e-3, 1e-3, 5e-4, 2e-4, 1e-4};
   double sec = 0.0;
   for (double h : steps) {
     RunResult<N> r = timed(settings, [&] { return runFixed<N, RungeKutta4<N>>(s, h); }, sec);
@@ -154,45 +202,20 @@ void study(const Settings& settings, const Scenario<N>& s, std::vector<WorkPoint
   // point's time the median of its passes' medians). On a shared machine a
   // burst of load then lands on every method alike instead of on one
   // method's curve.
-  struct Job {
-    std::string method;
-    bool ours;
-    double tol;
-    std::function<RunResult<N>()> run;
-    RunResult<N> result;
-    std::vector<double> seconds;
-  };
   const std::vector<std::pair<std::string, bool>> adaptive = {
       {"dopri5", true}, {"tsit5", true}, {"vern7", true}, {"vern9", true}, {"dop853", true}, {peerName(Peer::CvodeAdams), false},
       {peerName(Peer::OdeintDopri5), false}, {peerName(Peer::OdeintFehlberg78), false}};
-  std::vector<Job> jobs;
-  for (double tol : tols) {
-    jobs.push_back({"dopri5", true, tol, [&s, tol] { return runAdaptive<N, DormandPrince54<N>>(s, tol); }, {}, {}});
-    jobs.push_back({"tsit5", true, tol, [&s, tol] { return runAdaptive<N, Tsitouras54<N>>(s, tol); }, {}, {}});
-    jobs.push_back({"vern7", true, tol, [&s, tol] { return runAdaptive<N, Verner76<N>>(s, tol); }, {}, {}});
-    jobs.push_back({"vern9", true, tol, [&s, tol] { return runAdaptive<N, Verner98<N>>(s, tol); }, {}, {}});
-    jobs.push_back({"dop853", true, tol, [&s, tol] { return runAdaptive<N, DormandPrince853<N>>(s, tol); }, {}, {}});
-    for (Peer peer : {Peer::CvodeAdams, Peer::OdeintDopri5, Peer::OdeintFehlberg78})
-      jobs.push_back({peerName(peer), false, tol,
-                      [&s, tol, peer] {
-                        const PeerResult<N> p = runPeer<N>(peer, *s.system, s.x0, s.horizon, tol);
-                        return RunResult<N>{
-                            p.ok ? p.x : StateVector<N>::Constant(std::numeric_limits<double>::quiet_NaN()),
-                            p.evaluations};
-                      },
-                      {},
-                      {}});
-  }
+  std::vector<AdaptiveJob<N>> jobs = adaptiveJobs<N>(s, tolerances(settings.quick));
   const int passes = settings.quick ? 1 : 3;
   Settings perPass = settings;
   perPass.targetSeconds = settings.targetSeconds / passes;
   for (int pass = 0; pass < passes; ++pass)
-    for (Job& job : jobs) {
+    for (AdaptiveJob<N>& job : jobs) {
       job.result = timed(perPass, job.run, sec);
       job.seconds.push_back(sec);
     }
   for (const auto& [method, ours] : adaptive)
-    for (Job& job : jobs) {
+    for (AdaptiveJob<N>& job : jobs) {
       if (job.method != method) continue;
       std::nth_element(job.seconds.begin(), job.seconds.begin() + job.seconds.size() / 2, job.seconds.end());
       add(job.method, job.ours, "tol", job.tol, job.result, job.seconds[job.seconds.size() / 2]);

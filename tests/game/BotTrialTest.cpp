@@ -1,9 +1,9 @@
-// game/trial/HeadlessTrial in process: the tick loop's contract (determinism,
+// game/trial/BotTrial in process, stepped headless: the tick loop's contract (determinism,
 // bot errors and safety faults as outcomes, forces within the device limit)
 // and the rose bot against the paper's prescribed drive.
 
 #include "engine/script/BotScript.h"
-#include "game/trial/HeadlessTrial.h"
+#include "game/trial/BotTrial.h"
 #include "game/trial/TrialSetup.h"
 
 #include <gmock/gmock.h>
@@ -52,14 +52,14 @@ TrialResult play(const char* levelSource, const std::string& botPath, std::uint6
   options.seed = seed;
   script::BotScript bot(botPath, options);
   settings.seed = seed;
-  return HeadlessTrial(l, bot, settings).run();
+  return BotTrial(l, bot, settings).run();
 }
 
 bool sameBits(const physics::ForceDrivenState& a, const physics::ForceDrivenState& b) {
   return std::memcmp(a.data(), b.data(), sizeof(double) * 12) == 0;
 }
 
-TEST(HeadlessTrial, SameSeedSameTrialBitForBit) {
+TEST(BotTrial, SameSeedSameTrialBitForBit) {
   for (std::uint64_t seed : {1u, 2u}) {
     const TrialResult a = play(kOpenLevel, kBots + "random.lua", seed);
     const TrialResult b = play(kOpenLevel, kBots + "random.lua", seed);
@@ -73,7 +73,7 @@ TEST(HeadlessTrial, SameSeedSameTrialBitForBit) {
   EXPECT_FALSE(sameBits(one.finalState, six.finalState)) << "the seed must matter";
 }
 
-TEST(HeadlessTrial, ABotErrorEndsTheTrialWithItsPosition) {
+TEST(BotTrial, ABotErrorEndsTheTrialWithItsPosition) {
   const test::TempDirectory dir;
   const std::string bot = dir.write(
       "late.lua", "return {name = 'late', act = function(t, obs)\n  assert(t < 0.25, 'gave up')\n"
@@ -86,7 +86,7 @@ TEST(HeadlessTrial, ABotErrorEndsTheTrialWithItsPosition) {
   EXPECT_TRUE(r.finalState.allFinite());
 }
 
-TEST(HeadlessTrial, AFailedInitEndsTheTrialAndTheLevelHearsOfIt) {
+TEST(BotTrial, AFailedInitEndsTheTrialAndTheLevelHearsOfIt) {
   // The level's on_fail ends the trial a second way; the first reason stays.
   constexpr const char* kListening = R"lua(
 return { name = "listening", task = { targets = { u_ca = { value = {0.5, 0}, tol = 0.004 } }, time_limit = 1 },
@@ -98,7 +98,7 @@ return { name = "listening", task = { targets = { u_ca = { value = {0.5, 0}, tol
                                     "  act = function(t, obs) return 0, 0, 0 end}");
   script::LoadedLevel l = level(kListening);
   script::BotScript b(bot);
-  const TrialResult r = HeadlessTrial(l, b, TrialSettings{}).run();
+  const TrialResult r = BotTrial(l, b, TrialSettings{}).run();
   EXPECT_EQ(r.outcome, TrialOutcome::Failure);
   EXPECT_THAT(r.reason, HasSubstr("bot error: "));
   EXPECT_THAT(r.reason, HasSubstr("bad_init.lua:2: no level for me"));
@@ -108,7 +108,7 @@ return { name = "listening", task = { targets = { u_ca = { value = {0.5, 0}, tol
   EXPECT_THAT(messages[0].text, HasSubstr("heard: bot error"));
 }
 
-TEST(HeadlessTrial, NanFromABotIsABotErrorNotANanState) {
+TEST(BotTrial, NanFromABotIsABotErrorNotANanState) {
   const test::TempDirectory dir;
   const std::string bot = dir.write("nan.lua",
                                     "return {name = 'nan', act = function(t, obs)\n"
@@ -121,7 +121,7 @@ TEST(HeadlessTrial, NanFromABotIsABotErrorNotANanState) {
   EXPECT_TRUE(r.finalState.allFinite());
 }
 
-TEST(HeadlessTrial, AJumpTripsTheVelocityGuardAndEndsTheTrial) {
+TEST(BotTrial, AJumpTripsTheVelocityGuardAndEndsTheTrial) {
   const test::TempDirectory dir;
   const std::string bot = dir.write("jump.lua",
                                     "return {name = 'jump', act = function(t, obs)\n"
@@ -134,7 +134,7 @@ TEST(HeadlessTrial, AJumpTripsTheVelocityGuardAndEndsTheTrial) {
   EXPECT_NEAR(r.time, 0.5, 0.0025);
 }
 
-TEST(HeadlessTrial, RenderedForceNeverExceedsTheDeviceLimit) {
+TEST(BotTrial, RenderedForceNeverExceedsTheDeviceLimit) {
   // Adversarial seeds: goals far outside the workspace, teleports, fast moves.
   for (std::uint64_t seed = 0; seed < 12; ++seed) {
     const TrialResult r = play(kOpenLevel, kBots + "random.lua", seed);
@@ -156,22 +156,22 @@ TEST(HeadlessTrial, RenderedForceNeverExceedsTheDeviceLimit) {
 // drive rocks the body at ~10 rad/s while the 250 N/m spring filters that
 // out, and the motion is chaotic (docs/PHYSICS.md), so they part within
 // 0.25 s by design, not by error.
-TEST(HeadlessTrial, RoseBotTracesThePrescribedRose) {
+TEST(BotTrial, RoseBotTracesThePrescribedRose) {
   constexpr const char* kRoseLevel = R"lua(
 -- p(0) and p'(0) of the curve, as the prescribed drive has them.
 return { name = "rose", initial = { x_p = 0.023, yd_p = -math.pi / 10 * (0.015 - 8 * 0.008) },
          task = { time_limit = 6 } }
 )lua";
+  // The rig's tap, every 10th tick: 600 rows of 6 s fit the ring, read after the trial.
   auto ring = std::make_unique<haptics::RecordRing>();
+  script::LoadedLevel l = level(kRoseLevel);
+  script::BotScript bot(kBots + "rose.lua", script::BotLoadOptions{});
+  BotTrial trial(l, bot, TrialSettings{});
+  trial.rig().record({ring.get(), 10});
+  const TrialResult r = trial.run();
   std::vector<haptics::RecordRow> rows;
-  TrialSettings settings;
-  settings.recordRing = ring.get();
-  settings.recordEvery = 10;
-  settings.drainRecording = [&] {
-    haptics::RecordRow row;
-    while (ring->pop(row)) rows.push_back(row);
-  };
-  const TrialResult r = play(kRoseLevel, kBots + "rose.lua", 0, settings);
+  haptics::RecordRow row;
+  while (ring->pop(row)) rows.push_back(row);
   EXPECT_EQ(r.outcome, TrialOutcome::Success) << r.reason;  // watch-only: watched to the end
   ASSERT_GT(rows.size(), 500u);
 
