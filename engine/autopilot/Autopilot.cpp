@@ -116,51 +116,16 @@ double Autopilot::uprightError(const Vec2& upright) const {
 }
 
 ProxyCommand Autopilot::act(const AutopilotInput& input) {
-  ProxyCommand out;
   if (!started_) {
     lastProxy_ = input.massPosition;
     firstActTime_ = input.time;
     started_ = true;
   }
-  if (failure_.empty() && (def_.planningRolloutSeconds > 0.0 || def_.planningRolloutSecondsPerSimulatedSecond > 0.0)) {
-    const double simulated = input.time - firstActTime_;
-    const double allowed = def_.budget * (def_.planningRolloutSeconds +
-                                          def_.planningRolloutSecondsPerSimulatedSecond * std::max(0.0, simulated));
-    if (plannedSeconds() > allowed) {
-      char why[300];
-      std::snprintf(why, sizeof why,
-                    "planning has rolled out %.0f s by %.1f s of simulated time, more than its budget (%g x (%g s + "
-                    "%g s per simulated second)): the task looks beyond it",
-                    plannedSeconds(), simulated, def_.budget, def_.planningRolloutSeconds,
-                    def_.planningRolloutSecondsPerSimulatedSecond);
-      failure_ = why;
-    }
-  }
-  if (!failure_.empty()) {  // hold still; the game ends the trial
-    out.position = lastProxy_;
-    return out;
-  }
-  if (input.stage != stage_ || !sameGoal(input.goal, given_)) {
-    ++generation_;  // a plan still running for the old goal is dropped
-    stage_ = input.stage;
-    given_ = input.goal;
-    goal_ = input.goal;
-    // psi in two steps: first the rest of the stage (psi turns freely while
-    // the helix travels, and a landing can move it only a little), then,
-    // from rest on the target, a helix that precesses on the spot until a
-    // landing ends with psi inside its band too.
-    turningPsi_ = false;
-    goal_.set[11] = false;
-    policy_.setGoal(goal_);
-    failure_ = unreachableReason(goal_, def_.params, def_.workspace);
-    if (!failure_.empty()) {
-      out.position = lastProxy_;
-      return out;
-    }
-    if (goal_.contactSet()) policy_.travel();
-    else policy_.settleNow();
-    resetPlanner_ = true;
-  }
+  checkPlanningBudget(input.time);
+  ProxyCommand out;
+  out.position = lastProxy_;
+  if (!failure_.empty()) return out;  // hold still; the game ends the trial
+  if ((input.stage != stage_ || !sameGoal(input.goal, given_)) && !takeGoal(input)) return out;
   if (!input.engaged) {
     // Take hold: bring the proxy onto the mass point, as a player does.
     policy_.startAt(input.massPosition);
@@ -171,48 +136,97 @@ ProxyCommand Autopilot::act(const AutopilotInput& input) {
     return out;
   }
   policy_.params().stiffen = def_.handStiffens ? stiffeningFor(def_.params, def_.coupling, input.forceShare) : 0.0;
-  if (given_.set[11] && !turningPsi_ && normalisedError(goal_, input.state) <= 1.0) {
-    turningPsi_ = true;
-    goal_ = given_;
-    policy_.setGoal(goal_);
-    policy_.travel();
-    policy_.params().amplitude = kTurnAmplitudeShare * def_.helix.amplitude;
-    policy_.params().steerLimit = kTurnSteerShare * def_.helix.steerLimit;
-    ++generation_;
-    holdSteer_ = true;  // keep the gentle circle for a while before steering again
-    nextDecision_ = input.time;
-  }
-  if (def_.plannerThread) {
-    Decision ready;
-    if (!pending_ && worker_->take(ready) && ready.generation == generation_) {
-      pending_ = ready;
-      refineNext_ = refineNext_ || ready.wantsRefinement;
-    }
-    if (pending_ && input.time >= pending_->applyAt - 0.5 * def_.dt) {
-      // Applied at the moment it was planned for; one that came too late
-      // (the plan took longer than its lead) is dropped.
-      if (input.time - pending_->applyAt <= 0.005) apply(*pending_);
-      pending_.reset();
-    }
-    if (!pending_ && input.time >= nextDecision_ - 1e-9) {
-      PlanJob next = job(input);
-      next.lead = refineNext_ ? def_.refineLead : def_.planLead;
-      next.mayRefine = refineNext_;
-      if (worker_->post(next)) {
-        nextDecision_ = input.time + def_.decisionPeriod;
-        refineNext_ = false;
-      }
-    }
-  } else if (input.time >= nextDecision_ - 1e-9) {
+  if (given_.set[11] && !turningPsi_ && normalisedError(goal_, input.state) <= 1.0) startTurningPsi(input.time);
+  if (def_.plannerThread)
+    exchangeWithWorker(input);
+  else if (input.time >= nextDecision_ - 1e-9) {
     apply(plan(job(input)));
     nextDecision_ = input.time + def_.decisionPeriod;
   }
+  return stepPolicy(input);
+}
+
+void Autopilot::checkPlanningBudget(double time) {
+  if (!failure_.empty() || (def_.planningRolloutSeconds <= 0.0 && def_.planningRolloutSecondsPerSimulatedSecond <= 0.0))
+    return;
+  const double simulated = time - firstActTime_;
+  const double allowed = def_.budget * (def_.planningRolloutSeconds +
+                                        def_.planningRolloutSecondsPerSimulatedSecond * std::max(0.0, simulated));
+  if (plannedSeconds() <= allowed) return;
+  char why[300];
+  std::snprintf(why, sizeof why,
+                "planning has rolled out %.0f s by %.1f s of simulated time, more than its budget (%g x (%g s + "
+                "%g s per simulated second)): the task looks beyond it",
+                plannedSeconds(), simulated, def_.budget, def_.planningRolloutSeconds,
+                def_.planningRolloutSecondsPerSimulatedSecond);
+  failure_ = why;
+}
+
+bool Autopilot::takeGoal(const AutopilotInput& input) {
+  ++generation_;  // a plan still running for the old goal is dropped
+  stage_ = input.stage;
+  given_ = input.goal;
+  goal_ = input.goal;
+  // psi in two steps: first the rest of the stage (psi turns freely while
+  // the helix travels, and a landing can move it only a little), then,
+  // from rest on the target, a helix that precesses on the spot until a
+  // landing ends with psi inside its band too.
+  turningPsi_ = false;
+  goal_.set[11] = false;
+  policy_.setGoal(goal_);
+  failure_ = unreachableReason(goal_, def_.params, def_.workspace);
+  if (!failure_.empty()) return false;
+  if (goal_.contactSet())
+    policy_.travel();
+  else
+    policy_.settleNow();
+  resetPlanner_ = true;
+  return true;
+}
+
+void Autopilot::startTurningPsi(double time) {
+  turningPsi_ = true;
+  goal_ = given_;
+  policy_.setGoal(goal_);
+  policy_.travel();
+  policy_.params().amplitude = kTurnAmplitudeShare * def_.helix.amplitude;
+  policy_.params().steerLimit = kTurnSteerShare * def_.helix.steerLimit;
+  ++generation_;
+  holdSteer_ = true;  // keep the gentle circle for a while before steering again
+  nextDecision_ = time;
+}
+
+void Autopilot::exchangeWithWorker(const AutopilotInput& input) {
+  Decision ready;
+  if (!pending_ && worker_->take(ready) && ready.generation == generation_) {
+    pending_ = ready;
+    refineNext_ = refineNext_ || ready.wantsRefinement;
+  }
+  if (pending_ && input.time >= pending_->applyAt - 0.5 * def_.dt) {
+    // Applied at the moment it was planned for; one that came too late
+    // (the plan took longer than its lead) is dropped.
+    if (input.time - pending_->applyAt <= 0.005) apply(*pending_);
+    pending_.reset();
+  }
+  if (!pending_ && input.time >= nextDecision_ - 1e-9) {
+    PlanJob next = job(input);
+    next.lead = refineNext_ ? def_.refineLead : def_.planLead;
+    next.mayRefine = refineNext_;
+    if (worker_->post(next)) {
+      nextDecision_ = input.time + def_.decisionPeriod;
+      refineNext_ = false;
+    }
+  }
+}
+
+ProxyCommand Autopilot::stepPolicy(const AutopilotInput& input) {
   // One policy step per servo tick since the last call: headless that is
   // one, a real-time caller at a lower rate gets the same motion.
   const long long steps = std::clamp(std::llround((input.time - policyTime_) / def_.dt), 1LL, 100LL);
   policyTime_ = input.time;
   Vec3 proxy;
   for (long long i = 0; i < steps; ++i) proxy = policy_.proxyFor(input.state);
+  ProxyCommand out;
   out.position = deliverable(proxy, lastProxy_, steps);
   // Over the ticks this call stands for, so that a device that extrapolates
   // with it (real-time hand-over) follows the same path.

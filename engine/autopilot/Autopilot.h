@@ -202,6 +202,14 @@ class Autopilot {
   };
 
   Decision plan(const PlanJob& job);
+  // act's steps: give up once planning has spent its budget; take a new
+  // stage's goal (false: refused, failure_ says why); start turning psi on
+  // the spot; trade plans with the worker (real time); the policy's ticks.
+  void checkPlanningBudget(double time);
+  bool takeGoal(const AutopilotInput& input);
+  void startTurningPsi(double time);
+  void exchangeWithWorker(const AutopilotInput& input);
+  ProxyCommand stepPolicy(const AutopilotInput& input);
   void predict(AutopilotInput& input, double lead);
   PlanJob job(const AutopilotInput& input);
   void apply(const Decision& decision);
