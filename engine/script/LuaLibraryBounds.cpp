@@ -90,7 +90,9 @@ void stringSub(lua_State* L, Estimate& e) {
   e.worst = e.charge = 1.0 + (ok ? spanOf(length, i, j) : length);
 }
 
-void stringByte(lua_State* L, Estimate& e) {
+// string.byte(s, i, j) and utf8.codepoint(s, i, j): one step per byte of
+// the span i..j (j defaults to i).
+void byteSpan(lua_State* L, Estimate& e) {
   bool ok = true;
   const double length = lengthOf(L, 1);
   const lua_Integer i = integerOr(L, 2, 1, ok);
@@ -174,14 +176,6 @@ void stringGsub(lua_State* L, Estimate& e) {
     e.worst += matches * lengthOf(L, 3);
     e.charge += lengthOf(L, 3);
   }
-}
-
-void utf8Range(lua_State* L, Estimate& e) {
-  bool ok = true;
-  const double length = lengthOf(L, 1);
-  const lua_Integer i = integerOr(L, 2, 1, ok);
-  const lua_Integer j = integerOr(L, 3, i, ok);
-  e.worst = e.charge = 1.0 + (ok ? spanOf(length, i, j) : length);
 }
 
 void argumentCount(lua_State* L, Estimate& e) { e.worst = e.charge = 1.0 + 4.0 * lua_gettop(L); }
@@ -324,7 +318,7 @@ void bound(lua_State* L, int lib, const char* field, const Bounded& entry) {
 
 void installLibraryBounds(lua_State* L, int stringLib, int tableLib, int utf8Lib, int baseLib) {
   static const Bounded kString[] = {
-      {"string.byte", stringByte},     {"string.char", argumentCount},   {"string.find", stringFind},
+      {"string.byte", byteSpan},     {"string.char", argumentCount},   {"string.find", stringFind},
       {"string.format", stringFormat}, {"string.gmatch", stringGmatch},  {"string.gsub", stringGsub},
       {"string.lower", linearInArguments}, {"string.match", stringMatch}, {"string.rep", stringRep},
       {"string.reverse", linearInArguments}, {"string.sub", stringSub},   {"string.upper", linearInArguments},
@@ -336,7 +330,7 @@ void installLibraryBounds(lua_State* L, int stringLib, int tableLib, int utf8Lib
       {"table.unpack", tableUnpack},
   };
   static const Bounded kUtf8[] = {
-      {"utf8.char", argumentCount}, {"utf8.codepoint", utf8Range}, {"utf8.len", linearInArguments},
+      {"utf8.char", argumentCount}, {"utf8.codepoint", byteSpan}, {"utf8.len", linearInArguments},
       {"utf8.offset", linearInArguments},
   };
   static const Bounded kBase[] = {{"tonumber", linearInArguments}, {"select", argumentCount}};
