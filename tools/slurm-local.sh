@@ -36,8 +36,10 @@ start() {
     runuser -u munge -- /usr/sbin/munged --socket="$socket" --pid-file="$state/munge/munged.pid" \
       --log-file="$state/munge/munged.log" --seed-file="$state/munge/munged.seed"
   fi
-  local cpus
+  local cpus memory
   cpus=$(nproc)
+  # Nine tenths of the memory in MB, so that jobs asking --mem can start.
+  memory=$(awk '/^MemTotal:/ { printf "%d", $2 / 1024 * 0.9 }' /proc/meminfo)
   cat > "$conf" <<CONF
 ClusterName=hemiroll-local
 SlurmctldHost=$node
@@ -68,7 +70,7 @@ SlurmdTimeout=30
 InactiveLimit=0
 MinJobAge=300
 KillWait=5
-NodeName=$node CPUs=$cpus State=UNKNOWN
+NodeName=$node CPUs=$cpus RealMemory=$memory State=UNKNOWN
 PartitionName=local Nodes=$node Default=YES MaxTime=INFINITE State=UP
 CONF
   export SLURM_CONF="$conf"

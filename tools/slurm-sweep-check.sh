@@ -4,7 +4,10 @@
 # job array and its merge, and checks that
 #   1. the merged sweep.csv equals the same sweep run on one machine, byte
 #      for byte;
-#   2. with one array task killed, the merge does not run, the other parts
+#   2. the job asks the cluster for the time, partition and memory given,
+#      its logs land in a folder whose name has a space and a quote, and an
+#      #SBATCH line added by hand survives writing the job again;
+#   3. with one array task killed, the merge does not run, the other parts
 #      are kept, and submitting again computes only the missing part and
 #      merges to the same bytes.
 # Stops the cluster after, whatever happened. Needs root (the daemons).
@@ -28,7 +31,7 @@ cleanup() {
 trap cleanup EXIT
 fail() {
   echo "slurm-sweep-check: FAILED: $*" >&2
-  for log in "$work"/out*/slurm/*.log "$state"/slurmctld.log; do
+  for log in "$work"/out*/slurm/*.log "$work"/write1.err "$state"/slurmctld.log; do
     [[ -f "$log" ]] && { echo "--- $log" >&2; tail -5 "$log" >&2; }
   done
   exit 1
@@ -64,14 +67,33 @@ submit() {  # prints the array job's id and the merge job's id
   "$1/slurm/submit.sh" | sed -E 's/.*array job ([0-9]+) .*merge job ([0-9]+).*/\1 \2/'
 }
 
-# 1. The whole job.
-"$hemiroll" sweep "$work/spec.lua" --out "$work/out1" --slurm 3 --maps none > /dev/null 2>&1 || fail "writing the job"
-read -r array merge < <(submit "$work/out1")
+# 1. The whole job, into a folder sbatch would split at the space; asked for
+# resources, with a line added by hand and the job written again.
+out1="$work/out 1 \"q\""
+write1() {
+  "$hemiroll" sweep "$work/spec.lua" --out "$out1" --slurm 3 --maps none --slurm-time 10 \
+    --slurm-partition local --slurm-mem 100M > /dev/null 2> "$work/write1.err" || fail "writing the job: $(cat "$work/write1.err")"
+}
+write1
+sed -i 's/^set -euo pipefail$/#SBATCH --comment=added-by-hand\nset -euo pipefail/' "$out1/slurm/sweep-array.sbatch"
+write1
+grep -q "kept the #SBATCH lines added to it: #SBATCH --comment=added-by-hand" "$work/write1.err" ||
+  fail "writing the job again did not say it kept the hand-added line"
+read -r array merge < <(submit "$out1")
+job=$(scontrol show job "${array}_0")
+grep -q "TimeLimit=00:10:00" <<< "$job" || fail "the array task does not have the 10-minute limit"
+grep -q "Partition=local" <<< "$job" || fail "the array task is not in partition local"
+grep -qE "MinMemoryNode=100M|mem=100M" <<< "$job" || fail "the array task does not ask 100M"
+grep -q "Comment=added-by-hand" <<< "$job" || fail "the hand-added #SBATCH line was lost"
 wait_for "$merge"
-cmp -s "$work/out1/sweep.csv" "$work/whole/sweep.csv" || fail "the merged sweep.csv differs from the one-machine run"
-echo "slurm-sweep-check: 3 array tasks and the merge give the one-machine sweep.csv, byte for byte"
+cmp -s "$out1/sweep.csv" "$work/whole/sweep.csv" || fail "the merged sweep.csv differs from the one-machine run"
+for log in task-0 task-1 task-2 merge; do
+  [[ -f "$out1/slurm/$log.log" ]] || fail "no $log.log in the folder with a space and a quote"
+done
+echo "slurm-sweep-check: 3 array tasks and the merge give the one-machine sweep.csv, byte for byte;"
+echo "slurm-sweep-check: time, partition, memory and a hand-added line reach the cluster; logs under a spaced name"
 
-# 2. One task killed: nothing runs until it is cancelled, so the kill is sure.
+# 3. One task killed: nothing runs until it is cancelled, so the kill is sure.
 "$hemiroll" sweep "$work/spec.lua" --out "$work/out2" --slurm 3 --maps none > /dev/null 2>&1 || fail "writing the job"
 scontrol update PartitionName=local State=DOWN
 read -r array merge < <(submit "$work/out2")

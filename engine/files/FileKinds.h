@@ -34,6 +34,8 @@ inline constexpr FileKind kResults{"results table", 256 * kMiB};
 inline constexpr FileKind kSweepTable{"sweep table", 2 * kGiB};
 // A sweep part's manifest (JSON with the spec): small.
 inline constexpr FileKind kSweepManifest{"sweep manifest", 16 * kMiB};
+// A Slurm job file of `sweep --slurm`, read back to keep its hand-added lines.
+inline constexpr FileKind kSlurmJobFile{"Slurm job file", 1 * kMiB};
 // A ghost's time (.hrr.time): one number.
 inline constexpr FileKind kGhostTime{"ghost time", 4 * kKiB};
 // Whose a ghost is (.hrr.by): one word.

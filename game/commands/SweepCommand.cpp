@@ -58,7 +58,12 @@ int writeSlurm(const SweepOptions& o) {
   def.tasks = o.slurmTasks;
   def.threadsPerTask = o.threads > 0 ? o.threads : 1;
   def.maps = o.maps;
-  const std::vector<fs::path> files = writeSlurmJob(def);
+  def.resources = o.slurm;
+  const SlurmJobWritten written = writeSlurmJob(def);
+  const std::vector<fs::path>& files = written.files;
+  for (const std::string& note : written.notes) std::cerr << "hemiroll sweep: " << note << "\n";
+  if (o.slurm.time.empty())
+    std::cerr << "hemiroll sweep: no --slurm-time: the tasks ask for no time limit, which many sites refuse\n";
   std::cerr << "hemiroll sweep: a Slurm job of " << def.tasks << " tasks in " << files.front().parent_path().string()
             << "; submit it with " << files.back().string() << "\n";
   JsonLine line;

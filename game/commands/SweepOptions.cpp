@@ -9,6 +9,7 @@ namespace hemiroll::game {
 const char* sweepUsage() {
   return "usage: hemiroll sweep SPEC.lua --out DIR [--threads N] [--lanes W] [--shard i/N] [--maps svg|none]\n"
          "       hemiroll sweep SPEC.lua --out DIR --slurm N [--threads T] [--maps svg|none]\n"
+         "             [--slurm-time LIMIT] [--slurm-partition P] [--slurm-account A] [--slurm-mem M]\n"
          "       hemiroll sweep merge DIR... --out DIR [--maps svg|none]\n"
          "       hemiroll sweep map DIR --x PARAM --y PARAM --metric NAME [--aggregate HOW] [--out FILE.svg]\n"
          "\n"
@@ -30,7 +31,15 @@ const char* sweepUsage() {
          "  --slurm N         writes DIR/slurm/: a Slurm job array of N shards into\n"
          "                    DIR/parts, T threads each, and a merge into DIR that\n"
          "                    waits for them; submit with DIR/slurm/submit.sh, and\n"
-         "                    again after a failure (finished parts are kept)\n"
+         "                    again after a failure (finished parts are kept); #SBATCH\n"
+         "                    lines added to the files by hand are kept when they\n"
+         "                    are written again\n"
+         "  --slurm-time LIMIT  --slurm: each task's time limit as Slurm writes it\n"
+         "                    (90, 2:30:00, 1-12:00:00); many sites refuse a job\n"
+         "                    without one\n"
+         "  --slurm-partition P, --slurm-account A\n"
+         "                    --slurm: the partition (or a list: a,b) and the account\n"
+         "  --slurm-mem M     --slurm: memory per node (4G, 500M)\n"
          "  --maps svg|none   run (whole sweeps), merge: draw map-<x>-<y>.svg for every\n"
          "                    pair of axes (default svg)\n"
          "  --x, --y PARAM    map: the axes (R, m_s, m_p, g, r1, r2, k, Omega)\n"
@@ -75,6 +84,17 @@ SweepOptionsResult parseSweepOptions(const std::vector<std::string>& args) {
       return std::string();
     });
     reader.option("--slurm", cli::integerIn(o.slurmTasks, 1, 10000, "a whole number of shards from 1 to 10000"));
+    auto slurmValue = [](std::string& field, std::optional<std::string> (*problem)(std::string_view)) {
+      return [&field, problem](const std::string& flag, const std::string& value) {
+        if (const auto why = problem(value)) return cli::needs(flag, *why, value);
+        field = value;
+        return std::string();
+      };
+    };
+    reader.option("--slurm-time", slurmValue(o.slurm.time, slurmTimeProblem))
+        .option("--slurm-partition", slurmValue(o.slurm.partition, slurmNameProblem))
+        .option("--slurm-account", slurmValue(o.slurm.account, slurmNameProblem))
+        .option("--slurm-mem", slurmValue(o.slurm.memory, slurmMemoryProblem));
   }
   if (run || merge) {
     reader.option("--maps", [&](const std::string& flag, const std::string& value) {
@@ -106,6 +126,9 @@ SweepOptionsResult parseSweepOptions(const std::vector<std::string>& args) {
     result.error = "missing --x, --y or --metric (a map needs all three)";
   else if (o.slurmTasks > 0 && !o.shard.whole())
     result.error = "--slurm writes a job for every shard; --shard is for one of its tasks";
+  else if (o.slurmTasks == 0 && !(o.slurm.time.empty() && o.slurm.partition.empty() && o.slurm.account.empty() &&
+                                  o.slurm.memory.empty()))
+    result.error = "--slurm-time, --slurm-partition, --slurm-account and --slurm-mem are for the job files of --slurm N";
   return result;
 }
 

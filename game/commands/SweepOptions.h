@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "game/sweep/SbatchDirectives.h"
 #include "game/sweep/SweepMetrics.h"
 #include "game/sweep/SweepShard.h"
 
@@ -23,6 +24,7 @@ struct SweepOptions {
   int lanes = 0;                    // run: --lanes W, SIMD lanes per thread; 0 = the widest this CPU runs
   SweepShard shard;                 // run: --shard i/N
   int slurmTasks = 0;               // run: --slurm N writes a Slurm job of N shards instead of running (0: run)
+  SlurmResources slurm;             // run with --slurm: --slurm-time, --slurm-partition, --slurm-account, --slurm-mem
   bool maps = true;                 // run (whole sweeps), merge: --maps svg|none
   // map:
   std::optional<std::string> x, y, metric;

@@ -31,6 +31,14 @@ TEST(SweepOptions, Run) {
   const SweepOptionsResult slurm = parseSweepOptions({"spec.lua", "--out", "d", "--slurm", "32", "--threads", "8"});
   ASSERT_EQ(slurm.error, "");
   EXPECT_EQ(slurm.options.slurmTasks, 32);
+  const SweepOptionsResult asked = parseSweepOptions({"spec.lua", "--out", "d", "--slurm", "4", "--slurm-time", "1-00:00:00",
+                                                      "--slurm-partition", "short", "--slurm-account", "lab",
+                                                      "--slurm-mem", "4G"});
+  ASSERT_EQ(asked.error, "");
+  EXPECT_EQ(asked.options.slurm.time, "1-00:00:00");
+  EXPECT_EQ(asked.options.slurm.partition, "short");
+  EXPECT_EQ(asked.options.slurm.account, "lab");
+  EXPECT_EQ(asked.options.slurm.memory, "4G");
   EXPECT_EQ(plain.lanes, 0);  // the widest this CPU runs
   EXPECT_EQ(parseSweepOptions({"spec.lua", "--out", "d", "--lanes", "4"}).options.lanes, 4);
 }
@@ -68,6 +76,10 @@ TEST(SweepOptions, EachMistakeIsOneSentence) {
       {{"s.lua", "--out", "d", "--slurm", "0"}, "--slurm needs a whole number of shards from 1 to 10000"},
       {{"s.lua", "--out", "d", "--slurm", "4", "--shard", "1/4"}, "--slurm writes a job for every shard"},
       {{"merge", "a", "--out", "m", "--slurm", "2"}, "--slurm"},
+      {{"s.lua", "--out", "d", "--slurm", "2", "--slurm-time", "2h"}, "--slurm-time needs a time limit as Slurm writes it"},
+      {{"s.lua", "--out", "d", "--slurm", "2", "--slurm-mem", "4GB"}, "--slurm-mem needs memory per node"},
+      {{"s.lua", "--out", "d", "--slurm", "2", "--slurm-partition", "a b"}, "--slurm-partition needs a name"},
+      {{"s.lua", "--out", "d", "--slurm-time", "60"}, "are for the job files of --slurm N"},
   };
   for (const auto& [args, expected] : cases) {
     const SweepOptionsResult r = parseSweepOptions(args);
