@@ -320,21 +320,40 @@ int laneWidthFor(std::size_t n) {
 
 }  // namespace
 
+// One rollout's progress: what the loop of a single rollout keeps.
+struct Autopilot::RolloutLane {
+  Outcome o;
+  physics::ForceDrivenState x;  // the lane's state after the last tick
+  Vec3 last;
+  long long ticks = 0, k = 0, inside = 0, meanCount = 0;
+  double meanError = 0.0;
+  bool done = false;
+};
+
 std::vector<Autopilot::Outcome> Autopilot::rollouts(std::vector<HelixPolicy> policies, const AutopilotInput& input,
                                                     double horizon, bool judge) {
-  // One rollout's progress: what the loop of a single rollout keeps.
-  struct Lane {
-    Outcome o;
-    physics::ForceDrivenState x;  // the lane's state after the last tick
-    Vec3 last;
-    long long ticks = 0, k = 0, inside = 0, meanCount = 0;
-    double meanError = 0.0;
-    bool done = false;
-  };
   const std::size_t n = policies.size();
   physics::ForceDrivenBatch batch(def_.coupling.method, laneWidthFor(n));
-  std::vector<Lane> lanes(n);
+  std::vector<RolloutLane> lanes = startRollouts(batch, n, input, horizon);
   const long long holdTicks = std::llround(planGoal_.hold / def_.dt);
+  for (long long tick = 0; batch.activeCount() > 0; ++tick) {
+    holdRolloutProxies(batch, lanes, policies);
+    batch.step(0.0, def_.dt);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (lanes[i].done) continue;
+      lanes[i].x = batch.state(static_cast<int>(i));
+      if (judgeRolloutTick(lanes[i], tick, judge, holdTicks)) {
+        lanes[i].done = true;
+        batch.retire(static_cast<int>(i));
+      }
+    }
+  }
+  return rolloutOutcomes(lanes);
+}
+
+std::vector<Autopilot::RolloutLane> Autopilot::startRollouts(physics::ForceDrivenBatch& batch, std::size_t n,
+                                                             const AutopilotInput& input, double horizon) {
+  std::vector<RolloutLane> lanes(n);
   // A start outside the domain: PlantModel's stepper reports it at the first tick.
   const bool startsOutside = domain_.domainEvent(input.time, input.state) != physics::DomainEvent::None;
   for (std::size_t i = 0; i < n; ++i) {
@@ -349,69 +368,72 @@ std::vector<Autopilot::Outcome> Autopilot::rollouts(std::vector<HelixPolicy> pol
     }
     if (lanes[i].done) batch.retire(static_cast<int>(i));
   }
-  for (long long tick = 0; batch.activeCount() > 0; ++tick) {
-    for (std::size_t i = 0; i < n; ++i) {
-      if (lanes[i].done) continue;
-      physics::ProxyPose pose;
-      pose.position = deliverable(policies[i].proxyFor(lanes[i].x), lanes[i].last);
-      pose.velocity = (pose.position - lanes[i].last) / def_.dt;
-      lanes[i].last = pose.position;
-      batch.holdProxy(static_cast<int>(i), pose);
-    }
-    batch.step(0.0, def_.dt);
-    for (std::size_t i = 0; i < n; ++i) {
-      Lane& lane = lanes[i];
-      if (lane.done) continue;
-      Outcome& o = lane.o;
-      lane.x = batch.state(static_cast<int>(i));
-      const physics::ForceDrivenState& x = lane.x;
-      auto finish = [&] {
-        lane.done = true;
-        batch.retire(static_cast<int>(i));
-      };
-      if (domain_.domainEvent(0.0, x) != physics::DomainEvent::None || inForbiddenZone(planGoal_, x)) {
-        o.event = true;
-        o.success = false;
-        finish();
-        continue;
-      }
-      lane.k = tick + 1;
-      if (!o.success) {
-        if (!judge) {
-          // The second half of the horizon: c_up rides a loop per turn of the
-          // helix, so its mean, not its last value, says where the drift goes.
-          if (2 * tick >= lane.ticks) {
-            const UprightContact up = uprightContact(constants_, x);
-            lane.meanError += uprightError(up.point);
-            ++lane.meanCount;
-            o.excess = std::max(o.excess, std::max(0.0, std::abs(x[6]) - 1.2) + std::max(0.0, up.tilt - 0.9));
-          }
-        } else {
-          const double e = normalisedError(planGoal_, x);
-          const double soft = squaredError(planGoal_, x);
-          if (soft < o.softCost) {
-            o.softCost = soft;
-            o.psiError = planGoal_.set[11] ? std::abs(std::remainder(x[11] - planGoal_.target[11], 2.0 * M_PI)) /
-                                                 planGoal_.tolerance[11]
-                                           : 0.0;
-          }
-          lane.inside = e <= 1.0 ? lane.inside + 1 : 0;
-          if (lane.inside > holdTicks) {
-            // Held: but a plan that swings through the bands and tips over a
-            // moment later hands the next stage a wreck, so it must also stay
-            // in the domain for kAfterSuccess more.
-            o.success = true;
-            o.time = static_cast<double>(tick + 1) * def_.dt;
-            lane.ticks = std::min(lane.ticks, tick + 1 + std::llround(kAfterSuccess / def_.dt));
-          }
-        }
-      }
-      if (lane.k >= lane.ticks) finish();
-    }
+  return lanes;
+}
+
+void Autopilot::holdRolloutProxies(physics::ForceDrivenBatch& batch, std::vector<RolloutLane>& lanes,
+                                   std::vector<HelixPolicy>& policies) const {
+  for (std::size_t i = 0; i < lanes.size(); ++i) {
+    if (lanes[i].done) continue;
+    physics::ProxyPose pose;
+    pose.position = deliverable(policies[i].proxyFor(lanes[i].x), lanes[i].last);
+    pose.velocity = (pose.position - lanes[i].last) / def_.dt;
+    lanes[i].last = pose.position;
+    batch.holdProxy(static_cast<int>(i), pose);
   }
+}
+
+bool Autopilot::judgeRolloutTick(RolloutLane& lane, long long tick, bool judge, long long holdTicks) const {
+  Outcome& o = lane.o;
+  if (domain_.domainEvent(0.0, lane.x) != physics::DomainEvent::None || inForbiddenZone(planGoal_, lane.x)) {
+    o.event = true;
+    o.success = false;
+    return true;
+  }
+  lane.k = tick + 1;
+  if (!o.success) {
+    if (judge) scoreBands(lane, tick, holdTicks);
+    else scoreDrift(lane, tick);
+  }
+  return lane.k >= lane.ticks;
+}
+
+// The second half of the horizon: c_up rides a loop per turn of the helix,
+// so its mean, not its last value, says where the drift goes.
+void Autopilot::scoreDrift(RolloutLane& lane, long long tick) const {
+  if (2 * tick < lane.ticks) return;
+  const UprightContact up = uprightContact(constants_, lane.x);
+  lane.meanError += uprightError(up.point);
+  ++lane.meanCount;
+  lane.o.excess = std::max(lane.o.excess, std::max(0.0, std::abs(lane.x[6]) - 1.2) + std::max(0.0, up.tilt - 0.9));
+}
+
+void Autopilot::scoreBands(RolloutLane& lane, long long tick, long long holdTicks) const {
+  Outcome& o = lane.o;
+  const physics::ForceDrivenState& x = lane.x;
+  const double e = normalisedError(planGoal_, x);
+  const double soft = squaredError(planGoal_, x);
+  if (soft < o.softCost) {
+    o.softCost = soft;
+    o.psiError = planGoal_.set[11]
+                     ? std::abs(std::remainder(x[11] - planGoal_.target[11], 2.0 * M_PI)) / planGoal_.tolerance[11]
+                     : 0.0;
+  }
+  lane.inside = e <= 1.0 ? lane.inside + 1 : 0;
+  if (lane.inside > holdTicks) {
+    // Held: but a plan that swings through the bands and tips over a moment
+    // later hands the next stage a wreck, so it must also stay in the domain
+    // for kAfterSuccess more.
+    o.success = true;
+    o.time = static_cast<double>(tick + 1) * def_.dt;
+    lane.ticks = std::min(lane.ticks, tick + 1 + std::llround(kAfterSuccess / def_.dt));
+  }
+}
+
+std::vector<Autopilot::Outcome> Autopilot::rolloutOutcomes(std::vector<RolloutLane>& lanes) {
   std::vector<Outcome> out;
-  out.reserve(n);
-  for (Lane& lane : lanes) {
+  out.reserve(lanes.size());
+  for (RolloutLane& lane : lanes) {
     stats_.rolloutSeconds += static_cast<double>(lane.k) * def_.dt;
     plannedTicks_.fetch_add(lane.k, std::memory_order_relaxed);
     lane.o.meanUprightError = lane.meanCount > 0 ? lane.meanError / static_cast<double>(lane.meanCount) : 1e30;

@@ -47,6 +47,10 @@
 #include "engine/autopilot/PlantModel.h"
 #include "engine/autopilot/Reachability.h"
 
+namespace hemiroll::physics {
+class ForceDrivenBatch;
+}
+
 namespace hemiroll::autopilot {
 
 struct AutopilotDef {
@@ -226,6 +230,19 @@ class Autopilot {
   // of that policy alone through model_ gives, bit for bit.
   std::vector<Outcome> rollouts(std::vector<HelixPolicy> policies, const AutopilotInput& input, double horizon,
                                 bool judge);
+  // rollouts' steps: the lanes started; each lane's proxy for the next tick;
+  // a lane's state judged after a tick (true: the lane is finished), by the
+  // drift of its upright contact (steering) or by the goal's bands (judge);
+  // the outcomes collected.
+  struct RolloutLane;
+  std::vector<RolloutLane> startRollouts(physics::ForceDrivenBatch& batch, std::size_t n, const AutopilotInput& input,
+                                         double horizon);
+  void holdRolloutProxies(physics::ForceDrivenBatch& batch, std::vector<RolloutLane>& lanes,
+                          std::vector<HelixPolicy>& policies) const;
+  bool judgeRolloutTick(RolloutLane& lane, long long tick, bool judge, long long holdTicks) const;
+  void scoreDrift(RolloutLane& lane, long long tick) const;
+  void scoreBands(RolloutLane& lane, long long tick, long long holdTicks) const;
+  std::vector<Outcome> rolloutOutcomes(std::vector<RolloutLane>& lanes);
   Outcome rollout(const HelixPolicy& policy, const AutopilotInput& input, double horizon, bool judge);
   double uprightError(const physics::Vec2& upright) const;
   physics::Vec3 insideWorkspace(const physics::Vec3& p) const;
