@@ -1,0 +1,2 @@
+// The toy window library.
+#include "tests/layers/toy/window/Window.h"

@@ -1,0 +1,2 @@
+// The toy window library: its header.
+struct Window {};
