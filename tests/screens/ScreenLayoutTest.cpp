@@ -12,6 +12,7 @@
 
 #include <chrono>
 #include <cstdlib>
+#include <map>
 #include <string>
 
 #include "engine/platform/KeyNames.h"
@@ -51,12 +52,33 @@ class ScreenLayoutTest : public ::testing::TestWithParam<WindowSize> {
   void settle(App& app, int frames = 3) {
     for (int i = 0; i < frames; ++i) app.frame();
   }
-  void expectClean(const char* screen, const WindowRect* keepClear = nullptr) {
-    const std::vector<std::string> problems = test::layoutProblems(w(), h(), keepClear);
+  // ImGui sizes an auto-resizing panel to the content of the frame before,
+  // so a panel whose content grows this frame (a component leaving its
+  // band, a line wrapping anew, a late-tick note on a busy machine) is cut
+  // for that one frame and fits in the next: 16 ms no player sees. A cut
+  // that lasts is the layout fault, so a problem is reported only when the
+  // same window has the same kind of problem in kFramesChecked frames in a
+  // row (the first is the frame already drawn).
+  static constexpr int kFramesChecked = 3;
+  static std::string problemKind(const std::string& problem) {
+    const std::string window = problem.substr(0, problem.find("' at") + 1);
+    for (const char* kind : {"px wide", "px tall", "is not inside", "covers the hemisphere"})
+      if (problem.find(kind) != std::string::npos) return window + " " + kind;
+    return problem;
+  }
+  void expectClean(App& app, const char* screen, const WindowRect* keepClear = nullptr) {
+    std::map<std::string, int> framesWith;
+    std::vector<std::string> problems;
+    for (int frame = 0; frame < kFramesChecked; ++frame) {
+      if (frame > 0) app.frame();
+      problems = test::layoutProblems(w(), h(), keepClear);
+      for (const std::string& p : problems) ++framesWith[problemKind(p)];
+    }
     std::string all;
-    for (const std::string& p : problems) all += "\n  " + p;
-    EXPECT_TRUE(problems.empty()) << screen << ":" << all << "\nwindows drawn: "
-                                  << ::testing::PrintToString(test::drawnWindows());
+    for (const std::string& p : problems)
+      if (framesWith[problemKind(p)] == kFramesChecked) all += "\n  " + p;
+    EXPECT_TRUE(all.empty()) << screen << ":" << all << "\nwindows drawn: "
+                             << ::testing::PrintToString(test::drawnWindows());
   }
   // Circles of 5 mm (20 px at 0.25 mm/px): enough to put rolling, tilt,
   // the mass point and its speed out of the paper's bands in a second.
@@ -83,17 +105,17 @@ TEST_P(ScreenLayoutTest, MenusWrapTheirTextInsideTheWindow) {
   ASSERT_FALSE(app.notes().empty()) << "no note to lay out";
   settle(app);
   EXPECT_STREQ(app.topScreen(), "title");
-  expectClean("title");
+  expectClean(app, "title");
   app.inject(platform::keyDownEvent("S"));
   settle(app);
   EXPECT_STREQ(app.topScreen(), "settings");
-  expectClean("settings");
+  expectClean(app, "settings");
   app.inject(platform::keyDownEvent("Escape"));
   settle(app);
   app.inject(platform::keyDownEvent("Return"));
   settle(app);
   EXPECT_STREQ(app.topScreen(), "levels");
-  expectClean("levels");
+  expectClean(app, "levels");
 }
 
 // The paper's task played for a while by a scripted mouse: rolling, tilt,
@@ -111,18 +133,18 @@ TEST_P(ScreenLayoutTest, PlayPauseResultsAndReplayKeepTheHemisphereInView) {
   // The hemisphere stands about the middle, a fifth of the width across or more.
   EXPECT_NEAR(ball.x + ball.width / 2, w() / 2, w() * 0.02f);
   EXPECT_GT(ball.width, w() * 0.15f);
-  expectClean("play, before taking hold", &ball);
+  expectClean(app, "play, before taking hold", &ball);
 
   playFor(app, 2.5s);
   settle(app);
   int out = 0;
   for (const AdviceRow& row : play->hud().adviceRows()) out += !row.inside;
   EXPECT_GE(out, 4) << "the hard case needs four groups or more out of their bands";
-  expectClean("play, many out", &play->hud().keepClear());
+  expectClean(app, "play, many out", &play->hud().keepClear());
   app.inject(platform::keyDownEvent("I"));  // the full table
   settle(app);
   ASSERT_TRUE(play->hud().fullTable());
-  expectClean("play, full table", &play->hud().keepClear());
+  expectClean(app, "play, full table", &play->hud().keepClear());
 
   // The pause screen as a safety stop shows it: its longest sentence.
   play->session()->pause();
@@ -132,21 +154,21 @@ TEST_P(ScreenLayoutTest, PlayPauseResultsAndReplayKeepTheHemisphereInView) {
       "hold again (click or Space) to play on."));
   settle(app);
   EXPECT_STREQ(app.topScreen(), "pause");
-  expectClean("pause", &play->hud().keepClear());
+  expectClean(app, "pause", &play->hud().keepClear());
 
   app.inject(platform::keyDownEvent("Q"));
   settle(app, 4);
   auto* results = dynamic_cast<ResultsScreen*>(app.screens().top());
   ASSERT_NE(results, nullptr) << app.topScreen();
   const WindowRect endBall = hemisphereRect(results->ending().scene, w(), h());
-  expectClean("results", &endBall);
+  expectClean(app, "results", &endBall);
 
   app.inject(platform::keyDownEvent("W"));
   settle(app, 10);
   auto* replay = dynamic_cast<ReplayScreen*>(app.screens().top());
   ASSERT_NE(replay, nullptr) << app.topScreen();
   EXPECT_EQ(replay->error(), "");
-  expectClean("replay", &endBall);
+  expectClean(app, "replay", &endBall);
 }
 
 // A tutorial with a message, three plots and the take-hold prompt, then
@@ -161,12 +183,12 @@ TEST_P(ScreenLayoutTest, MessagesAndPromptsFindAFreePlace) {
   ASSERT_NE(play->session(), nullptr) << play->error();
   EXPECT_THAT(play->hud().prompt(), ::testing::HasSubstr("to take hold"));
   EXPECT_FALSE(play->hud().messages(0.0).empty());
-  expectClean("tutorial 3, waiting", &play->hud().keepClear());
+  expectClean(app, "tutorial 3, waiting", &play->hud().keepClear());
   playFor(app, 1.0s);
   app.inject(platform::keyDownEvent("Backspace"));
   settle(app);
   EXPECT_THAT(play->hud().prompt(), ::testing::HasSubstr("take hold again"));
-  expectClean("tutorial 3, let go", &play->hud().keepClear());
+  expectClean(app, "tutorial 3, let go", &play->hud().keepClear());
 }
 
 // The audit itself: a panel of fixed width with a line longer than it, and
