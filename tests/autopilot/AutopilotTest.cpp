@@ -1,7 +1,9 @@
-// engine/autopilot on its own: the invariant it steers by (c_up), the
-// up-front refusals, and closed-loop play against the engine's model as the
-// plant, a shove included. The plant here is the same PlantModel the planner
-// rolls out, driven tick by tick as the servo loop drives it.
+// engine/autopilot/Autopilot on its own: closed-loop play against the
+// engine's model as the plant, a shove included, the refusals it makes in
+// play, and bit-for-bit repetition. Its parts have their own files (Goal,
+// UprightContact, Reachability, PlannerWorker, LandingSearch, HelixPolicy,
+// PlantModel). The plant here is the same PlantModel the planner rolls out,
+// driven tick by tick as the servo loop drives it.
 
 #include "engine/autopilot/Autopilot.h"
 
@@ -14,32 +16,15 @@
 #include <thread>
 #include <cstring>
 
-#include "engine/autopilot/LandingSearch.h"
-#include "engine/autopilot/PlannerWorker.h"
 #include "engine/autopilot/UprightContact.h"
 #include "engine/physics/ForceDrivenSystem.h"
+#include "tests/autopilot/PaperGoal.h"
 
 namespace hemiroll::autopilot {
 namespace {
 
 using physics::Vec3;
-
-// The paper's task (levels/paper_reaching.lua) as a Goal.
-Goal paperGoal() {
-  Goal g;
-  const auto band = [&](int slot, double target, double tol) {
-    g.set[static_cast<std::size_t>(slot)] = true;
-    g.target[static_cast<std::size_t>(slot)] = target;
-    g.tolerance[static_cast<std::size_t>(slot)] = tol;
-  };
-  for (int slot : {0, 1}) band(slot, 0.0, 0.004);
-  for (int slot : {2, 3}) band(slot, 0.0, 0.004);
-  for (int slot : {4, 5, 6}) band(slot, 0.0, 0.01);
-  band(7, -0.04, 0.004);
-  band(8, -0.04, 0.004);
-  for (int slot : {9, 10}) band(slot, 0.0, M_PI / 18);
-  return g;
-}
+using test::paperGoal;
 
 struct Played {
   bool success = false;
@@ -92,94 +77,6 @@ Played play(const Goal& goal, const physics::ForceDrivenState& start, double lim
   out.time = plant.time();
   out.final = plant.state();
   return out;
-}
-
-TEST(UprightContact, AStraightRollKeepsIt) {
-  // Proxy held 1 cm off along x: the hemisphere rolls straight about y by
-  // 0.24 rad and the contact moves 9.4 mm, but c_up stays at the start. On a
-  // great circle the identity is exact; what is left is RK4's error.
-  AutopilotDef def;
-  PlantModel plant(def.params, def.coupling, def.dt);
-  plant.reset(physics::ForceDrivenState::Zero(), 0.0);
-  for (int k = 0; k < 3000; ++k) plant.tick(Vec3(0.01, 0.0, def.params.radius), Vec3::Zero());
-  const UprightContact up = uprightContact(plant.constants(), plant.state());
-  EXPECT_GT(plant.state()[physics::force_slot::u_a], 0.009);
-  EXPECT_GT(up.tilt, 0.2);
-  EXPECT_LT(up.point.norm(), 1e-9);
-}
-
-TEST(UprightContact, UprightItIsTheContactPoint) {
-  physics::ForceDrivenState x = physics::ForceDrivenState::Zero();
-  x[physics::force_slot::u_a] = 0.03;
-  x[physics::force_slot::v_a] = -0.02;
-  x[physics::force_slot::psi] = 1.0;
-  const UprightContact up = uprightContact(physics::ModelConstants(physics::HemisphereParams{}), x);
-  EXPECT_DOUBLE_EQ(up.point.x(), 0.03);
-  EXPECT_DOUBLE_EQ(up.point.y(), -0.02);
-  EXPECT_DOUBLE_EQ(up.tilt, 0.0);
-}
-
-TEST(Goal, ErrorIsTheWorstBandAndPsiWraps) {
-  Goal g;
-  g.set[11] = true;
-  g.target[11] = M_PI - 0.05;
-  g.tolerance[11] = 0.1;
-  physics::ForceDrivenState x = physics::ForceDrivenState::Zero();
-  x[11] = -M_PI + 0.02;  // 0.07 from the target across the seam
-  EXPECT_NEAR(normalisedError(g, x), 0.7, 1e-12);
-  g.omegaNormSet = true;
-  g.omegaNormTolerance = 0.01;
-  x[6] = 0.02;
-  EXPECT_NEAR(normalisedError(g, x), 2.0, 1e-12);
-}
-
-TEST(Goal, ZonesKnowTheirEdge) {
-  Zone circle;
-  circle.centre = {0.01, 0.0};
-  circle.radius = 0.002;
-  EXPECT_NEAR(circle.clearance(physics::Vec2(0.0, 0.0)), 0.008, 1e-15);
-  EXPECT_NEAR(circle.clearance(physics::Vec2(0.01, 0.001)), -0.001, 1e-15);
-  Zone box;
-  box.circle = false;
-  box.min = {0.0, 0.0};
-  box.max = {0.01, 0.02};
-  EXPECT_NEAR(box.clearance(physics::Vec2(0.013, 0.024)), 0.005, 1e-15);  // 3-4-5 from the corner
-  EXPECT_NEAR(box.clearance(physics::Vec2(0.002, 0.01)), -0.002, 1e-15);  // nearest side 2 mm away
-  Goal g;
-  g.zones[0] = circle;
-  g.zoneCount = 1;
-  physics::ForceDrivenState x = physics::ForceDrivenState::Zero();
-  EXPECT_FALSE(inForbiddenZone(g, x));
-  x[physics::force_slot::u_a] = 0.0095;
-  EXPECT_TRUE(inForbiddenZone(g, x));
-}
-
-TEST(Reachability, RefusesWhatCanNeverBeReached) {
-  const physics::HemisphereParams params;
-  Workspace ws;
-  Goal far = paperGoal();
-  far.target[7] = 0.2;  // 20 cm: beyond a 10 cm device
-  EXPECT_NE(unreachableReason(far, params, ws).find("beyond its reach"), std::string::npos);
-
-  Goal rim;
-  rim.set[9] = true;
-  rim.target[9] = 1.7;
-  rim.tolerance[9] = 0.05;
-  EXPECT_NE(unreachableReason(rim, params, ws).find("past the rim"), std::string::npos);
-
-  Goal offFace;
-  offFace.set[0] = true;
-  offFace.target[0] = 0.05;
-  offFace.tolerance[0] = 0.005;
-  EXPECT_NE(unreachableReason(offFace, params, ws).find("off the face"), std::string::npos);
-
-  // At rest tilted by 0.5 rad needs p ~ R sin 0.5 = 19 mm; p held within 4 mm.
-  Goal contradictory = paperGoal();
-  contradictory.target[9] = 0.5;
-  contradictory.tolerance[9] = 0.05;
-  EXPECT_NE(unreachableReason(contradictory, params, ws).find("rest at a tilt"), std::string::npos);
-
-  EXPECT_EQ(unreachableReason(paperGoal(), params, ws), "");
 }
 
 TEST(Autopilot, SolvesThePaperTaskAgainstTheModel) {
@@ -271,147 +168,6 @@ TEST(Autopilot, SameInputsSameProxyBitForBit) {
   const Played b = play(paperGoal(), physics::ForceDrivenState::Zero(), 60.0);
   EXPECT_EQ(a.time, b.time);
   EXPECT_EQ(std::memcmp(a.final.data(), b.final.data(), sizeof(double) * 12), 0);
-}
-
-}  // namespace
-}  // namespace hemiroll::autopilot
-
-namespace hemiroll::autopilot {
-namespace {
-
-TEST(PlannerWorker, RunsOneJobAtATimeAndHandsBackItsDecision) {
-  std::atomic<bool> release{false};
-  PlannerWorker worker([&](const Autopilot::PlanJob& job) {
-    while (!release.load()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
-    Autopilot::Decision d;
-    d.generation = job.generation;
-    d.steer = true;
-    d.steerAngle = job.input.time;
-    return d;
-  });
-  const physics::ModelConstants constants{physics::HemisphereParams{}};
-  HelixPolicy policy(constants, HelixParams{}, 0.001);
-  Autopilot::PlanJob job(policy);
-  job.generation = 7;
-  job.input.time = 1.25;
-  ASSERT_TRUE(worker.post(job));
-  EXPECT_FALSE(worker.post(job));  // busy: refused, not queued
-  Autopilot::Decision d;
-  EXPECT_FALSE(worker.take(d));    // not done yet: take does not wait
-  release = true;
-  for (int i = 0; i < 5000 && !worker.take(d); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(1));
-  EXPECT_EQ(d.generation, 7u);
-  EXPECT_EQ(d.steerAngle, 1.25);
-  EXPECT_TRUE(worker.post(job));   // free again once taken
-}
-
-}  // namespace
-}  // namespace hemiroll::autopilot
-
-namespace hemiroll::autopilot {
-namespace {
-
-// A bowl in the 16 knot coordinates with its floor at 1 mm on every one:
-// success within 0.2 mm of it (the spread starts at 2 mm).
-ShapeScore bowl(const LandingShape& s) {
-  double cost = 0.0, worst = 0.0;
-  for (const physics::Vec2& k : s.knots)
-    for (int c = 0; c < 2; ++c) {
-      const double d = k[c] - 0.001;
-      cost += d * d;
-      worst = std::max(worst, std::abs(d));
-    }
-  return ShapeScore{worst < 2e-4, cost};
-}
-
-TEST(LandingSearch, FindsAShapeNearAnOptimumAndRepeatsItsDrawsPerSeed) {
-  const ScoreShape score = bowl;
-  LandingSearchDef def;
-  def.rounds = 40;
-  def.seed = 3;
-  const std::optional<LandingShape> a = searchLandingShape(def, score);
-  ASSERT_TRUE(a.has_value());
-  EXPECT_NEAR(a->knots[0].x(), 0.001, 2e-4);
-  const std::optional<LandingShape> b = searchLandingShape(def, score);
-  ASSERT_TRUE(b.has_value());
-  EXPECT_EQ(a->knots, b->knots);  // same seed, same draws
-  def.rounds = 1;
-  EXPECT_FALSE(searchLandingShape(def, score).has_value());  // one round from zero cannot get there
-}
-
-TEST(LandingSearch, OutOfTimeEndsTheSearchBeforeTheNextShape) {
-  // The same bowl, solvable in 40 rounds; the clock runs out after five
-  // shapes: a sixth is never scored, and nothing is returned.
-  int scored = 0, asked = 0;
-  const auto score = [&](const LandingShape& s) {
-    ++scored;
-    double cost = 0.0;
-    for (const physics::Vec2& k : s.knots) cost += (k - physics::Vec2(0.001, 0.001)).squaredNorm();
-    return ShapeScore{cost < 1e-12, cost};
-  };
-  LandingSearchDef def;
-  def.rounds = 40;
-  def.outOfTime = [&] { return ++asked > 5; };
-  EXPECT_FALSE(searchLandingShape(def, score).has_value());
-  EXPECT_EQ(scored, 5);
-  EXPECT_EQ(asked, 6);
-}
-
-TEST(LandingSearch, ScoringInBatchesFindsTheSameShapeAndAsksTheClockPerBatch) {
-  // The bowl, scored a batch at a time: the shape found is the
-  // one-at-a-time search's, bit for bit, for any batch size (the draws and
-  // the order of judging do not change); the clock is asked before each
-  // batch.
-  const ScoreShape one = bowl;
-  LandingSearchDef def;
-  def.rounds = 40;
-  def.seed = 3;
-  const std::optional<LandingShape> alone = searchLandingShape(def, one);
-  ASSERT_TRUE(alone.has_value());
-  for (int batch : {2, 5, 8, 32}) {
-    def.batch = batch;
-    std::size_t largest = 0;
-    const std::optional<LandingShape> batched = searchLandingShape(def, [&](const std::vector<LandingShape>& shapes) {
-      largest = std::max(largest, shapes.size());
-      std::vector<ShapeScore> scores;
-      for (const LandingShape& s : shapes) scores.push_back(one(s));
-      return scores;
-    });
-    ASSERT_TRUE(batched.has_value()) << "batch " << batch;
-    EXPECT_EQ(batched->knots, alone->knots) << "batch " << batch;
-    EXPECT_EQ(largest, static_cast<std::size_t>(batch));
-  }
-  int asked = 0;
-  std::size_t scored = 0;
-  def.batch = 8;
-  def.outOfTime = [&] { return ++asked > 2; };
-  EXPECT_FALSE(searchLandingShape(def, [&](const std::vector<LandingShape>& shapes) {
-                 scored += shapes.size();
-                 return std::vector<ShapeScore>(shapes.size());
-               }).has_value());
-  EXPECT_EQ(scored, 16u);  // two batches of 8, then the clock ran out
-  EXPECT_EQ(asked, 3);
-}
-
-TEST(LandingShape, ADefaultShapeIsNoOffsetAtAll) {
-  // Eigen vectors are not zeroed by value-initialisation; a plain landing
-  // (no shape) must add nothing. Built in memory filled with garbage first,
-  // so that a shape that forgot to set its knots shows it.
-  alignas(LandingShape) unsigned char memory[sizeof(LandingShape)];
-  std::memset(memory, 0x5a, sizeof memory);
-  const LandingShape* s = new (memory) LandingShape;  // default-initialised, as `= {}` and members are
-  for (double t = 0.0; t < LandingShape::kKnots * s->spacing; t += 0.05) EXPECT_EQ(s->at(t), physics::Vec2::Zero()) << t;
-  s->~LandingShape();
-}
-
-TEST(LandingShape, IsLinearBetweenKnotsAndZeroAfterTheLast) {
-  LandingShape s;
-  s.knots[0] = physics::Vec2(0.002, 0.0);
-  s.knots[1] = physics::Vec2(0.0, 0.004);
-  EXPECT_NEAR(s.at(0.2).x(), 0.001, 1e-15);  // halfway from knot 0 to knot 1 (0.4 s apart)
-  EXPECT_NEAR(s.at(0.2).y(), 0.002, 1e-15);
-  EXPECT_EQ(s.at(-0.1), physics::Vec2::Zero());
-  EXPECT_EQ(s.at(LandingShape::kKnots * s.spacing + 0.1), physics::Vec2::Zero());
 }
 
 }  // namespace
