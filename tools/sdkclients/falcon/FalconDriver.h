@@ -19,7 +19,9 @@ namespace hemiroll::sdkclients {
 struct FalconDriverDef {
   std::string firmwareFile;       // loaded when the Falcon has none (libnifalcon's firmware folder)
   double homingTimeout = 30.0;    // [s] for the person to move the grip in and out
-  double continuousForce = 8.9;   // [N], Novint's published figure; a profile may say less
+  // [N]: devices/falcon.lua's continuous figure; Novint publishes only a
+  // peak of 8.9 N (more than 2 lbf), which a Falcon cannot hold for long.
+  double continuousForce = 3.0;
 };
 
 class FalconDriver final : public DeviceDriver {
