@@ -230,6 +230,24 @@ void BotScript::init(const BotLevelInfo& info, std::int64_t seed) {
   number("y", info.workspaceCentre[1]);
   number("z", info.workspaceCentre[2]);
   lua_setfield(L, -2, "workspace");
+  if (info.place.inSession) {  // the trial's place in a research session (PROTOCOLS.md)
+    const TrialPlace& p = info.place;
+    lua_newtable(L);
+    auto integer = [&](const char* key, int v) {
+      lua_pushinteger(L, v);
+      lua_setfield(L, -2, key);
+    };
+    integer("index", p.trialIndex);
+    integer("block", p.block);
+    text("block_name", p.blockName);
+    integer("trial_in_block", p.trialInBlock);
+    integer("condition", p.condition);
+    text("condition_label", p.conditionLabel);
+    text("group", p.group);
+    text("guidance", p.guidance);
+    number("guidance_fade", p.guidanceFade);
+    lua_setfield(L, -2, "trial");
+  }
   lua_pushinteger(L, static_cast<lua_Integer>(seed));
   sandbox_->call(2, 0, at);
 }
