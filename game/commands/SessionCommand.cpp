@@ -112,6 +112,12 @@ TrialResult playNext(ResearchSession& session, const SessionOptions& o, script::
       session.recordNext(level.def, playing->rig().loopDef(), "bot", botDeviceSpec());
   playing->rig().record(recording->tap());
   const TrialResult result = playing->run();
+  try {
+    bot->endTrial();  // a Lua bot's level.memory back into the participant's memory
+  } catch (const script::ScriptError& e) {
+    memory = before;
+    std::cerr << "hemiroll session: " << trial.trialId << ": " << e.what() << " (the memory is kept as it was)\n";
+  }
   if (!result.scoreError.empty()) std::cerr << "hemiroll session: " << trial.trialId << ": " << result.scoreError << "\n";
   if (!result.endCallbackError.empty())
     std::cerr << "hemiroll session: " << trial.trialId << ": " << result.endCallbackError << "\n";
