@@ -154,21 +154,21 @@ void ResearchSession::keepAssignment(const SessionManifest& previous) {
 }
 
 void ResearchSession::checkResultsColumns(const SessionManifest& previous) const {
-  std::optional<std::vector<std::string>> found;
+  std::vector<std::string> found;
   try {
     found = record::ResultsFile(folder_ / "results.csv").read().columns;
   } catch (const record::RecordError& e) {
     environment(e.what());
   }
-  if (found->empty() || manifest_.plan.empty()) return;  // no rows yet: nothing to line up with
+  if (found.empty() || manifest_.plan.empty()) return;  // no rows yet: nothing to line up with
   record::ResultsRow row;
   row.extra = resultsFields(manifest_.plan.front(), TrialResult{});
   const std::vector<std::string> wanted = record::ResultsFile::columns(row);
-  if (!found || *found == wanted) return;
+  if (found == wanted) return;
   std::string missing, extra;
   for (const std::string& c : wanted)
-    if (std::find(found->begin(), found->end(), c) == found->end()) missing += (missing.empty() ? "" : ", ") + c;
-  for (const std::string& c : *found)
+    if (std::find(found.begin(), found.end(), c) == found.end()) missing += (missing.empty() ? "" : ", ") + c;
+  for (const std::string& c : found)
     if (std::find(wanted.begin(), wanted.end(), c) == wanted.end()) extra += (extra.empty() ? "" : ", ") + c;
   std::string differences = missing.empty() ? "" : "it lacks " + missing;
   if (!extra.empty()) differences += (differences.empty() ? "it has " : "; it has ") + extra + ", which this version does not write";
