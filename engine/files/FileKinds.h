@@ -27,6 +27,11 @@ inline constexpr FileKind kSidecar{"trial sidecar", 1 * kMiB};
 inline constexpr FileKind kSettings{"settings file", 1 * kMiB};
 // A session's manifest: about 1 kB per planned trial, at most 100 000 trials.
 inline constexpr FileKind kSessionManifest{"session manifest", 256 * kMiB};
+// A lab's participants.tsv: a line per participant, a few columns.
+inline constexpr FileKind kParticipants{"participants file", 16 * kMiB};
+// A session's bot-memory.json: a simulated participant's memory (capped at
+// 64 entries, BotMemory.h) written twice over.
+inline constexpr FileKind kBotMemory{"bot memory", 64 * kKiB};
 // results.csv: about 1 kB per trial row, at most 100 000 trials. Read as a stream.
 inline constexpr FileKind kResults{"results table", 256 * kMiB};
 // A sweep's CSV (sweep.csv, a part, sweep.csv.partial): about 600 bytes per

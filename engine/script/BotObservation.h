@@ -14,6 +14,7 @@
 #include "engine/physics/ForceCoupling.h"
 #include "engine/physics/HemisphereParams.h"
 #include "engine/physics/PlaneZone.h"
+#include "engine/script/BotMemory.h"
 
 namespace hemiroll::script {
 
@@ -67,6 +68,11 @@ struct BotLevelInfo {
   double engageDistance = 0.01;      // the proxy must come this close to the mass point to engage [m]
   double workspaceRadius = 0.1;      // the device's reach about its origin, scene [m] (after mapping)
   Triple3 workspaceCentre{};         // the device origin in the scene [m]
+  // In a research session: the trial's place (block, condition, trial in
+  // block, group, guidance) and the participant's memory across its trials,
+  // which the bot may read and change (nullptr outside a session).
+  TrialPlace place;
+  BotMemory* memory = nullptr;
 };
 
 }  // namespace hemiroll::script

@@ -30,6 +30,11 @@ class BotPolicy {
   virtual void init(const BotLevelInfo& info, std::int64_t seed) = 0;
   // Once per tick. Throws ScriptError on failure.
   virtual BotAction act(const BotObservation& obs) = 0;
+  // After the trial's last tick, in a research session: a bot that keeps
+  // the participant's memory somewhere of its own (a Lua bot's table) hands
+  // it back to BotLevelInfo::memory. Throws ScriptError for a memory that
+  // breaks BotMemory's rules (the memory is then left as it was).
+  virtual void endTrial() {}
   // Non-empty once the bot gives up on the task for a reason it can name
   // (the trial then fails with it); empty otherwise.
   virtual std::string giveUpReason() const { return {}; }

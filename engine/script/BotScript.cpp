@@ -163,7 +163,7 @@ BotScript::BotScript(const std::string& path, const BotLoadOptions& options)
 
 BotScript::~BotScript() {
   lua_State* L = sandbox_->state();
-  for (int ref : {actRef_, initRef_, obsRef_}) luaL_unref(L, LUA_REGISTRYINDEX, ref);
+  for (int ref : {actRef_, initRef_, obsRef_, memoryRef_}) luaL_unref(L, LUA_REGISTRYINDEX, ref);
   for (int ref : views_->nested) luaL_unref(L, LUA_REGISTRYINDEX, ref);
 }
 
@@ -230,8 +230,63 @@ void BotScript::init(const BotLevelInfo& info, std::int64_t seed) {
   number("y", info.workspaceCentre[1]);
   number("z", info.workspaceCentre[2]);
   lua_setfield(L, -2, "workspace");
+  if (info.place.inSession) {  // the trial's place in a research session (PROTOCOLS.md)
+    const TrialPlace& p = info.place;
+    lua_newtable(L);
+    auto integer = [&](const char* key, int v) {
+      lua_pushinteger(L, v);
+      lua_setfield(L, -2, key);
+    };
+    integer("index", p.trialIndex);
+    integer("block", p.block);
+    text("block_name", p.blockName);
+    integer("trial_in_block", p.trialInBlock);
+    integer("condition", p.condition);
+    text("condition_label", p.conditionLabel);
+    text("group", p.group);
+    text("guidance", p.guidance);
+    number("guidance_fade", p.guidanceFade);
+    lua_setfield(L, -2, "trial");
+  }
+  if (info.memory != nullptr) {  // the participant's memory, a plain table the bot may change
+    memory_ = info.memory;
+    lua_newtable(L);
+    for (const auto& [key, value] : info.memory->entries()) number(key.c_str(), value);
+    lua_pushvalue(L, -1);
+    luaL_unref(L, LUA_REGISTRYINDEX, memoryRef_);
+    memoryRef_ = luaL_ref(L, LUA_REGISTRYINDEX);
+    lua_setfield(L, -2, "memory");
+  }
   lua_pushinteger(L, static_cast<lua_Integer>(seed));
   sandbox_->call(2, 0, at);
+}
+
+void BotScript::endTrial() {
+  if (memory_ == nullptr || memoryRef_ == LUA_NOREF) return;
+  lua_State* L = sandbox_->state();
+  const int base = lua_gettop(L);
+  lua_checkstack(L, 4);
+  lua_rawgeti(L, LUA_REGISTRYINDEX, memoryRef_);
+  BotMemory kept;
+  std::string problem;
+  lua_pushnil(L);
+  while (problem.empty() && lua_next(L, -2) != 0) {
+    // Raw reads only: no metamethod of the bot's runs here.
+    if (lua_type(L, -2) != LUA_TSTRING || lua_type(L, -1) != LUA_TNUMBER) {
+      problem = "bot memory: level.memory holds " + describeLuaValue(L, -2) + " = " + describeLuaValue(L, -1) +
+                "; it keeps name = number entries only";
+    } else {
+      try {
+        kept.set(lua_tostring(L, -2), lua_tonumber(L, -1));
+      } catch (const ScriptError& e) {
+        problem = e.what();
+      }
+    }
+    lua_pop(L, 1);
+  }
+  lua_settop(L, base);  // an early stop leaves the key on the stack
+  if (!problem.empty()) throw ScriptError(path_ + ": " + problem);
+  *memory_ = kept;
 }
 
 void BotScript::setTiming(const TrialTiming& timing) { sandbox_->setTiming(timing); }

@@ -63,6 +63,9 @@ class BotScript final : public BotPolicy {
   void init(const BotLevelInfo& info, std::int64_t seed) override;
   // Calls act(obs.time, obs) with obs reading `obs` (only during this call).
   BotAction act(const BotObservation& obs) override;
+  // In a session: level.memory (a table of name = number the bot may change
+  // during the trial) back into the participant's memory.
+  void endTrial() override;
 
  private:
   void buildObservation();
@@ -75,6 +78,8 @@ class BotScript final : public BotPolicy {
   int actRef_ = 0;      // registry references
   int initRef_ = 0;     // LUA_NOREF when the bot has no init
   int obsRef_ = 0;      // the read-only view handed to act
+  int memoryRef_ = -2;  // LUA_NOREF (-2) outside a session: level.memory
+  BotMemory* memory_ = nullptr;
 };
 
 }  // namespace hemiroll::script

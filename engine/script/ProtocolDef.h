@@ -60,6 +60,7 @@ std::string couplingMethodName(const physics::CouplingDef& coupling);
 // merged in; the condition's own win).
 struct ConditionDef {
   std::string label;      // names the condition in results ("M3 alpha 1.5"); default built from the overrides
+  bool labelGiven = false;  // the file wrote the label (a group's changes then keep it)
   std::string level;      // the level file as the protocol writes it
   std::string levelPath;  // where the loader found it (relative to the working directory, or absolute)
   TrialOverrides overrides;
@@ -87,6 +88,39 @@ struct BlockDef {
 // experiment's; the session's participant and session ids follow the same rule).
 bool isFolderName(const std::string& id);
 
+// A group of a between-subjects design (docs/PROTOCOLS.md "Groups"): what
+// it changes in named blocks. Its values win over the block's and its
+// conditions' for every trial of the block.
+struct GroupChange {
+  int block = 0;             // 0-based index into ProtocolDef::blocks
+  TrialOverrides overrides;
+};
+
+struct GroupDef {
+  std::string name;          // a folder-name-like id: names the group in results
+  std::string description;
+  std::vector<GroupChange> changes;
+};
+
+// How a new participant gets a group and a block order.
+enum class Assignment {
+  Balanced,          // by the order participants arrive (the k-th: group k mod G, order (k div G) mod R)
+  ParticipantsFile,  // the participants file's `group` (and `order`) columns
+};
+
+// The condition `condition` of `block` as `group` plays it (nullptr: no
+// group): the group's changes to that block merged over it, and the
+// default label rebuilt from the merged overrides unless the file gave one.
+ConditionDef conditionInGroup(const ConditionDef& condition, int block, const GroupDef* group);
+// The label a condition gets when its file gives none.
+std::string defaultConditionLabel(const TrialOverrides& overrides, const std::string& level);
+
+// Rows of a balanced Latin square (Williams 1949) over n items: every item
+// in every position once, and every item immediately followed by every
+// other once (n rows for an even n; for an odd n, 2n rows: the square and
+// its mirror). Each row is a permutation of 0..n-1.
+std::vector<std::vector<int>> williamsSquare(int n);
+
 struct ProtocolDef {
   std::string source;       // the file as named by the caller, for messages
   std::string experiment;   // required; names the data folder: letters, digits, '-', '_'
@@ -94,6 +128,21 @@ struct ProtocolDef {
   std::string version = "1";
   std::uint64_t seed = 0;   // the randomisation's seed when the session gives none
   std::vector<BlockDef> blocks;  // at least one
+  // Between-subjects design (all optional).
+  std::vector<GroupDef> groups;            // empty: one group, unnamed
+  Assignment assignment = Assignment::Balanced;
+  std::string participantsFile;            // as found ("" = none); required for Assignment::ParticipantsFile
+  std::vector<int> counterbalanced;        // 0-based blocks whose order is counterbalanced, in file order
+
+  // Block orders a participant can get: the Williams square's rows over the
+  // counterbalanced blocks (1 when none).
+  int orderCount() const;
+  // The blocks in the order participant order `order` (1-based) plays them,
+  // as 0-based indices: the counterbalanced blocks permuted among their own
+  // places, every other block where it is.
+  std::vector<int> blockSequence(int order) const;
+  // nullptr when `name` is no group's.
+  const GroupDef* group(const std::string& name) const;
 };
 
 }  // namespace hemiroll::script

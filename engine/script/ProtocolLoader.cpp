@@ -5,7 +5,6 @@
 #include <lua.hpp>
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <optional>
@@ -36,12 +35,6 @@ struct LevelFolders {
   std::string base;    // the protocol's folder
   std::string levels;  // the project's levels folder ("" = none)
 };
-
-std::string shortest(double v) {
-  char text[32];
-  const auto end = std::to_chars(text, text + sizeof text, v).ptr;
-  return std::string(text, end);
-}
 
 std::string shown(const std::string& dir) { return dir.empty() ? "." : dir; }
 
@@ -159,18 +152,6 @@ TrialOverrides merged(const TrialOverrides& block, const TrialOverrides& own) {
   return o;
 }
 
-std::string defaultLabel(const TrialOverrides& o, const std::string& level) {
-  std::string label;
-  auto add = [&](const std::string& part) { label += (label.empty() ? "" : " ") + part; };
-  if (o.method) add(*o.method);
-  if (o.stiffness) add("kr " + shortest(*o.stiffness));
-  if (o.damping) add("kv " + shortest(*o.damping));
-  if (o.alpha) add("alpha " + shortest(*o.alpha));
-  if (o.timeLimit) add("time limit " + shortest(*o.timeLimit) + " s");
-  if (o.guidance && o.guidance->kind != "none") add(o.guidance->kind == "autopilot" ? "guided" : "error augmented");
-  return label.empty() ? fs::path(level).stem().string() : label;
-}
-
 // A list of tables under `key` (positions 1..n, nothing else), at least one.
 int listLength(const LuaTableReader& list, const char* what) {
   const int count = list.entryCount();
@@ -203,7 +184,8 @@ ConditionDef readCondition(const LuaTableReader& table, const TrialOverrides& bl
   } else {
     table.fail("level", "missing; give the level file in the condition or in its block");
   }
-  c.label = table.string("label").value_or(defaultLabel(c.overrides, c.level));
+  c.labelGiven = table.typeOf("label") != LUA_TNIL;
+  c.label = table.string("label").value_or(defaultConditionLabel(c.overrides, c.level));
   if (c.label.empty()) table.fail("label", "must not be empty");
   return c;
 }
@@ -238,7 +220,8 @@ BlockDef readBlock(const LuaTableReader& block, int index, const LevelFolders& f
     c.level = *level;
     c.levelPath = resolveLevel(block, c.level, folders);
     c.overrides = overrides;
-    c.label = block.string("label").value_or(defaultLabel(c.overrides, c.level));
+    c.labelGiven = block.typeOf("label") != LUA_TNIL;
+    c.label = block.string("label").value_or(defaultConditionLabel(c.overrides, c.level));
     if (c.label.empty()) block.fail("label", "must not be empty");
     b.conditions.push_back(std::move(c));
   }
@@ -246,6 +229,73 @@ BlockDef readBlock(const LuaTableReader& block, int index, const LevelFolders& f
   b.randomise = readBool(block, "randomise").value_or(false);
   if (const auto pause = block.table("break_after")) b.breakAfter = readBreak(*pause);
   return b;
+}
+
+
+// The 0-based block named `name`, or fails naming the blocks there are.
+int blockNamed(const LuaTableReader& table, const char* key, const std::string& name, const ProtocolDef& def) {
+  for (std::size_t b = 0; b < def.blocks.size(); ++b)
+    if (def.blocks[b].name == name) return static_cast<int>(b);
+  std::string names;
+  for (const BlockDef& b : def.blocks) names += (names.empty() ? "'" : ", '") + b.name + "'";
+  table.fail(key, "no block named '" + name + "' (the blocks: " + names + ")");
+}
+
+// groups = { { name = ..., description = ..., changes = { { block = NAME, <overrides> }, ... } }, ... }
+std::vector<GroupDef> readGroups(const LuaTableReader& list, const ProtocolDef& def) {
+  std::vector<GroupDef> groups;
+  const int count = listLength(list, "group");
+  for (int i = 1; i <= count; ++i) {
+    const LuaTableReader table = entry(list, i);
+    rejectUnknownLevelKeys(table, {"name", "description", "changes"});
+    GroupDef g;
+    const auto name = table.string("name");
+    if (!name) table.fail("name", "missing; every group needs a name (it names the group in results)");
+    if (!isFolderName(*name))
+      table.fail("name", "'" + *name + "' is not a group name: use 1 to 64 letters, digits, '-' or '_'");
+    for (const GroupDef& other : groups)
+      if (other.name == *name) table.fail("name", "'" + *name + "' names two groups");
+    g.name = *name;
+    g.description = table.string("description").value_or("");
+    if (const auto changes = table.table("changes")) {
+      const int n = listLength(*changes, "change");
+      for (int k = 1; k <= n; ++k) {
+        const LuaTableReader change = entry(*changes, k);
+        rejectUnknownLevelKeys(change, {"block", "method", "kr", "kv", "alpha", "time_limit", "guidance"});
+        const auto block = change.string("block");
+        if (!block) change.fail("block", "missing; the name of the block this change applies to");
+        GroupChange c;
+        c.block = blockNamed(change, "block", *block, def);
+        c.overrides = readOverrides(change);
+        if (c.overrides.empty()) change.fail("", "changes nothing; give method, kr, kv, alpha, time_limit or guidance");
+        g.changes.push_back(std::move(c));
+      }
+    }
+    groups.push_back(std::move(g));
+  }
+  return groups;
+}
+
+// counterbalance = { "block a", "block b", ... }: at least two blocks, each once.
+std::vector<int> readCounterbalance(const LuaTableReader& list, const ProtocolDef& def) {
+  lua_State* L = list.state();
+  const int count = list.entryCount();
+  if (count < 2 || static_cast<int>(lua_rawlen(L, list.index())) != count)
+    list.fail("", "expected a list of at least two block names { \"a\", \"b\" }");
+  std::vector<int> blocks;
+  for (int i = 1; i <= count; ++i) {
+    lua_rawgeti(L, list.index(), i);
+    const bool isText = lua_type(L, -1) == LUA_TSTRING;
+    const std::string name = isText ? lua_tostring(L, -1) : "";
+    lua_pop(L, 1);
+    if (!isText) list.fail(positionKey(i), "expected a block name (a string)");
+    const int b = blockNamed(list, positionKey(i).c_str(), name, def);
+    if (std::find(blocks.begin(), blocks.end(), b) != blocks.end())
+      list.fail(positionKey(i), "'" + name + "' is listed twice");
+    blocks.push_back(b);
+  }
+  std::sort(blocks.begin(), blocks.end());  // their places, in file order
+  return blocks;
 }
 
 // A Lua integer, or a float with a whole value (1e3), from 0 to 2^63 - 1.
@@ -268,7 +318,8 @@ std::uint64_t readSeed(const LuaTableReader& top) {
 }
 
 ProtocolDef readProtocol(const LuaTableReader& top, const LevelFolders& folders) {
-  rejectUnknownLevelKeys(top, {"experiment", "description", "version", "seed", "blocks"});
+  rejectUnknownLevelKeys(top, {"experiment", "description", "version", "seed", "blocks", "groups", "assignment",
+                               "participants", "counterbalance"});
   ProtocolDef def;
   def.source = top.source();
   const auto experiment = top.string("experiment");
@@ -293,6 +344,25 @@ ProtocolDef readProtocol(const LuaTableReader& top, const LevelFolders& folders)
     if (i == count && b.breakAfter)
       block.fail("break_after", "the last block has no block after it (a break goes between blocks)");
   }
+  if (const auto groups = top.table("groups")) def.groups = readGroups(*groups, def);
+  if (const auto counterbalance = top.table("counterbalance")) def.counterbalanced = readCounterbalance(*counterbalance, def);
+  if (const auto participants = top.string("participants")) {
+    std::error_code error;
+    const fs::path written(*participants);
+    const fs::path found = written.is_absolute() ? written : fs::path(folders.base) / written;
+    if (participants->empty() || !fs::is_regular_file(found, error))
+      top.fail("participants", "no participants file '" + *participants + "' (looked in " + shown(folders.base) + ")");
+    def.participantsFile = found.lexically_normal().string();
+  }
+  if (const auto assignment = top.string("assignment")) {
+    oneOf(top, "assignment", *assignment, {"balanced", "participants_file"}, "assignment",
+          "\"balanced\" or \"participants_file\"");
+    def.assignment = *assignment == "balanced" ? Assignment::Balanced : Assignment::ParticipantsFile;
+  }
+  if (def.assignment == Assignment::ParticipantsFile && def.participantsFile.empty())
+    top.fail("assignment", "\"participants_file\" needs the participants file: participants = \"participants.tsv\"");
+  if (def.assignment == Assignment::ParticipantsFile && def.groups.empty())
+    top.fail("assignment", "\"participants_file\" assigns groups, and the protocol has none (groups = { ... })");
   return def;
 }
 

@@ -7,7 +7,7 @@
 namespace hemiroll::script {
 
 const BlockDef& ProtocolPlan::blockOf(const ProtocolDef& protocol, const PlannedTrial& trial) {
-  return protocol.blocks.at(static_cast<std::size_t>(trial.block - 1));
+  return protocol.blocks.at(static_cast<std::size_t>(trial.definedBlock - 1));
 }
 
 const ConditionDef& ProtocolPlan::conditionOf(const ProtocolDef& protocol, const PlannedTrial& trial) {
@@ -20,18 +20,23 @@ const BreakDef* ProtocolPlan::breakBefore(const ProtocolDef& protocol, const Pla
   return previous ? &*previous : nullptr;
 }
 
-ProtocolPlan expandProtocol(const ProtocolDef& protocol, std::uint64_t seed) {
+ProtocolPlan expandProtocol(const ProtocolDef& protocol, std::uint64_t seed, int order) {
   ProtocolPlan plan;
   plan.seed = seed;
   EngineRandom master(seed);
-  for (std::size_t b = 0; b < protocol.blocks.size(); ++b) {
+  std::vector<std::uint64_t> blockSeeds;
+  for (std::size_t b = 0; b < protocol.blocks.size(); ++b) blockSeeds.push_back(master.next());
+  const std::vector<int> sequence = protocol.blockSequence(order);
+  for (std::size_t place = 0; place < sequence.size(); ++place) {
+    const std::size_t b = static_cast<std::size_t>(sequence[place]);
     const BlockDef& block = protocol.blocks[b];
-    EngineRandom random(master.next());
+    EngineRandom random(blockSeeds[b]);
     std::vector<PlannedTrial> trials;
     for (int pass = 1; pass <= block.repetitions; ++pass)
       for (std::size_t c = 0; c < block.conditions.size(); ++c) {
         PlannedTrial t;
-        t.block = static_cast<int>(b) + 1;
+        t.block = static_cast<int>(place) + 1;
+        t.definedBlock = static_cast<int>(b) + 1;
         t.repetition = pass;
         t.condition = static_cast<int>(c) + 1;
         trials.push_back(t);

@@ -22,7 +22,8 @@ namespace hemiroll::script {
 
 struct PlannedTrial {
   int index = 0;          // 1-based position in the session
-  int block = 0;          // 1-based block
+  int block = 0;          // 1-based place of its block in this plan's order
+  int definedBlock = 0;   // 1-based block of the protocol file (differs from `block` under counterbalancing)
   int trialInBlock = 0;   // 1-based position in its block
   int repetition = 0;     // 1-based pass through the block's conditions
   int condition = 0;      // 1-based condition of the block
@@ -36,11 +37,15 @@ struct ProtocolPlan {
   // The trial's block and condition in `protocol` (the one it was expanded from).
   static const BlockDef& blockOf(const ProtocolDef& protocol, const PlannedTrial& trial);
   static const ConditionDef& conditionOf(const ProtocolDef& protocol, const PlannedTrial& trial);
-  // The break to show before `trial`: the previous block's break_after when
-  // the trial opens a block; nullptr otherwise.
+  // The break to show before `trial`: the break_after written at the
+  // previous place when the trial opens a block (breaks belong to the places
+  // between blocks, so counterbalancing moves none); nullptr otherwise.
   static const BreakDef* breakBefore(const ProtocolDef& protocol, const PlannedTrial& trial);
 };
 
-ProtocolPlan expandProtocol(const ProtocolDef& protocol, std::uint64_t seed);
+// `order`: the participant's block order (1-based, ProtocolDef::blockSequence).
+// A block's trial order and seeds do not depend on its place: each block's
+// generator is drawn in the file's block order.
+ProtocolPlan expandProtocol(const ProtocolDef& protocol, std::uint64_t seed, int order = 1);
 
 }  // namespace hemiroll::script

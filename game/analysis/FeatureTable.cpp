@@ -40,30 +40,40 @@ std::string notesOf(const AnalysedTrial& t) {
 
 }  // namespace
 
+std::vector<std::string> featureColumns() {
+  return {"duration_s", "steady_start_s", "steady_end_s", "steady_rate_rad_per_s",
+          "steady_rate_spread_rad_per_s", "leaves", "leaves_per_cycle", "leaves_per_cycle_spread", "leaf_radius_m",
+          "leaf_radius_spread_m", "outer_radius_m", "outer_radius_spread_m", "rose_start_s", "rose_end_s",
+          "arc_curvature_per_m", "arc_curvature_error_per_m", "arc_rms_residual_m", "drift_speed_m_per_s", "loops",
+          "loop_spacing_s", "loop_spacing_m", "loops_per_leaf", "guidance_work_J", "guidance_opposed_share", "notes"};
+}
+
+std::vector<std::string> featureCells(const AnalysedTrial& t) {
+  const analysis::TrialFeatures& f = t.features;
+  const auto& p = f.phases;
+  const auto& r = f.rose;
+  const auto& a = f.helix.arc;
+  const auto& l = f.helix.loops;
+  auto when = [](bool found, double v) { return found ? number(v) : std::string(); };
+  return {number(p.trial.duration()), when(p.found, p.steady.start), when(p.found, p.steady.end),
+          when(p.found, p.steadyRate), when(p.found, p.steadyRateSpread), r.found ? std::to_string(r.leaves) : "",
+          when(r.found, r.leavesPerCycle), when(r.found, r.leavesPerCycleSpread), when(r.found, r.leafRadius.value),
+          when(r.found, r.leafRadius.spread), when(r.found, r.outerRadius.value), when(r.found, r.outerRadius.spread),
+          when(r.found, r.span.start), when(r.found, r.span.end), when(a.found, a.curvature),
+          when(a.found, a.curvatureError), when(a.found, a.rmsResidual), number(a.driftSpeed),
+          l.found ? std::to_string(l.count) : "", when(l.found, l.spacingTime.value), when(l.found, l.spacingArc.value),
+          when(f.loopsPerLeaf > 0.0, f.loopsPerLeaf), when(t.guidance.present, t.guidance.work),
+          when(t.guidance.present, t.guidance.opposedShare), notesOf(t)};
+}
+
 std::string featureTableCsv(const std::vector<AnalysedTrial>& trials) {
-  std::string out = record::csvLine(
-      {"trial", "source", "duration_s", "steady_start_s", "steady_end_s", "steady_rate_rad_per_s",
-       "steady_rate_spread_rad_per_s", "leaves", "leaves_per_cycle", "leaves_per_cycle_spread", "leaf_radius_m",
-       "leaf_radius_spread_m", "outer_radius_m", "outer_radius_spread_m", "rose_start_s", "rose_end_s",
-       "arc_curvature_per_m", "arc_curvature_error_per_m", "arc_rms_residual_m", "drift_speed_m_per_s", "loops",
-       "loop_spacing_s", "loop_spacing_m", "loops_per_leaf", "guidance_work_J", "guidance_opposed_share", "notes"});
+  std::vector<std::string> header = {"trial", "source"};
+  for (std::string& c : featureColumns()) header.push_back(std::move(c));
+  std::string out = record::csvLine(header);
   for (const AnalysedTrial& t : trials) {
-    const analysis::TrialFeatures& f = t.features;
-    const auto& p = f.phases;
-    const auto& r = f.rose;
-    const auto& a = f.helix.arc;
-    const auto& l = f.helix.loops;
-    auto when = [](bool found, double v) { return found ? number(v) : std::string(); };
-    out += record::csvLine(
-        {t.data.id, t.data.source, number(p.trial.duration()), when(p.found, p.steady.start), when(p.found, p.steady.end),
-         when(p.found, p.steadyRate), when(p.found, p.steadyRateSpread), r.found ? std::to_string(r.leaves) : "",
-         when(r.found, r.leavesPerCycle), when(r.found, r.leavesPerCycleSpread), when(r.found, r.leafRadius.value),
-         when(r.found, r.leafRadius.spread), when(r.found, r.outerRadius.value), when(r.found, r.outerRadius.spread),
-         when(r.found, r.span.start), when(r.found, r.span.end), when(a.found, a.curvature),
-         when(a.found, a.curvatureError), when(a.found, a.rmsResidual), number(a.driftSpeed),
-         l.found ? std::to_string(l.count) : "", when(l.found, l.spacingTime.value), when(l.found, l.spacingArc.value),
-         when(f.loopsPerLeaf > 0.0, f.loopsPerLeaf), when(t.guidance.present, t.guidance.work),
-         when(t.guidance.present, t.guidance.opposedShare), notesOf(t)});
+    std::vector<std::string> row = {t.data.id, t.data.source};
+    for (std::string& c : featureCells(t)) row.push_back(std::move(c));
+    out += record::csvLine(row);
   }
   return out;
 }

@@ -18,6 +18,9 @@ struct AnalysedTrial {
 };
 
 std::string featureTableCsv(const std::vector<AnalysedTrial>& trials);
+// The CSV's columns after `trial` and `source`, and one trial's cells for them.
+std::vector<std::string> featureColumns();
+std::vector<std::string> featureCells(const AnalysedTrial& trial);
 std::string featureTableMarkdown(const std::vector<AnalysedTrial>& trials);
 
 }  // namespace hemiroll::game

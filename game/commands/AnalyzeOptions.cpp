@@ -8,6 +8,7 @@ namespace hemiroll::game {
 
 const char* analyzeUsage() {
   return "usage: hemiroll analyze RECORDING... [--out DIR] [--plots svg|none]\n"
+         "       hemiroll analyze EXPERIMENT_FOLDER [--out DIR] [--plots svg|none]\n"
          "\n"
          "Measures the movement features of Svinin et al. (2009), Sec. 4.2 and 5, in each\n"
          "trial (docs/ANALYSIS.md): the phases (acceleration, steady precession,\n"
@@ -18,6 +19,13 @@ const char* analyzeUsage() {
          "\n"
          "RECORDING is a trial CSV with its JSON sidecar (hemiroll run --record), a\n"
          "session folder (all trials in it) or a `hemiroll sim` CSV.\n"
+         "\n"
+         "EXPERIMENT_FOLDER is <data root>/<experiment> of `hemiroll session` (its\n"
+         "participants' session folders below it): prints each group's trials, success\n"
+         "rate and mean time; with --out writes trials.csv (one row per trial: participant,\n"
+         "group, block, condition, outcome, time, results.csv's measures, the movement\n"
+         "features), learning_curves.csv (per participant and group, by trial and by\n"
+         "block: n, mean, sd) and, with plots, the curves as SVGs (docs/ANALYSIS.md).\n"
          "\n"
          "  --out DIR        write per trial <trial>.analysis.json and, with plots, SVGs\n"
          "                   (<trial>.overview.svg, .contact.svg, .mass_point.svg,\n"

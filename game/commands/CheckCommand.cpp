@@ -1,5 +1,6 @@
 #include "game/commands/CheckCommand.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <exception>
@@ -23,6 +24,7 @@
 #include "game/cli/ArgumentReader.h"
 #include "game/commands/CommandUsage.h"
 #include "game/commands/ExitCode.h"
+#include "game/research/ParticipantsFile.h"
 #include "game/research/ResearchSession.h"
 #include "game/trial/TrialSetup.h"
 
@@ -196,23 +198,40 @@ std::vector<std::string> checkProtocol(const std::string& path) {
   std::vector<std::string> problems;
   const script::ProtocolDef protocol = script::ProtocolLoader().loadFile(path);
   (void)script::expandProtocol(protocol, protocol.seed);
-  for (std::size_t b = 0; b < protocol.blocks.size(); ++b) {
-    const script::BlockDef& block = protocol.blocks[b];
-    for (std::size_t c = 0; c < block.conditions.size(); ++c) {
-      const script::ConditionDef& condition = block.conditions[c];
-      const std::string where = path + ": block " + std::to_string(b + 1) + " (\"" + block.name + "\"), condition " +
-                                std::to_string(c + 1) + " (\"" + condition.label + "\", " + condition.levelPath + ")";
-      try {
-        script::LevelLoadOptions options;
-        options.adjust = [&](script::LevelDef& level) { script::applyTrialOverrides(condition.overrides, level); };
-        script::LoadedLevel level = script::LevelLoader(options).loadFile(condition.levelPath);
-        checkLoadedLevel(level, where, problems);
-        const haptics::GuidanceDef guidance = guidanceOf(condition.overrides, 1);
-        if (const std::string why = haptics::guidanceProblem(guidance, botDeviceSpec()); !why.empty())
-          problems.push_back(where + ": guidance " + why);
-      } catch (const std::exception& e) {
-        problems.push_back(where + ": " + e.what());
+  // Every condition as written, and again as each group that changes its
+  // block plays it.
+  std::vector<const script::GroupDef*> groups = {nullptr};
+  for (const script::GroupDef& g : protocol.groups) groups.push_back(&g);
+  for (const script::GroupDef* group : groups)
+    for (std::size_t b = 0; b < protocol.blocks.size(); ++b) {
+      const script::BlockDef& block = protocol.blocks[b];
+      if (group != nullptr && std::none_of(group->changes.begin(), group->changes.end(), [&](const script::GroupChange& c) {
+            return c.block == static_cast<int>(b);
+          }))
+        continue;
+      for (std::size_t c = 0; c < block.conditions.size(); ++c) {
+        const script::ConditionDef condition = script::conditionInGroup(block.conditions[c], static_cast<int>(b), group);
+        const std::string where = path + ": " + (group ? "group \"" + group->name + "\", " : std::string()) +
+                                  "block " + std::to_string(b + 1) + " (\"" + block.name + "\"), condition " +
+                                  std::to_string(c + 1) + " (\"" + condition.label + "\", " + condition.levelPath + ")";
+        try {
+          script::LevelLoadOptions options;
+          options.adjust = [&](script::LevelDef& level) { script::applyTrialOverrides(condition.overrides, level); };
+          script::LoadedLevel level = script::LevelLoader(options).loadFile(condition.levelPath);
+          checkLoadedLevel(level, where, problems);
+          const haptics::GuidanceDef guidance = guidanceOf(condition.overrides, 1);
+          if (const std::string why = haptics::guidanceProblem(guidance, botDeviceSpec()); !why.empty())
+            problems.push_back(where + ": guidance " + why);
+        } catch (const std::exception& e) {
+          problems.push_back(where + ": " + e.what());
+        }
       }
+    }
+  if (!protocol.participantsFile.empty()) {
+    try {
+      (void)readParticipantsFile(protocol.participantsFile, protocol);
+    } catch (const std::exception& e) {
+      problems.push_back(e.what());
     }
   }
   return problems;

@@ -1,5 +1,7 @@
 #include "game/commands/SessionCommand.h"
 
+#include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -13,7 +15,9 @@
 #include "game/trial/BotTrial.h"
 #include "game/trial/BuiltinBots.h"
 #include "game/trial/JsonLine.h"
+#include "engine/script/ProtocolLoader.h"
 #include "game/research/ResearchSession.h"
+#include "game/research/SessionBotMemory.h"
 #include "game/trial/TrialSetup.h"
 
 namespace hemiroll::game {
@@ -27,7 +31,8 @@ int fail(int code, const std::string& message) {
 
 int exitCodeOf(const SessionError& e) { return e.kind() == SessionError::Kind::BadInput ? kExitUsage : kExitFailure; }
 
-std::string trialLine(const ManifestTrial& t, const TrialResult& r) {
+std::string trialLine(const std::string& participant, const std::string& group, const ManifestTrial& t,
+                      const TrialResult& r) {
   JsonLine line;
   line.add("event", "trial").add("trial", static_cast<long long>(t.index)).add("trial_id", t.trialId);
   line.add("block", static_cast<long long>(t.block)).add("block_name", t.blockName);
@@ -40,6 +45,7 @@ std::string trialLine(const ManifestTrial& t, const TrialResult& r) {
   else
     line.addNull("score");
   line.add("medal", script::medalName(r.medal)).add("ticks", r.ticks).add("wall_time_s", r.wallTime, 6);
+  line.add("participant", participant).add("group", group);
   return line.str();
 }
 
@@ -60,19 +66,41 @@ std::string summaryLine(const ResearchSession& s, const Tally& tally, bool stopp
   return line.str();
 }
 
-// One trial of the session, headless, recorded. Throws SessionError.
-TrialResult playNext(ResearchSession& session, const std::string& botPath) {
+// The trial's place, as a bot's init gets it (BotLevelInfo::place).
+script::TrialPlace placeOf(const ResearchSession& session, const ManifestTrial& t) {
+  script::TrialPlace p;
+  p.inSession = true;
+  p.trialIndex = t.index;
+  p.block = t.block;
+  p.blockName = t.blockName;
+  p.trialInBlock = t.trialInBlock;
+  p.condition = t.condition;
+  p.conditionLabel = t.conditionLabel;
+  p.group = session.manifest().group;
+  p.guidance = haptics::guidanceKindName(t.guidance.kind);
+  p.guidanceFade = t.guidance.kind == haptics::GuidanceKind::None ? 0.0 : t.guidance.scale;
+  return p;
+}
+
+// One trial of the session, headless, recorded; the bot's memory is
+// written before the results row (SessionBotMemory.h). Throws SessionError.
+TrialResult playNext(ResearchSession& session, const SessionOptions& o, script::BotMemory& memory) {
   const ManifestTrial& trial = session.nextTrial();
   script::LoadedLevel level = session.loadNextLevel();
   std::unique_ptr<script::BotPolicy> bot;
   try {
-    bot = makeBot(botPath, trial.seed);
+    BuiltinBotOptions builtin;
+    builtin.human = o.human;
+    bot = makeBot(*o.botPath, trial.seed, builtin);
   } catch (const script::ScriptError& e) {
     throw SessionError(SessionError::Kind::BadInput, e.what());
   }
+  const script::BotMemory before = memory;
   TrialSettings settings;
   settings.seed = trial.seed;
   settings.guidance = trial.guidance;
+  settings.place = placeOf(session, trial);
+  settings.memory = &memory;
   std::unique_ptr<BotTrial> playing;
   try {
     playing = std::make_unique<BotTrial>(level, *bot, settings);
@@ -84,11 +112,62 @@ TrialResult playNext(ResearchSession& session, const std::string& botPath) {
       session.recordNext(level.def, playing->rig().loopDef(), "bot", botDeviceSpec());
   playing->rig().record(recording->tap());
   const TrialResult result = playing->run();
+  try {
+    bot->endTrial();  // a Lua bot's level.memory back into the participant's memory
+  } catch (const script::ScriptError& e) {
+    memory = before;
+    std::cerr << "hemiroll session: " << trial.trialId << ": " << e.what() << " (the memory is kept as it was)\n";
+  }
   if (!result.scoreError.empty()) std::cerr << "hemiroll session: " << trial.trialId << ": " << result.scoreError << "\n";
   if (!result.endCallbackError.empty())
     std::cerr << "hemiroll session: " << trial.trialId << ": " << result.endCallbackError << "\n";
+  writeBotMemory(session.folder(), trial.index, memory, before);
   session.finishNext(*recording, result);
   return result;
+}
+
+// One participant's sitting: every trial to the end or to a stop break.
+// Returns the exit code.
+int runParticipant(const SessionOptions& o, const SessionRequest& request) {
+  Tally tally;
+  try {
+    ResearchSession session(request);
+    if (const std::string problem = session.couplingProblem(botDeviceSpec()); !problem.empty())
+      return fail(kExitUsage, problem);
+    std::string memoryNote;
+    script::BotMemory memory = restoreBotMemory(session.folder(), session.done(), memoryNote);
+    session.begin(*o.botPath);
+    if (!session.lockNote().empty()) std::cerr << "hemiroll session: " << session.lockNote() << "\n";
+    if (!memoryNote.empty()) std::cerr << "hemiroll session: " << memoryNote << "\n";
+    for (const auto& [trialId, reason] : session.interrupted())
+      std::cerr << "hemiroll session: " << trialId << " was " << reason << "; its files were moved aside (*.aborted-N)\n";
+    while (!session.complete() && !session.stopsHere()) {
+      if (const ManifestBreak* pause = session.pendingBreak())
+        std::cerr << "hemiroll session: break before block " << session.nextTrial().block << ": " << pause->message
+                  << " (bots do not rest)\n";
+      const ManifestTrial trial = session.nextTrial();
+      const TrialResult result = playNext(session, o, memory);
+      ++tally.ran;
+      tally.successes += result.outcome == script::TrialOutcome::Success;
+      std::printf("%s\n", trialLine(request.participant, session.manifest().group, trial, result).c_str());
+      std::fflush(stdout);
+    }
+    std::printf("%s\n", summaryLine(session, tally, !session.complete()).c_str());
+    if (!session.complete())
+      std::cerr << "hemiroll session: the sitting ends at a break (" << session.pendingBreak()->message
+                << "); run the same command again to continue\n";
+  } catch (const SessionError& e) {
+    return fail(exitCodeOf(e), e.what());
+  }
+  return kExitOk;
+}
+
+// "sim-01" .. "sim-20": as many digits as N has, at least two.
+std::string cohortId(const std::string& prefix, int k, int n) {
+  const int digits = std::max(2, static_cast<int>(std::to_string(n).size()));
+  std::string number = std::to_string(k);
+  number.insert(0, static_cast<std::size_t>(std::max(0, digits - static_cast<int>(number.size()))), '0');
+  return prefix + "-" + number;
 }
 
 }  // namespace
@@ -115,33 +194,32 @@ int runSessionCommand(const std::vector<std::string>& args) {
   request.session = o.session;
   if (o.dataRoot) request.dataRoot = *o.dataRoot;
   request.seed = o.seed;
-  Tally tally;
-  try {
-    ResearchSession session(request);
-    if (const std::string problem = session.couplingProblem(botDeviceSpec()); !problem.empty())
-      return fail(kExitUsage, problem);
-    session.begin(*o.botPath);
-    if (!session.lockNote().empty()) std::cerr << "hemiroll session: " << session.lockNote() << "\n";
-    for (const auto& [trialId, reason] : session.interrupted())
-      std::cerr << "hemiroll session: " << trialId << " was " << reason << "; its files were moved aside (*.aborted-N)\n";
-    while (!session.complete() && !session.stopsHere()) {
-      if (const ManifestBreak* pause = session.pendingBreak())
-        std::cerr << "hemiroll session: break before block " << session.nextTrial().block << ": " << pause->message
-                  << " (bots do not rest)\n";
-      const ManifestTrial trial = session.nextTrial();
-      const TrialResult result = playNext(session, *o.botPath);
-      ++tally.ran;
-      tally.successes += result.outcome == script::TrialOutcome::Success;
-      std::printf("%s\n", trialLine(trial, result).c_str());
-      std::fflush(stdout);
+  if (o.participants == 0) return runParticipant(o, request);
+
+  // A cohort: participant k with the plan's seed + k - 1, so that each
+  // plays its own shuffles and its own noise.
+  std::uint64_t base = 0;
+  if (o.seed) {
+    base = *o.seed;
+  } else {
+    try {
+      script::ProtocolLoadOptions options;
+      options.levelsDir = o.levelsDir;
+      base = script::ProtocolLoader(options).loadFile(o.protocolPath).seed;
+    } catch (const script::ScriptError& e) {
+      return fail(kExitUsage, e.what());
     }
-    std::printf("%s\n", summaryLine(session, tally, !session.complete()).c_str());
-    if (!session.complete())
-      std::cerr << "hemiroll session: the sitting ends at a break (" << session.pendingBreak()->message
-                << "); run the same command again to continue\n";
-  } catch (const SessionError& e) {
-    return fail(exitCodeOf(e), e.what());
   }
+  const auto start = std::chrono::steady_clock::now();
+  for (int k = 1; k <= o.participants; ++k) {
+    request.participant = cohortId(o.participant, k, o.participants);
+    request.seed = (base + static_cast<std::uint64_t>(k - 1)) & 0x7fffffffffffffffULL;
+    if (const int code = runParticipant(o, request); code != kExitOk) return code;
+  }
+  JsonLine line;
+  line.add("event", "cohort").add("participants", static_cast<long long>(o.participants));
+  line.add("wall_time_s", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 3);
+  std::printf("%s\n", line.str().c_str());
   return kExitOk;
 }
 

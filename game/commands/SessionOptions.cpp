@@ -1,12 +1,16 @@
 #include "game/commands/SessionOptions.h"
 
 #include "game/cli/ArgumentReader.h"
+#include "game/commands/HumanFlags.h"
+
+#include <string>
 
 namespace hemiroll::game {
 
 const char* sessionUsage() {
-  return "usage: hemiroll session PROTOCOL.lua --participant ID [--session ID] [--data DIR]\n"
+  static const std::string text = std::string("usage: hemiroll session PROTOCOL.lua --participant ID [--session ID] [--data DIR]\n"
          "                        [--bot BOT.lua] [--seed N] [--levels DIR]\n"
+         "       hemiroll session PROTOCOL.lua --participants N --bot BOT [--participant PREFIX] ...\n"
          "\n"
          "Runs a research protocol (docs/PROTOCOLS.md) for one participant: every trial of\n"
          "its plan is recorded into DIR/<experiment>/<participant>/<session>/ (trial CSV +\n"
@@ -24,12 +28,18 @@ const char* sessionUsage() {
          "                    default: the protocol's; a resumed session keeps its own)\n"
          "  --levels DIR      where level files are looked for after the protocol's folder\n"
          "                    (default: the folder named levels that holds the protocol)\n"
+         "  --participants N  a cohort: N simulated participants PREFIX-01 .. PREFIX-N (PREFIX:\n"
+         "                    --participant, default sim), one after the other, participant k\n"
+         "                    with the plan's seed + k - 1; each gets its group and block order\n"
+         "                    as the protocol assigns them (1 .. 1000; needs --bot)\n"
+         ) + kHumanFlagsUsage + std::string(
          "  --help            print this help\n"
          "\n"
          "Exit codes: 0 the session ran to its end or to a break that ends the sitting\n"
          "(trial failures are data, not errors), 1 the data could not be written or the\n"
          "session folder is inconsistent, 2 bad input (a flag, a protocol, level or bot\n"
-         "that cannot be loaded, a protocol changed since the session started, no --bot).\n";
+         "that cannot be loaded, a protocol changed since the session started, no --bot).\n");
+  return text.c_str();
 }
 
 SessionOptionsResult parseSessionOptions(const std::vector<std::string>& args) {
@@ -44,11 +54,18 @@ SessionOptionsResult parseSessionOptions(const std::vector<std::string>& args) {
       .option("--data", cli::text(o.dataRoot, "a directory"))
       .option("--bot", cli::text(o.botPath, "a bot file"))
       .option("--levels", cli::text(o.levelsDir, "a directory"))
+      .option("--participants", cli::integerIn(o.participants, 1, 1000, "a number of participants from 1 to 1000"))
       // Lua integers are signed 64-bit, and the plan's trial seeds reach bots as one.
       .option("--seed", cli::unsignedUpTo(o.seed, 0x7fffffffffffffffULL, "a whole number from 0 to 9223372036854775807"));
+  std::string device;
+  addHumanFlags(reader, o.human, device);
   result.error = reader.read(args);
   if (!result.error.empty() || o.help) return result;
+  result.error = checkHumanFlags(o.human, device);
+  if (!result.error.empty()) return result;
   if (o.protocolPath.empty()) result.error = "missing the protocol file";
+  else if (o.participants > 0 && !o.botPath) result.error = "--participants needs --bot: a cohort is simulated participants";
+  else if (o.participants > 0 && o.participant.empty()) o.participant = "sim";
   else if (o.participant.empty()) result.error = "missing --participant ID";
   return result;
 }

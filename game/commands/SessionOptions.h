@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "game/trial/HumanBot.h"
+
 namespace hemiroll::game {
 
 struct SessionOptions {
@@ -16,6 +18,11 @@ struct SessionOptions {
   std::optional<std::string> botPath;      // --bot: without it, people play in the game window
   std::optional<std::uint64_t> seed;       // --seed: 0 .. 2^63 - 1 (default: the protocol's)
   std::string levelsDir;                   // --levels DIR ("" = the folder named levels above the protocol)
+  // --participants N: a cohort of N simulated participants, <ID>-01 ..
+  // <ID>-N (ID: --participant, default "sim"), one after the other, each
+  // with the plan's seed plus its number less one.
+  int participants = 0;                    // 0: one participant (--participant)
+  HumanBotOptions human;                   // --human-* (HumanFlags.h)
   bool help = false;
 };
 

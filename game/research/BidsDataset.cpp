@@ -1,6 +1,7 @@
 #include "game/research/BidsDataset.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <exception>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -11,7 +12,10 @@
 #include "engine/record/DurableFile.h"
 #include "engine/record/RecordError.h"
 #include "engine/record/RecordingReader.h"
+#include "engine/record/ResultsFile.h"
 #include "engine/record/TrialMeta.h"
+#include "engine/files/FileKinds.h"
+#include "game/research/SessionManifest.h"
 
 namespace hemiroll::game {
 
@@ -23,8 +27,34 @@ constexpr const char* kBidsVersion = "1.9.0";
 
 // The trial's place in the protocol, as the session wrote it into the
 // sidecar's `extra`, in the events file's column order.
-constexpr const char* kProtocolColumns[] = {"block", "block_name", "trial_in_block", "repetition", "condition",
-                                            "condition_label"};
+constexpr const char* kProtocolColumns[] = {"group", "block", "block_name", "trial_in_block", "repetition",
+                                            "condition", "condition_label"};
+
+// What participants.tsv says of a participant, from their session manifest.
+struct ParticipantFacts {
+  std::string group;
+  int blockOrder = 0;  // 0 = unknown (no manifest)
+  record::Fields info;
+};
+
+// The stage times [s] results.csv gives each trial of a session ("" when
+// it has none, or no results.csv).
+std::map<std::string, std::string> stageTimesOf(const fs::path& session) {
+  std::map<std::string, std::string> out;
+  try {
+    const record::ResultsTable table = record::ResultsFile(session / "results.csv").read();
+    std::size_t trial = 0, times = table.columns.size();
+    for (std::size_t c = 0; c < table.columns.size(); ++c) {
+      if (table.columns[c] == "trial") trial = c;
+      if (table.columns[c] == "stage_times_s") times = c;
+    }
+    if (times == table.columns.size()) return out;
+    for (const auto& row : table.rows) out[row[trial]] = row[times];
+  } catch (const std::exception&) {
+    // Without a readable results.csv the events carry the trial alone.
+  }
+  return out;
+}
 
 std::string extraOf(const record::TrialMeta& meta, const std::string& key) {
   for (const auto& [k, v] : meta.extra)
@@ -71,32 +101,48 @@ Entities entitiesOf(const std::string& stem) {
   return e;
 }
 
-std::string eventsTsv(const record::Recording& r) {
+std::string eventsTsv(const record::Recording& r, const std::string& stageTimes) {
   std::string out = "onset\tduration\ttrial_type";
   for (const char* c : kProtocolColumns) {
     out += '\t';
     out += c;
   }
-  out += "\tlevel\tguidance\tguidance_fade\toutcome\treason\n";
+  out += "\tlevel\tguidance\tguidance_fade\toutcome\treason\tstage\n";
   // From the first sample to the last, as the motion file's RecordingDuration.
-  const double duration = r.rows.empty() ? 0.0 : r.rows.back().time - r.rows.front().time;
+  const double first = r.rows.empty() ? 0.0 : r.rows.front().time;
+  const double duration = r.rows.empty() ? 0.0 : r.rows.back().time - first;
   const bool guided = r.meta.guidance.kind != haptics::GuidanceKind::None;
-  std::vector<std::string> row = {"0", number(duration), "trial"};
-  for (const char* c : kProtocolColumns) row.push_back(cell(extraOf(r.meta, c)));
-  row.push_back(cell(r.meta.levelName));
-  row.push_back(haptics::guidanceKindName(r.meta.guidance.kind));
-  row.push_back(guided ? number(r.meta.guidance.scale) : std::string("n/a"));
-  row.push_back(cell(r.status.end->outcome));
-  row.push_back(cell(r.status.end->reason));
-  for (std::size_t i = 0; i < row.size(); ++i) {
-    if (i > 0) out += '\t';
-    out += row[i];
+  std::vector<std::string> protocol;
+  for (const char* c : kProtocolColumns) protocol.push_back(cell(extraOf(r.meta, c)));
+  protocol.push_back(cell(r.meta.levelName));
+  protocol.push_back(haptics::guidanceKindName(r.meta.guidance.kind));
+  protocol.push_back(guided ? number(r.meta.guidance.scale) : std::string("n/a"));
+  const auto line = [&](const std::string& onset, const std::string& length, const std::string& type,
+                        const std::string& outcome, const std::string& reason, const std::string& stage) {
+    out += onset + '\t' + length + '\t' + type;
+    for (const std::string& c : protocol) out += '\t' + c;
+    out += '\t' + outcome + '\t' + reason + '\t' + stage + '\n';
+  };
+  line("0", number(duration), "trial", cell(r.status.end->outcome), cell(r.status.end->reason), "n/a");
+  // Each stage passed, when the judge passed it (results.csv's
+  // stage_times_s, trial time), as an instant on the recording's clock.
+  int stage = 0;
+  for (std::size_t start = 0; start < stageTimes.size();) {
+    std::size_t end = stageTimes.find(';', start);
+    if (end == std::string::npos) end = stageTimes.size();
+    const std::string text = stageTimes.substr(start, end - start);
+    start = end + 1;
+    ++stage;
+    char* stop = nullptr;
+    const double t = std::strtod(text.c_str(), &stop);
+    if (text.empty() || stop != text.c_str() + text.size()) continue;
+    line(number(std::max(0.0, t - first)), "0", "stage_passed", "n/a", "n/a", std::to_string(stage));
   }
-  out += '\n';
   return out;
 }
 
-void writeTopFiles(const fs::path& out, const std::string& name, const std::vector<std::string>& participants) {
+void writeTopFiles(const fs::path& out, const std::string& name, const std::vector<std::string>& participants,
+                   const std::map<std::string, ParticipantFacts>& facts) {
   nlohmann::ordered_json d;
   d["Name"] = name;
   d["BIDSVersion"] = kBidsVersion;
@@ -105,11 +151,36 @@ void writeTopFiles(const fs::path& out, const std::string& name, const std::vect
       {{{"Name", "hemiroll"}, {"Version", record::softwareVersion()},
         {"Description", "hemiroll bids: session folders exported as BIDS motion"}}});
   record::writeFileAtomically(out / "dataset_description.json", d.dump(2) + "\n");
-  std::string tsv = "participant_id\n";
-  for (const std::string& p : participants) tsv += p + "\n";
+  // The lab's own columns (the participants file's), in the order first met.
+  std::vector<std::string> labColumns;
+  for (const auto& [subject, f] : facts)
+    for (const auto& [key, value] : f.info)
+      if (std::find(labColumns.begin(), labColumns.end(), key) == labColumns.end()) labColumns.push_back(key);
+  std::string tsv = "participant_id\tgroup\tblock_order";
+  for (const std::string& c : labColumns) tsv += '\t' + cell(c);
+  tsv += '\n';
+  for (const std::string& p : participants) {
+    const auto found = facts.find(p);
+    const ParticipantFacts none;
+    const ParticipantFacts& f = found == facts.end() ? none : found->second;
+    tsv += p + '\t' + cell(f.group) + '\t' + (f.blockOrder > 0 ? std::to_string(f.blockOrder) : "n/a");
+    for (const std::string& c : labColumns) {
+      std::string value;
+      for (const auto& [key, v] : f.info)
+        if (key == c) value = v;
+      tsv += '\t' + cell(value);
+    }
+    tsv += '\n';
+  }
   record::writeFileAtomically(out / "participants.tsv", tsv);
   nlohmann::ordered_json pj;
   pj["participant_id"] = {{"Description", "the participant id of the hemiroll session, letters and digits only"}};
+  pj["group"] = {{"Description", "the protocol's group the participant was assigned to (session.json's group)"}};
+  pj["block_order"] = {{"Description",
+                        "the participant's block order: the row (1-based) of the protocol's balanced Latin square "
+                        "over its counterbalanced blocks (1 when none are)"}};
+  for (const std::string& c : labColumns)
+    pj[c] = {{"Description", "from the lab's participants file (column '" + c + "'), as written there"}};
   record::writeFileAtomically(out / "participants.json", pj.dump(2) + "\n");
   record::writeFileAtomically(
       out / "README",
@@ -155,6 +226,8 @@ BidsDatasetReport writeBidsDataset(const std::vector<fs::path>& sessions, const 
     fs::path csv;
     std::string stem;
     Entities entities;
+    ParticipantFacts facts;
+    std::string stageTimes;
   };
   std::vector<Planned> planned;
   std::map<std::string, fs::path> taken;  // stem -> the trial it came from
@@ -162,6 +235,15 @@ BidsDatasetReport writeBidsDataset(const std::vector<fs::path>& sessions, const 
   for (const fs::path& session : sessions) {
     const fs::path canonical = fs::weakly_canonical(session, ec);
     if (!seen.insert(ec ? session : canonical).second) continue;  // the same folder given twice
+    ParticipantFacts sessionFacts;
+    try {
+      const SessionManifest m = SessionManifest::fromJson(
+          record::readWholeFile(session / "session.json", files::kSessionManifest), (session / "session.json").string());
+      sessionFacts = {m.group, m.blockOrder, m.participantInfo};
+    } catch (const std::exception&) {
+      // Without a readable manifest the participant's row says n/a.
+    }
+    const std::map<std::string, std::string> stageTimes = stageTimesOf(session);
     std::vector<fs::path> trials;
     for (const auto& entry : fs::directory_iterator(session, ec)) {
       const std::string name = entry.path().filename().string();
@@ -191,6 +273,8 @@ BidsDatasetReport writeBidsDataset(const std::vector<fs::path>& sessions, const 
         continue;
       }
       p.entities = entitiesOf(p.stem);
+      p.facts = sessionFacts;
+      if (const auto found = stageTimes.find(csv.stem().string()); found != stageTimes.end()) p.stageTimes = found->second;
       const auto [at, fresh] = taken.emplace(p.stem, csv);
       if (!fresh)
         throw BidsInputError(csv.string() + " and " + at->second.string() + " would both be " + p.stem +
@@ -202,15 +286,17 @@ BidsDatasetReport writeBidsDataset(const std::vector<fs::path>& sessions, const 
   fs::create_directories(out, ec);
   if (ec) throw record::RecordError(out.string() + ": cannot create: " + ec.message());
   std::set<std::string> participants;
+  std::map<std::string, ParticipantFacts> facts;
   for (const Planned& p : planned) {
     const fs::path dir = out / p.entities.subject / p.entities.session / "motion";
     record::BidsExport::write(p.recording, dir);
-    record::writeFileAtomically(dir / (p.entities.eventsStem + "_events.tsv"), eventsTsv(p.recording));
+    record::writeFileAtomically(dir / (p.entities.eventsStem + "_events.tsv"), eventsTsv(p.recording, p.stageTimes));
     participants.insert(p.entities.subject);
+    if (p.facts.blockOrder > 0) facts.emplace(p.entities.subject, p.facts);
     ++report.trials;
   }
   report.participants.assign(participants.begin(), participants.end());
-  writeTopFiles(out, datasetName, report.participants);
+  writeTopFiles(out, datasetName, report.participants, facts);
   return report;
 }
 

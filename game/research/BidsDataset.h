@@ -2,12 +2,15 @@
 // A BIDS dataset (BIDS 1.9, "Motion") from session folders: what `hemiroll
 // bids` writes (issue 30).
 //   DIR/dataset_description.json, README, participants.tsv, participants.json
+//       (participant_id, group, block_order and the lab's participants-file
+//       columns, from each session's manifest)
 //   DIR/sub-<p>/[ses-<s>/]motion/<stem>_motion.tsv, _channels.tsv, _motion.json
 //       (record::BidsExport, one set per trial)
 //   DIR/sub-<p>/[ses-<s>/]motion/sub-<p>[_ses-<s>]_task-<t>_run-<n>_events.tsv
 //       onset, duration, trial_type and the trial's place in the protocol
-//       (block, condition, trial in block, guidance and its fade) and its
-//       outcome, from the sidecar.
+//       (group, block, condition, trial in block, guidance and its fade) and
+//       its outcome, from the sidecar; then a stage_passed row per stage
+//       passed, at its time in results.csv's stage_times_s.
 // A trial that did not finish (no outcome in its sidecar, or a CSV cut
 // short) is left out and named in `leftOut`, never exported as if whole.
 // Knows the session folder's layout (PROTOCOLS.md); not the window.

@@ -1,5 +1,6 @@
 #include "game/research/ResearchSession.h"
 
+#include <algorithm>
 #include <map>
 
 #include "engine/files/PrintableName.h"
@@ -11,6 +12,8 @@
 #include "engine/script/ProtocolLoader.h"
 #include "engine/script/ProtocolPlan.h"
 #include "engine/script/ScriptError.h"
+#include "game/research/GroupAssignment.h"
+#include "game/research/ParticipantsFile.h"
 #include "game/trial/ReplayCapture.h"
 #include "game/research/SessionFolder.h"
 #include "game/research/SessionResume.h"
@@ -88,6 +91,16 @@ ResearchSession::ResearchSession(const SessionRequest& request) {
     badInput("session '" + request.session + "' of participant '" + request.participant + "' was started with seed " +
              std::to_string(previous->seed) + ", not " + std::to_string(*request.seed) +
              "; leave --seed out to resume it, or start a new session");
+  if (previous) {
+    keepAssignment(*previous);
+  } else {
+    const ParticipantAssignment a =
+        assignParticipant(protocol_, folder_.parent_path().parent_path(), request.participant, request.session);
+    manifest_.group = a.group;
+    manifest_.blockOrder = a.order;
+    manifest_.assignedBy = a.how;
+    manifest_.participantInfo = a.info;
+  }
   buildPlan(request, previous ? previous->seed : request.seed.value_or(protocol_.seed));
   if (!previous) return;
 
@@ -98,7 +111,8 @@ ResearchSession::ResearchSession(const SessionRequest& request) {
   const std::vector<std::pair<std::string, script::TrialOverrides>> current = std::move(trials_);
   manifest_ = *previous;
   trials_ = current;
-  const ResumePoint point = findResumePoint(folder_, manifest_.plan);
+  const ResumePoint point = findResumePoint(folder_, manifest_.plan);  // results.csv checked readable
+  checkResultsColumns(*previous);
   done_ = kept_ = point.done;
   interrupted_ = point.interrupted;
 }
@@ -118,8 +132,57 @@ haptics::GuidanceDef guidanceOf(const script::TrialOverrides& overrides, int tri
   return g;
 }
 
+void ResearchSession::keepAssignment(const SessionManifest& previous) {
+  const std::string which = "session '" + previous.session + "' of participant '" + previous.participant + "'";
+  if (!previous.group.empty() && protocol_.group(previous.group) == nullptr)
+    badInput(which + " is in group '" + previous.group + "', which the protocol no longer has");
+  if (protocol_.assignment == script::Assignment::ParticipantsFile) {
+    const ParticipantsTable table = readParticipantsFile(protocol_.participantsFile, protocol_);
+    const ParticipantRow* row = table.find(previous.participant);
+    if (row == nullptr)
+      badInput("participant '" + previous.participant + "' is no longer in " + protocol_.participantsFile + ", and " +
+               which + " started in group '" + previous.group + "'; put their line back to resume it");
+    if (row->group != previous.group)
+      badInput(protocol_.participantsFile + ":" + std::to_string(row->line) + ": column 'group': '" + row->group +
+               "', but " + which + " started in group '" + previous.group +
+               "'; a participant keeps their group: correct the file, or start a new participant id");
+  }
+  manifest_.group = previous.group;
+  manifest_.blockOrder = previous.blockOrder;
+  manifest_.assignedBy = previous.assignedBy;
+  manifest_.participantInfo = previous.participantInfo;
+}
+
+void ResearchSession::checkResultsColumns(const SessionManifest& previous) const {
+  std::vector<std::string> found;
+  try {
+    found = record::ResultsFile(folder_ / "results.csv").read().columns;
+  } catch (const record::RecordError& e) {
+    environment(e.what());
+  }
+  if (found.empty() || manifest_.plan.empty()) return;  // no rows yet: nothing to line up with
+  record::ResultsRow row;
+  row.extra = resultsFields(manifest_.plan.front(), TrialResult{});
+  const std::vector<std::string> wanted = record::ResultsFile::columns(row);
+  if (found == wanted) return;
+  std::string missing, extra;
+  for (const std::string& c : wanted)
+    if (std::find(found.begin(), found.end(), c) == found.end()) missing += (missing.empty() ? "" : ", ") + c;
+  for (const std::string& c : found)
+    if (std::find(wanted.begin(), wanted.end(), c) == wanted.end()) extra += (extra.empty() ? "" : ", ") + c;
+  std::string differences = missing.empty() ? "" : "it lacks " + missing;
+  if (!extra.empty()) differences += (differences.empty() ? "it has " : "; it has ") + extra + ", which this version does not write";
+  if (differences.empty()) differences = "the same columns in another order";
+  badInput((folder_ / "results.csv").string() + " of session '" + previous.session + "' of participant '" +
+           previous.participant + "' was started by hemiroll " + previous.softwareVersion +
+           " with other columns than this version writes (" + differences +
+           "): rows of the two would not line up, so this version cannot resume it. Finish the session with the "
+           "version that started it, or start a new session (--session with a new id) to run the protocol afresh");
+}
+
 void ResearchSession::buildPlan(const SessionRequest& request, std::uint64_t seed) {
-  const script::ProtocolPlan plan = script::expandProtocol(protocol_, seed);
+  const script::ProtocolPlan plan = script::expandProtocol(protocol_, seed, manifest_.blockOrder);
+  const script::GroupDef* group = protocol_.group(manifest_.group);
   manifest_.experiment = protocol_.experiment;
   manifest_.description = protocol_.description;
   // Paths as text (JSON, CSV): a name that is not UTF-8 is shown with \xNN.
@@ -129,7 +192,8 @@ void ResearchSession::buildPlan(const SessionRequest& request, std::uint64_t see
   manifest_.seed = seed;
   std::map<std::string, LevelFacts> levels;
   for (const script::PlannedTrial& p : plan.trials) {
-    const script::ConditionDef& condition = script::ProtocolPlan::conditionOf(protocol_, p);
+    const script::ConditionDef condition =
+        script::conditionInGroup(script::ProtocolPlan::conditionOf(protocol_, p), p.definedBlock - 1, group);
     auto found = levels.find(condition.levelPath);
     if (found == levels.end()) found = levels.emplace(condition.levelPath, factsOf(condition.levelPath, request.loadLimits)).first;
     const LevelFacts& level = found->second;
@@ -157,6 +221,7 @@ void ResearchSession::buildPlan(const SessionRequest& request, std::uint64_t see
       t.breakBefore = ManifestBreak{b->message, b->minDuration, b->stop};
     manifest_.plan.push_back(std::move(t));
     trials_.emplace_back(condition.levelPath, condition.overrides);
+    definedBlocks_.push_back(p.definedBlock);
   }
 }
 
@@ -223,7 +288,8 @@ const std::string& ResearchSession::lockNote() const {
 }
 
 const std::string& ResearchSession::instructionsOf(const ManifestTrial& trial) const {
-  return protocol_.blocks.at(static_cast<std::size_t>(trial.block - 1)).instructions;
+  return protocol_.blocks.at(static_cast<std::size_t>(definedBlocks_.at(static_cast<std::size_t>(trial.index - 1)) - 1))
+      .instructions;
 }
 
 const ManifestBreak* ResearchSession::pendingBreak() const {
@@ -286,6 +352,7 @@ std::unique_ptr<TrialRecording> ResearchSession::recordNext(const script::LevelD
   def.deviceName = deviceName;
   def.deviceSpec = spec;
   def.sidecarExtra = {{"experiment", manifest_.experiment},  {"protocol_file", manifest_.protocolFile},
+                      {"group", manifest_.group},             {"block_order", std::to_string(manifest_.blockOrder)},
                       {"trial_index", std::to_string(t.index)}, {"block", std::to_string(t.block)},
                       {"block_name", t.blockName},            {"trial_in_block", std::to_string(t.trialInBlock)},
                       {"repetition", std::to_string(t.repetition)}, {"condition", std::to_string(t.condition)},
@@ -320,7 +387,9 @@ void ResearchSession::finishNext(TrialRecording& recording, const TrialResult& r
 }
 
 record::Fields ResearchSession::resultsFields(const ManifestTrial& t, const TrialResult& result) const {
-  record::Fields extra = {{"trial_index", std::to_string(t.index)},
+  record::Fields extra = {{"group", manifest_.group},
+                          {"block_order", std::to_string(manifest_.blockOrder)},
+                          {"trial_index", std::to_string(t.index)},
                           {"block", std::to_string(t.block)},
                           {"block_name", t.blockName},
                           {"trial_in_block", std::to_string(t.trialInBlock)},

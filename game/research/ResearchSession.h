@@ -109,6 +109,11 @@ class ResearchSession {
   record::Fields resultsFields(const ManifestTrial& t, const TrialResult& result) const;
   void buildPlan(const SessionRequest& request, std::uint64_t seed);
   void checkAgainst(const SessionManifest& previous) const;
+  // The resumed session's group and order (checked against the participants file).
+  void keepAssignment(const SessionManifest& previous);
+  // Refuses a results.csv whose header is not this version's (a session
+  // begun by a version that wrote other columns), saying why and what to do.
+  void checkResultsColumns(const SessionManifest& previous) const;
 
   script::ProtocolDef protocol_;
   SessionManifest manifest_;
@@ -119,6 +124,7 @@ class ResearchSession {
   std::vector<std::pair<std::string, std::string>> interrupted_;
   // Per planned trial: the level file as found now and the protocol's overrides.
   std::vector<std::pair<std::string, script::TrialOverrides>> trials_;
+  std::vector<int> definedBlocks_;  // per planned trial: its block in the protocol file (1-based)
   std::unique_ptr<SessionLock> lock_;
 };
 

@@ -6,6 +6,7 @@
 //     results.csv                   one row per finished trial
 //     trial-001.csv, trial-001.json the trials' recordings (docs/RECORDING.md)
 //     trial-002.csv.aborted-1 ...   an interrupted trial's files, moved aside
+//     bot-memory.json               a bot's memory across trials (SessionBotMemory.h)
 //
 // The ids name folders, so they are 1 to 64 letters, digits, '-' or '_'
 // (no '.', no '/': nothing can point outside the data root).

@@ -90,6 +90,11 @@ std::string SessionManifest::toJson() const {
   j["protocol"] = {{"file", protocolFile}, {"hash", protocolHash}, {"version", protocolVersion}};
   j["participant"] = participant;
   j["session"] = session;
+  j["group"] = group;
+  j["block_order"] = blockOrder;
+  j["assigned_by"] = assignedBy;
+  j["participant_info"] = json::object();
+  for (const auto& [key, value] : participantInfo) j["participant_info"][key] = value;
   j["seed"] = seed;
   j["start_time"] = startTime;
   j["software"] = {{"version", softwareVersion}};
@@ -126,6 +131,13 @@ SessionManifest SessionManifest::fromJson(const std::string& text, const std::st
     m.protocolVersion = j.at("protocol").at("version").get<std::string>();
     m.participant = j.at("participant").get<std::string>();
     m.session = j.at("session").get<std::string>();
+    if (j.contains("group")) {  // manifests written before groups have none
+      m.group = j.at("group").get<std::string>();
+      m.blockOrder = j.at("block_order").get<int>();
+      m.assignedBy = j.at("assigned_by").get<std::string>();
+      for (const auto& [key, value] : j.at("participant_info").items())
+        m.participantInfo.emplace_back(key, value.get<std::string>());
+    }
     m.seed = j.at("seed").get<std::uint64_t>();
     m.startTime = j.at("start_time").get<std::string>();
     m.softwareVersion = j.at("software").at("version").get<std::string>();

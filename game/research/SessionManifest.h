@@ -65,6 +65,13 @@ struct SessionManifest {
   std::string experiment, description;
   std::string protocolFile, protocolHash, protocolVersion;
   std::string participant, session;
+  // Between-subjects design (PROTOCOLS.md "Groups and counterbalancing"):
+  // "" and 1 when the protocol has none. Manifests written before groups
+  // have none.
+  std::string group;
+  int blockOrder = 1;                 // 1-based row of the protocol's block orders
+  std::string assignedBy;             // where the group came from, in words
+  std::vector<std::pair<std::string, std::string>> participantInfo;  // the participants file's own columns
   std::uint64_t seed = 0;
   std::string startTime, softwareVersion;
   std::vector<ManifestSitting> sittings;

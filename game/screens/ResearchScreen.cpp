@@ -109,6 +109,10 @@ void ResearchScreen::refresh() {
     else
       status_ = "resumes at trial " + std::to_string(s.done() + 1) + " of " + std::to_string(s.trialCount()) +
                 (s.interrupted().empty() ? "" : " (an interrupted trial's files will be moved aside)");
+    // Between-subjects designs: the group and block order this participant gets (or has).
+    if (!s.manifest().group.empty() || s.protocol().orderCount() > 1)
+      status_ += "; group " + (s.manifest().group.empty() ? std::string("(none)") : s.manifest().group) +
+                 ", block order " + std::to_string(s.manifest().blockOrder) + " (" + s.manifest().assignedBy + ")";
     status_ += "; data: " + s.folder().string();
   } catch (const std::exception& e) {
     status_ = e.what();

@@ -62,8 +62,11 @@ void BotTrial::begin(const script::TrialTiming& timing) {
   bot_.setTiming(timing);
   level_.script->setTiming(timing);
   const script::BotLevelInfo info = botLevelInfo(level_.def, rig_.loopDef());
+  script::BotLevelInfo placed = info;
+  placed.place = settings_.place;
+  placed.memory = settings_.memory;
   try {
-    bot_.init(info, settings_.seed);
+    bot_.init(placed, settings_.seed);
   } catch (const script::ScriptError& e) {
     judging.judge().finish(script::TrialOutcome::Failure, std::string("bot error: ") + e.what(), rig_.loop().time());
   }

@@ -59,6 +59,10 @@ struct TrialSettings {
   // an autopilot beside the bot, on the same observations, and publishes its
   // plan to the loop every bot call; the device adds the guidance force.
   haptics::GuidanceDef guidance;
+  // In a research session: the trial's place and the participant's memory,
+  // handed to the bot's init (BotLevelInfo; the guide's autopilot gets neither).
+  script::TrialPlace place;
+  script::BotMemory* memory = nullptr;
 };
 
 class BotTrial {

@@ -58,7 +58,14 @@ HumanBot::~HumanBot() = default;
 
 void HumanBot::init(const script::BotLevelInfo& info, std::int64_t seed) {
   radius_ = info.params.radius;
-  model_.emplace(options_.human, options_.technique, info.params.radius, info.dt, static_cast<std::uint64_t>(seed));
+  human::HumanDef person = options_.human;
+  if (info.memory != nullptr && options_.learns) {
+    const int practised = static_cast<int>(info.memory->get(kPracticeTrials).value_or(0.0));
+    person.noise = human::practisedNoise(options_.practice, options_.human.noise, practised);
+    info.memory->set(kPracticeTrials, practised + 1);
+    info.memory->set(kMotorNoise, person.noise);
+  }
+  model_.emplace(person, options_.technique, info.params.radius, info.dt, static_cast<std::uint64_t>(seed));
   holding_ = false;
   coach_.reset();
   if (options_.aids) {

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "engine/human/HumanModel.h"
+#include "engine/human/Practice.h"
 #include "engine/script/BotPolicy.h"
 
 namespace hemiroll::game {
@@ -25,7 +26,17 @@ struct HumanBotOptions {
   // The game's aids, as a player has them: the hint at a person's bandwidth
   // and the force cue.
   bool aids = false;
+  // In a session (a memory to keep), the person learns: each trial's motor
+  // noise follows the law of practice from `practice.noviceNoise` down to
+  // `human.noise` (engine/human/Practice.h), counting the trials practised
+  // in the memory's "practice_trials". Outside a session nothing is learnt.
+  bool learns = true;
+  human::PracticeDef practice;
 };
+
+// The memory entries the human model keeps (script::BotMemory).
+inline constexpr const char* kPracticeTrials = "practice_trials";  // trials played before
+inline constexpr const char* kMotorNoise = "motor_noise";          // the noise of the latest trial
 
 class HumanBot final : public script::BotPolicy {
  public:

@@ -77,6 +77,24 @@ TEST(CheckCommandTest, ALevelThatLoadsButCannotBePlayedIsToldWhyEveryTime) {
   EXPECT_THAT(p.out, HasSubstr("beyond its reach"));
 }
 
+// A group plays its blocks under its changes: each group's conditions are
+// checked as that group plays them, and the participants file line by line.
+TEST(CheckCommandTest, EachGroupsConditionsAndTheParticipantsFileAreChecked) {
+  TempDirectory dir;
+  dir.write("participants.tsv", "participant_id\tgroup\np01\tstiff\np02\tsoft\n");
+  const std::string protocol = dir.write(
+      "groups.lua",
+      "return { experiment = \"g\", assignment = \"participants_file\", participants = \"participants.tsv\",\n"
+      "  groups = { { name = \"stiff\", changes = { { block = \"train\", kr = 5000 } } }, { name = \"plain\" } },\n"
+      "  blocks = { { name = \"train\", level = \"" + kSource + "/levels/tutorial_01_tilt_and_return.lua\" } } }\n");
+  const ProcessResult r = check({protocol});
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_THAT(r.out, HasSubstr("group \"stiff\", block 1 (\"train\"), condition 1 (\"kr 5000\""));
+  EXPECT_THAT(r.out, HasSubstr("coupling stiffness exceeds the device's maxStiffness"));
+  EXPECT_THAT(r.out, Not(HasSubstr("group \"plain\"")));  // a group that changes nothing plays the blocks as checked
+  EXPECT_THAT(r.out, HasSubstr("participants.tsv:3: column 'group': no group 'soft' in the protocol"));
+}
+
 TEST(CheckCommandTest, ALoadErrorNamesTheFileAndLineAndTheRestAreStillChecked) {
   TempDirectory dir;
   const std::string broken =

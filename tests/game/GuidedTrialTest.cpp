@@ -6,6 +6,7 @@
 
 #include <string>
 
+#include "engine/script/BotScript.h"
 #include "engine/script/LevelLoader.h"
 #include "game/trial/BotTrial.h"
 #include "game/trial/PassiveHandBot.h"
@@ -80,6 +81,23 @@ TEST(GuidedTrialTest, AGuidedTrialIsDeterministic) {
   EXPECT_EQ(a.outcome, script::TrialOutcome::Success) << a.reason;
   EXPECT_EQ(a.ticks, b.ticks);
   EXPECT_EQ(a.time, b.time);
+}
+
+// scripts/lib/arm.lua gives Lua bots the passive hand's arm: the shipped
+// scripts/bots/compliant.lua, which only yields, plays a guided trial to
+// the same end on the same tick as the built-in passive hand.
+TEST(GuidedTrialTest, ALuaBotWithTheCompliantArmFeelsGuidanceAsThePassiveHandDoes) {
+  const TrialResult builtin = passiveHandOn("tutorial_02_roll_a_short_distance.lua", haptics::GuidanceKind::Autopilot);
+  script::LoadedLevel loaded = script::LevelLoader().loadFile(kLevels + "tutorial_02_roll_a_short_distance.lua");
+  script::BotScript lua(std::string(HEMIROLL_SOURCE_DIR) + "/scripts/bots/compliant.lua");
+  TrialSettings settings;
+  settings.guidance.kind = haptics::GuidanceKind::Autopilot;
+  settings.guidance.stiffness = 300.0;
+  settings.guidance.damping = 10.0;
+  const TrialResult withArm = BotTrial(loaded, lua, settings).run();
+  EXPECT_EQ(withArm.outcome, builtin.outcome) << withArm.reason;
+  EXPECT_EQ(withArm.ticks, builtin.ticks);
+  EXPECT_EQ(withArm.outcome, script::TrialOutcome::Success) << withArm.reason;  // guidance led it there
 }
 
 }  // namespace

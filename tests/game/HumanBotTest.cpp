@@ -91,5 +91,37 @@ TEST(HumanBot, ALeanTheTaskAsksForIsShownAsTheNormalItWouldHave) {
   EXPECT_EQ(v.leanTolerance, 0.03);
 }
 
+// In a session the person learns: each trial's init reads the trials
+// practised from the participant's memory, plays with the noise the law of
+// practice gives for them, and counts one more. Outside a session (no
+// memory) the noise is the model's own.
+TEST(HumanBot, InASessionEachTrialPractisesAndLowersTheNoiseByTheLawOfPractice) {
+  script::LevelLoadOptions loadOptions;
+  script::LoadedLevel level = script::LevelLoader(loadOptions).loadFile(kLevels + "tutorial_01_tilt_and_return.lua");
+  script::BotMemory memory;
+  script::BotLevelInfo info;
+  info.params = level.def.params;
+  info.memory = &memory;
+  HumanBotOptions options;
+  for (int trial = 0; trial < 4; ++trial) {
+    HumanBot bot(options);
+    bot.init(info, 7);
+    ASSERT_NE(bot.model(), nullptr);
+    EXPECT_DOUBLE_EQ(bot.model()->def().noise, human::practisedNoise(options.practice, options.human.noise, trial));
+    EXPECT_EQ(memory.get(kPracticeTrials), trial + 1.0);
+    EXPECT_EQ(memory.get(kMotorNoise), bot.model()->def().noise);
+  }
+  info.memory = nullptr;
+  HumanBot outside(options);
+  outside.init(info, 7);
+  EXPECT_EQ(outside.model()->def().noise, options.human.noise);
+  options.learns = false;
+  info.memory = &memory;
+  HumanBot fixed(options);
+  fixed.init(info, 7);
+  EXPECT_EQ(fixed.model()->def().noise, options.human.noise);
+  EXPECT_EQ(memory.get(kPracticeTrials), 4.0);  // a person who does not learn counts nothing
+}
+
 }  // namespace
 }  // namespace hemiroll::game

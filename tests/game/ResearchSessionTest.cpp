@@ -129,7 +129,7 @@ TEST_F(ResearchSessionTest, EachFinishedTrialHasItsFilesAndOneResultsRowWithTheP
   EXPECT_TRUE(fs::exists(folder() / "trial-001.csv"));
   EXPECT_TRUE(fs::exists(folder() / "trial-001.json"));
   const record::ResultsTable table = record::ResultsFile(folder() / "results.csv").read();
-  const std::vector<std::string> plan = {"trial_index", "block", "block_name", "trial_in_block", "repetition",
+  const std::vector<std::string> plan = {"group", "block_order", "trial_index", "block", "block_name", "trial_in_block", "repetition",
                                          "condition", "condition_label", "level_file", "method", "kr_N_per_m",
                                          "kv_N_s_per_m", "alpha", "time_limit_s", "seed", "guidance",
                                          "guidance_stiffness_N_per_m", "guidance_damping_N_s_per_m", "guidance_fade",
@@ -147,14 +147,16 @@ TEST_F(ResearchSessionTest, EachFinishedTrialHasItsFilesAndOneResultsRowWithTheP
   const std::vector<std::string>& row = table.rows[0];
   EXPECT_EQ(row[2], "trial-001");
   EXPECT_EQ(row[5], "success");
-  EXPECT_EQ(row[12], "1");      // trial_index
-  EXPECT_EQ(row[20], "M1");     // method
-  EXPECT_EQ(row[24], "12");     // time_limit_s
-  EXPECT_EQ(row[26], "none");   // guidance
-  EXPECT_EQ(row[29], "0");      // guidance_fade: none at all
-  EXPECT_EQ(row[32], "0");      // stages_passed (a result made up here, with an empty summary)
-  EXPECT_EQ(row[54], "1500");   // ticks
-  EXPECT_EQ(row[55], "bot.lua");
+  EXPECT_EQ(row[12], "");       // group: the protocol has none
+  EXPECT_EQ(row[13], "1");      // block_order
+  EXPECT_EQ(row[14], "1");      // trial_index
+  EXPECT_EQ(row[22], "M1");     // method
+  EXPECT_EQ(row[26], "12");     // time_limit_s
+  EXPECT_EQ(row[28], "none");   // guidance
+  EXPECT_EQ(row[31], "0");      // guidance_fade: none at all
+  EXPECT_EQ(row[34], "0");      // stages_passed (a result made up here, with an empty summary)
+  EXPECT_EQ(row[56], "1500");   // ticks
+  EXPECT_EQ(row[57], "bot.lua");
 }
 
 // A results.csv whose header the next row cannot join was found only when
@@ -237,6 +239,136 @@ TEST_F(ResearchSessionTest, BadIdsProtocolsAndFoldersAreOneSentence) {
   fs::create_directories(folder());
   dir_.write("data/unit/p01/1/notes.txt", "someone else's");
   EXPECT_THAT(errorOf(SessionError::Kind::Environment), HasSubstr("holds files but no session.json"));
+}
+
+// A session begun by a version whose results.csv had fewer columns cannot
+// be resumed by this one: refused before anything is touched, saying which
+// columns differ and what to do.
+TEST_F(ResearchSessionTest, AnOldResultsHeaderIsRefusedOnResumeSayingWhyAndWhatToDo) {
+  {
+    ResearchSession s(request_);
+    s.begin("bot.lua");
+    finishOne(s);
+  }
+  const fs::path results = folder() / "results.csv";
+  std::string text = hemiroll::test::TempDirectory::read(results);
+  // As the version before groups wrote it: no group, block_order columns.
+  const std::size_t cut = text.find(",group,block_order");
+  ASSERT_NE(cut, std::string::npos);
+  text.erase(cut, std::string(",group,block_order").size());
+  const std::size_t rowCut = text.find(",,1,1,");
+  ASSERT_NE(rowCut, std::string::npos);
+  text.erase(rowCut + 1, 3);  // ",1," of ",,1,1,": group and block_order go
+  fs::remove(results);
+  record::appendDurably(results, text);
+  const std::string error = errorOf(SessionError::Kind::BadInput);
+  EXPECT_THAT(error, HasSubstr("results.csv of session '1' of participant 'p01' was started by hemiroll"));
+  EXPECT_THAT(error, HasSubstr("it lacks group, block_order"));
+  EXPECT_THAT(error, HasSubstr("Finish the session with the version that started it, or start a new session"));
+  EXPECT_EQ(hemiroll::test::TempDirectory::read(results), text);
+}
+
+// Three groups, assigned by arrival; a counterbalanced pair of blocks.
+constexpr const char* kGroups = R"lua(
+return {
+  experiment = "groups",
+  seed = 3,
+  groups = {
+    { name = "guided", changes = { { block = "training", guidance = { kind = "autopilot", stiffness = 300 } } } },
+    { name = "augmented", changes = { { block = "training", guidance = { kind = "error_augmentation", gain = 100 } } } },
+    { name = "control" },
+  },
+  counterbalance = { "retention", "transfer" },
+  blocks = {
+    { name = "training", level = "tutorial_01_tilt_and_return.lua", repetitions = 2 },
+    { name = "retention", level = "tutorial_01_tilt_and_return.lua" },
+    { name = "transfer", level = "own.lua" },
+  },
+}
+)lua";
+
+TEST_F(ResearchSessionTest, ParticipantsArrivingInTurnFillTheGroupsAndOrdersInTurn) {
+  request_.protocolPath = dir_.write("g.lua", kGroups);
+  std::vector<std::pair<std::string, int>> assigned;
+  for (int k = 0; k < 6; ++k) {
+    request_.participant = "p" + std::to_string(k);
+    ResearchSession s(request_);
+    s.begin("bot.lua");
+    assigned.emplace_back(s.manifest().group, s.manifest().blockOrder);
+    const std::vector<ManifestTrial>& plan = s.manifest().plan;
+    ASSERT_EQ(plan.size(), 4u);
+    // Training first, then retention and transfer in the participant's order.
+    EXPECT_EQ(plan[0].blockName, "training");
+    EXPECT_EQ(plan[2].blockName, s.manifest().blockOrder == 1 ? "retention" : "transfer");
+    EXPECT_EQ(plan[3].blockName, s.manifest().blockOrder == 1 ? "transfer" : "retention");
+    EXPECT_EQ(plan[3].block, 3);
+    const std::string kind = haptics::guidanceKindName(plan[0].guidance.kind);
+    EXPECT_EQ(kind, s.manifest().group == "guided" ? "autopilot"
+                    : s.manifest().group == "augmented" ? "error_augmentation" : "none");
+    EXPECT_EQ(haptics::guidanceKindName(plan[2].guidance.kind), std::string("none"));  // only training changes
+    finishOne(s);
+  }
+  // The k-th: group k mod 3, order (k div 3) mod 2 + 1.
+  const std::vector<std::pair<std::string, int>> expected = {{"guided", 1},    {"augmented", 1}, {"control", 1},
+                                                             {"guided", 2},    {"augmented", 2}, {"control", 2}};
+  EXPECT_EQ(assigned, expected);
+  // Group and order are in every results row and sidecar.
+  const fs::path p4 = dir_.path() / "data/groups/p4/1";
+  const record::ResultsTable table = record::ResultsFile(p4 / "results.csv").read();
+  ASSERT_EQ(table.rows.size(), 1u);
+  EXPECT_EQ(table.columns[12], "group");
+  EXPECT_EQ(table.rows[0][12], "augmented");
+  EXPECT_EQ(table.rows[0][13], "2");
+  const std::string sidecar = hemiroll::test::TempDirectory::read(p4 / "trial-001.json");
+  EXPECT_THAT(sidecar, HasSubstr("\"group\": \"augmented\""));
+  EXPECT_THAT(sidecar, HasSubstr("\"block_order\": \"2\""));
+  // A second session of a participant keeps their group and order.
+  request_.participant = "p4";
+  request_.session = "2";
+  ResearchSession again(request_);
+  EXPECT_EQ(again.manifest().group, "augmented");
+  EXPECT_EQ(again.manifest().blockOrder, 2);
+}
+
+TEST_F(ResearchSessionTest, TheParticipantsFileAssignsAndIsCheckedNamingFileLineAndColumn) {
+  std::string protocol = kGroups;
+  protocol.replace(protocol.find("seed = 3,"), 9, "seed = 3, assignment = \"participants_file\", participants = \"participants.tsv\",");
+  request_.protocolPath = dir_.write("g.lua", protocol);
+  const std::string file = dir_.write("participants.tsv",
+                                      "participant_id\tgroup\torder\tage\thandedness\n"
+                                      "p01\tcontrol\t2\t24\tleft\n"
+                                      "p02\tguided\tn/a\t31\tright\n");
+  ResearchSession s(request_);
+  EXPECT_EQ(s.manifest().group, "control");
+  EXPECT_EQ(s.manifest().blockOrder, 2);
+  EXPECT_EQ(s.manifest().participantInfo,
+            (std::vector<std::pair<std::string, std::string>>{{"age", "24"}, {"handedness", "left"}}));
+  request_.participant = "p02";
+  EXPECT_EQ(ResearchSession(request_).manifest().blockOrder, 1);  // the first guided row: order 1
+  request_.participant = "p03";
+  EXPECT_EQ(errorOf(SessionError::Kind::BadInput),
+            "participant 'p03' is not in " + (dir_.path() / "participants.tsv").lexically_normal().string() +
+                "; add a line for them (participant_id first, tab-separated) before their first session");
+  const std::string shown = (dir_.path() / "participants.tsv").lexically_normal().string();
+  dir_.write("participants.tsv", "participant_id\tgroup\nop01\tcontrl\n");
+  EXPECT_EQ(errorOf(SessionError::Kind::BadInput),
+            shown + ":2: column 'group': no group 'contrl' in the protocol (its groups: 'guided', 'augmented', 'control')");
+  dir_.write("participants.tsv", "participant_id\tgroup\torder\np03\tcontrol\t3\n");
+  EXPECT_EQ(errorOf(SessionError::Kind::BadInput),
+            shown + ":2: column 'order': '3' is not a block order: a whole number from 1 to 2 (the protocol's "
+                    "counterbalanced orders)");
+  dir_.write("participants.tsv", "participant_id\tgroup\np03\tcontrol\textra\n");
+  EXPECT_EQ(errorOf(SessionError::Kind::BadInput),
+            shown + ":2: 3 columns, the header has 2 (columns are separated by tabs)");
+  dir_.write("participants.tsv", "participant_id\tgroup\np03\tcontrol\np03\tguided\n");
+  EXPECT_EQ(errorOf(SessionError::Kind::BadInput),
+            shown + ":3: column 'participant_id': 'p03' is listed twice (also on line 2)");
+  dir_.write("participants.tsv", "id\tgroup\n");
+  EXPECT_EQ(errorOf(SessionError::Kind::BadInput),
+            shown + ":1: column 'id': the first column must be participant_id (tab-separated columns)");
+  dir_.write("participants.tsv", "participant_id\tage\n");
+  EXPECT_THAT(errorOf(SessionError::Kind::BadInput), HasSubstr(shown + ":1: no 'group' column"));
+  (void)file;
 }
 
 }  // namespace

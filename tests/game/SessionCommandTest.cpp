@@ -70,7 +70,8 @@ TEST(SessionCommandTest, ABotPlaysEveryTrialIntoTheSessionFolder) {
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const fs::path folder = dir.path() / "tutorial-demo" / "p01" / "1";
   // session.lock: the folder's lock, released (empty) at the end.
-  EXPECT_EQ(filesIn(folder), (std::set<std::string>{"session.json", "session.lock", "results.csv", "trial-001.csv",
+  // bot-memory.json: the bot's memory across trials (empty for a Lua bot).
+  EXPECT_EQ(filesIn(folder), (std::set<std::string>{"session.json", "session.lock", "results.csv", "bot-memory.json", "trial-001.csv",
                                                     "trial-001.json", "trial-002.csv", "trial-002.json",
                                                     "trial-003.csv", "trial-003.json"}));
   EXPECT_EQ(TempDirectory::read(folder / "session.lock"), "");

@@ -44,10 +44,23 @@ TEST(SessionOptions, MistakesAreOneSentence) {
       {{"p.lua", "--participant"}, "--participant needs a value"},
       {{"p.lua", "--participant", "x", "--realtime"}, "unknown flag '--realtime'"},
       {{"p.lua", "q.lua", "--participant", "x"}, "unexpected argument 'q.lua'"},
+      {{"p.lua", "--participants", "3"}, "--participants needs --bot"},
+      {{"p.lua", "--participants", "0", "--bot", "human"}, "--participants needs a number of participants from 1 to 1000"},
+      {{"p.lua", "--participant", "x", "--human-device", "glove"}, "--human-device needs mouse or haptic, not 'glove'"},
   };
   for (const auto& [args, expected] : cases) EXPECT_THAT(parseSessionOptions(args).error, HasSubstr(expected));
   EXPECT_TRUE(parseSessionOptions({"--help"}).options.help);
   EXPECT_EQ(parseSessionOptions({"--help"}).error, "");
+}
+
+TEST(SessionOptions, ACohortNeedsNoParticipantIdAndTakesTheHumanModelsFlags) {
+  const SessionOptionsResult r =
+      parseSessionOptions({"p.lua", "--participants", "20", "--bot", "human", "--human-device", "haptic"});
+  ASSERT_EQ(r.error, "");
+  EXPECT_EQ(r.options.participants, 20);
+  EXPECT_EQ(r.options.participant, "sim");  // the cohort's prefix
+  EXPECT_EQ(r.options.human.human.device, human::HandDevice::Haptic);
+  EXPECT_EQ(parseSessionOptions({"p.lua", "--participant", "x"}).options.participants, 0);
 }
 
 }  // namespace

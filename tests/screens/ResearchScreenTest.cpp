@@ -61,6 +61,7 @@ bool playUntil(App& app, const char* screen, double seconds, ScriptedMouse* mous
 constexpr const char* kProtocol = R"lua(
 return {
   experiment = "window-test",
+  groups = { { name = "solo" } },
   blocks = {
     { level = "tilt.lua", time_limit = 1, instructions = "tilt it",
       break_after = { message = "a short rest", min_duration = 0.3 } },
@@ -95,6 +96,7 @@ TEST(ResearchScreenTest, AProtocolRunsFromTheResearchScreenIntoItsSessionFolder)
   app.inject(platform::keyDownEvent("Down"));  // to two.lua
   frames(app, 2);
   EXPECT_THAT(research->status(), HasSubstr("a new session of 2 trials"));
+  EXPECT_THAT(research->status(), HasSubstr("; group solo, block order 1 (balanced by arrival: participant 1 of the experiment)"));
   ASSERT_TRUE(research->canStart());
 
   app.inject(platform::keyDownEvent("Return"));

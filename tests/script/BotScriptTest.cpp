@@ -257,5 +257,57 @@ TEST(BotScript, ABotInBotsRequiresFromTheScriptsDirectoryAboveIt) {
   EXPECT_EQ(bot.act({}).position, (Triple3{2.0, 4.0, 6.0}));
 }
 
+// In a research session a Lua bot's init sees the trial's place
+// (level.trial) and the participant's memory (level.memory), a table whose
+// name = number entries go back into the memory after the trial.
+TEST(BotScript, InASessionInitSeesThePlaceAndKeepsAMemoryAcrossTrials) {
+  const BotFile file(
+      "local seen\n"
+      "return {name = 'learner',\n"
+      "  init = function(level, seed)\n"
+      "    level.memory.trials = (level.memory.trials or 0) + 1\n"
+      "    level.memory.last_block = level.trial.block\n"
+      "    seen = level.trial.block_name .. ' ' .. level.trial.group .. ' ' .. level.trial.guidance\n"
+      "  end,\n"
+      "  act = function(t, obs) return #seen, 0, 0 end}");
+  BotMemory memory;
+  BotLevelInfo info;
+  info.place.inSession = true;
+  info.place.block = 3;
+  info.place.blockName = "training";
+  info.place.group = "guided";
+  info.place.guidance = "autopilot";
+  info.memory = &memory;
+  for (int trial = 1; trial <= 2; ++trial) {
+    BotScript bot(file.path);
+    bot.init(info, 1);
+    EXPECT_EQ(bot.act({}).position[0], std::string("training guided autopilot").size());
+    bot.endTrial();
+    EXPECT_EQ(memory.get("trials"), trial);
+    EXPECT_EQ(memory.get("last_block"), 3.0);
+  }
+  // Outside a session: no trial, no memory.
+  const BotFile outside("return {name = 'o', init = function(level) assert(level.trial == nil and level.memory == nil) end,\n"
+                        "  act = function() return 0, 0, 0 end}");
+  BotScript plain(outside.path);
+  EXPECT_NO_THROW(plain.init(BotLevelInfo{}, 1));
+  EXPECT_NO_THROW(plain.endTrial());
+}
+
+TEST(BotScript, AMemoryThatBreaksTheRulesIsRefusedAndTheOldOneKept) {
+  const BotFile file("return {name = 'm', init = function(level) level.memory.note = 'text' end,\n"
+                     "  act = function() return 0, 0, 0 end}");
+  BotMemory memory;
+  memory.set("kept", 1.0);
+  BotLevelInfo info;
+  info.memory = &memory;
+  BotScript bot(file.path);
+  bot.init(info, 1);
+  EXPECT_THAT(test::messageOf<ScriptError>([&] { bot.endTrial(); }),
+              HasSubstr("bot memory: level.memory holds "));
+  EXPECT_EQ(memory.get("kept"), 1.0);
+  EXPECT_FALSE(memory.get("note"));
+}
+
 }  // namespace
 }  // namespace hemiroll::script

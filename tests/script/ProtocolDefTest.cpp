@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <set>
 #include <vector>
 
 namespace hemiroll::script {
@@ -75,6 +77,89 @@ TEST(ProtocolDef, FolderNamesAreLettersDigitsDashAndUnderscore) {
   EXPECT_TRUE(isFolderName(std::string(64, 'a')));
   for (const std::string& bad : std::vector<std::string>{"", "..", "a/b", "a.b", "a b", "ü", std::string(65, 'a')})
     EXPECT_FALSE(isFolderName(bad)) << bad;
+}
+
+
+// A balanced Latin square: every item once per row and per position, and
+// every ordered pair of different items adjacent equally often (once over
+// the n rows of an even n, twice over the 2n rows of an odd n).
+TEST(ProtocolDefTest, WilliamsSquareIsALatinSquareBalancedForNeighbours) {
+  for (int n = 2; n <= 7; ++n) {
+    const auto rows = williamsSquare(n);
+    const std::size_t expectedRows = static_cast<std::size_t>(n % 2 == 0 ? n : 2 * n);
+    ASSERT_EQ(rows.size(), expectedRows) << n;
+    std::vector<std::vector<int>> inPosition(static_cast<std::size_t>(n), std::vector<int>(static_cast<std::size_t>(n), 0));
+    std::vector<std::vector<int>> follows(static_cast<std::size_t>(n), std::vector<int>(static_cast<std::size_t>(n), 0));
+    for (const auto& row : rows) {
+      ASSERT_EQ(row.size(), static_cast<std::size_t>(n));
+      std::vector<int> sorted = row;
+      std::sort(sorted.begin(), sorted.end());
+      for (int i = 0; i < n; ++i) EXPECT_EQ(sorted[static_cast<std::size_t>(i)], i) << "row is no permutation, n " << n;
+      for (int p = 0; p < n; ++p) ++inPosition[static_cast<std::size_t>(p)][static_cast<std::size_t>(row[static_cast<std::size_t>(p)])];
+      for (int p = 0; p + 1 < n; ++p)
+        ++follows[static_cast<std::size_t>(row[static_cast<std::size_t>(p)])][static_cast<std::size_t>(row[static_cast<std::size_t>(p) + 1])];
+    }
+    const int perCell = static_cast<int>(expectedRows) / n;
+    const int perPair = n % 2 == 0 ? 1 : 2;
+    for (int a = 0; a < n; ++a)
+      for (int b = 0; b < n; ++b) {
+        EXPECT_EQ(inPosition[static_cast<std::size_t>(a)][static_cast<std::size_t>(b)], perCell) << n;
+        if (a != b) {
+          EXPECT_EQ(follows[static_cast<std::size_t>(a)][static_cast<std::size_t>(b)], perPair) << n << ": " << a << "->" << b;
+        }
+      }
+  }
+  EXPECT_EQ(williamsSquare(4)[0], (std::vector<int>{0, 1, 3, 2}));
+}
+
+TEST(ProtocolDefTest, BlockSequencePermutesOnlyTheCounterbalancedBlocksAmongTheirPlaces) {
+  ProtocolDef p;
+  p.blocks.resize(5);
+  p.counterbalanced = {1, 2, 4};  // three blocks: 6 orders
+  EXPECT_EQ(p.orderCount(), 6);
+  std::set<std::vector<int>> seen;
+  for (int order = 1; order <= 6; ++order) {
+    const std::vector<int> s = p.blockSequence(order);
+    ASSERT_EQ(s.size(), 5u);
+    EXPECT_EQ(s[0], 0);
+    EXPECT_EQ(s[3], 3);
+    EXPECT_EQ((std::set<int>{s[1], s[2], s[4]}), (std::set<int>{1, 2, 4}));
+    seen.insert(s);
+  }
+  EXPECT_EQ(seen.size(), 6u);  // 3! orders, each once
+  EXPECT_EQ(p.blockSequence(1), (std::vector<int>{0, 1, 2, 3, 4}));  // row 1 of the square is the file's order
+  p.counterbalanced.clear();
+  EXPECT_EQ(p.orderCount(), 1);
+  EXPECT_EQ(p.blockSequence(3), (std::vector<int>{0, 1, 2, 3, 4}));
+}
+
+TEST(ProtocolDefTest, AGroupsChangesWinInItsBlockAndRebuildADefaultLabel) {
+  ConditionDef c;
+  c.level = "levels/x.lua";
+  c.overrides.stiffness = 250.0;
+  c.label = defaultConditionLabel(c.overrides, c.level);
+  GroupDef g;
+  g.name = "guided";
+  GroupChange change;
+  change.block = 1;
+  GuidanceSpec guidance;
+  guidance.kind = "autopilot";
+  guidance.stiffness = 300.0;
+  change.overrides.guidance = guidance;
+  change.overrides.stiffness = 200.0;
+  g.changes.push_back(change);
+  const ConditionDef inBlock1 = conditionInGroup(c, 1, &g);
+  EXPECT_EQ(inBlock1.overrides.stiffness, 200.0);
+  ASSERT_TRUE(inBlock1.overrides.guidance);
+  EXPECT_EQ(inBlock1.overrides.guidance->stiffness, 300.0);
+  EXPECT_EQ(inBlock1.label, "kr 200 guided");
+  const ConditionDef inBlock0 = conditionInGroup(c, 0, &g);  // the group changes nothing there
+  EXPECT_EQ(inBlock0.overrides.stiffness, 250.0);
+  EXPECT_EQ(inBlock0.label, "kr 250");
+  c.label = "mine";
+  c.labelGiven = true;
+  EXPECT_EQ(conditionInGroup(c, 1, &g).label, "mine");
+  EXPECT_EQ(conditionInGroup(c, 1, nullptr).overrides.stiffness, 250.0);
 }
 
 }  // namespace

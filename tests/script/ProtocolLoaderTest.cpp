@@ -331,5 +331,53 @@ INSTANTIATE_TEST_SUITE_P(
         ErrorCase{"local x = io.open('f')\nreturn {}", "p.lua:1: attempt to index a nil value (global 'io')"},
         ErrorCase{"while true do end", "p.lua:1: "}));
 
+
+TEST_F(ProtocolLoaderTest, ReadsGroupsTheirChangesAndTheCounterbalancedBlocks) {
+  dir_.write("participants.tsv", "participant_id\tgroup\n");
+  const ProtocolDef def = load(R"(
+    return {
+      experiment = "g", participants = "participants.tsv", assignment = "participants_file",
+      counterbalance = { "c", "a" },
+      groups = {
+        { name = "guided", description = "pulled", changes = { { block = "b", guidance = { kind = "autopilot", stiffness = 300 } } } },
+        { name = "control" },
+      },
+      blocks = { { name = "a", level = "mine.lua" }, { name = "b", level = "mine.lua" }, { name = "c", level = "mine.lua" } },
+    })");
+  ASSERT_EQ(def.groups.size(), 2u);
+  EXPECT_EQ(def.groups[0].name, "guided");
+  EXPECT_EQ(def.groups[0].description, "pulled");
+  ASSERT_EQ(def.groups[0].changes.size(), 1u);
+  EXPECT_EQ(def.groups[0].changes[0].block, 1);
+  ASSERT_TRUE(def.groups[0].changes[0].overrides.guidance);
+  EXPECT_EQ(def.groups[0].changes[0].overrides.guidance->stiffness, 300.0);
+  EXPECT_TRUE(def.groups[1].changes.empty());
+  EXPECT_EQ(def.counterbalanced, (std::vector<int>{0, 2}));
+  EXPECT_EQ(def.assignment, Assignment::ParticipantsFile);
+  EXPECT_EQ(def.participantsFile, (dir_.path() / "participants.tsv").lexically_normal().string());
+  EXPECT_EQ(def.orderCount(), 2);
+}
+
+TEST_F(ProtocolLoaderTest, GroupAndCounterbalanceMistakesAreNamed) {
+  const std::string blocks = " blocks = { { name = 'a', level = 'mine.lua' }, { name = 'b', level = 'mine.lua' } } }";
+  EXPECT_EQ(errorOf("return { experiment = 'g', groups = { { name = 'x', changes = { { block = 'c', kr = 1 } } } }," + blocks),
+            "p.lua:1: groups[1].changes[1].block: no block named 'c' (the blocks: 'a', 'b')");
+  EXPECT_EQ(errorOf("return { experiment = 'g', groups = { { name = 'x' }, { name = 'x' } }," + blocks),
+            "p.lua:1: groups[2].name: 'x' names two groups");
+  EXPECT_EQ(errorOf("return { experiment = 'g', groups = { { name = 'x', changes = { { block = 'a' } } } }," + blocks),
+            "p.lua:1: groups[1].changes[1]: changes nothing; give method, kr, kv, alpha, time_limit or guidance");
+  EXPECT_EQ(errorOf("return { experiment = 'g', counterbalance = { 'a' }," + blocks),
+            "p.lua:1: counterbalance: expected a list of at least two block names { \"a\", \"b\" }");
+  EXPECT_EQ(errorOf("return { experiment = 'g', counterbalance = { 'a', 'a' }," + blocks),
+            "p.lua:1: counterbalance[2]: 'a' is listed twice");
+  EXPECT_EQ(errorOf("return { experiment = 'g', assignment = 'random'," + blocks),
+            "p.lua:1: assignment: unknown assignment 'random' (expected \"balanced\" or \"participants_file\")");
+  EXPECT_EQ(errorOf("return { experiment = 'g', assignment = 'participants_file'," + blocks),
+            "p.lua:1: assignment: \"participants_file\" needs the participants file: participants = \"participants.tsv\"");
+  EXPECT_EQ(errorOf("return { experiment = 'g', participants = 'nobody.tsv'," + blocks),
+            "p.lua:1: participants: no participants file 'nobody.tsv' (looked in " + dir_.path().string() + ")");
+  EXPECT_THAT(errorOf("return { experiment = 'g', grups = {}," + blocks), HasSubstr("did you mean 'groups'?"));
+}
+
 }  // namespace
 }  // namespace hemiroll::script

@@ -131,5 +131,26 @@ TEST(ProtocolPlan, TheBreakBeforeATrialIsThePreviousBlocksOnItsFirstTrial) {
   EXPECT_EQ(&ProtocolPlan::conditionOf(p, plan.trials[2]), &p.blocks[1].conditions[0]);
 }
 
+
+TEST(ProtocolPlanTest, ABlockOrderMovesWholeBlocksAndKeepsTheirTrialsAndSeeds) {
+  ProtocolDef p = protocol({block(1, 2, false), block(3, 1, true), block(2, 2, true)});
+  p.counterbalanced = {1, 2};  // two blocks: orders 1 (as written) and 2 (swapped)
+  const ProtocolPlan first = expandProtocol(p, 7, 1);
+  const ProtocolPlan second = expandProtocol(p, 7, 2);
+  EXPECT_EQ(first.trials.size(), second.trials.size());
+  // The plan of order 1 is the plan without counterbalancing.
+  EXPECT_EQ(order(first), order(expandProtocol(protocol({block(1, 2, false), block(3, 1, true), block(2, 2, true)}), 7)));
+  std::map<int, std::vector<std::pair<int, std::uint64_t>>> byBlock1, byBlock2;  // defined block -> (condition, seed)
+  for (const PlannedTrial& t : first.trials) byBlock1[t.definedBlock].emplace_back(t.condition, t.seed);
+  for (const PlannedTrial& t : second.trials) byBlock2[t.definedBlock].emplace_back(t.condition, t.seed);
+  EXPECT_EQ(byBlock1, byBlock2);  // a block plays the same trials wherever it is placed
+  std::vector<int> places;
+  for (const PlannedTrial& t : second.trials) {
+    EXPECT_EQ(t.block, t.definedBlock == 1 ? 1 : (t.definedBlock == 2 ? 3 : 2));
+    EXPECT_EQ(&ProtocolPlan::blockOf(p, t), &p.blocks[static_cast<std::size_t>(t.definedBlock - 1)]);
+  }
+  for (std::size_t i = 0; i < second.trials.size(); ++i) EXPECT_EQ(second.trials[i].index, static_cast<int>(i) + 1);
+}
+
 }  // namespace
 }  // namespace hemiroll::script
