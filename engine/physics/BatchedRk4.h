@@ -49,6 +49,9 @@ struct BatchView {
   double* state;
   int padded;
   int method;  // the coupling's ForceMethod, or -1 for free motion (12-state only)
+  // Rose only: the kernel writes the drive's p at the step's end here, x in
+  // drive[0 .. padded), y in drive[padded .. 2 padded) (RoseBatch::drivePosition).
+  double* drive = nullptr;
 };
 // Rows shared by both models: the mass constants, then whether a lane is active.
 enum Row : int {
@@ -135,6 +138,16 @@ class RoseBatch final : public LaneBatch<8> {
   int add(const HemisphereParams& params, const RoseDef& rose, const BodyState& x0);
   // One RK4 step of every active lane from t to t + h.
   void step(double t, double h);
+  // The drive's p at t + h of the last step, as the step's last stage
+  // evaluated it in the lanes: the bits of RoseDrive::at(t + h).p, so the
+  // domain check after a step needs no scalar evaluation of the rose
+  // (PrescribedDriveSystem::domainEventWith). Only for a lane that was
+  // active in the last step (a group of retired lanes is not stepped).
+  Vec2 drivePosition(int lane) const;
+
+ private:
+  std::vector<double> driveEnd_;
+  int drivePadded_ = 0;
 };
 
 // The 12-state force-driven model (ForceDrivenSystem): free motion, or every

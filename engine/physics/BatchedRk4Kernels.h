@@ -95,10 +95,14 @@ inline void roseStep(const BatchView& v, double t, double h) {
     const MassConstantsOf<T> c = massConstantsAt<T>(v, first);
     auto at = [&](int r) { return rowAt<T>(v, r, first); };
     const T r1 = at(kRoseR1), r2 = at(kRoseR2), k = at(kRoseK), omega = at(kRoseOmega);
+    Real2Of<T> p;  // after the step: the last stage's, at t + h
     stepGroup<8, T>(v, first, t, h, [&](double tau, const T* x, T* dxdt) {
       const RoseSampleOf<T> s = roseSampleOf(r1, r2, k, omega, tau);
+      p = s.p;
       prescribedRatesOf(c, s.p, s.pDot, x, dxdt);
     });
+    store(v.drive + first, p.x);
+    store(v.drive + v.padded + first, p.y);
   }
 }
 

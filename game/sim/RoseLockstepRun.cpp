@@ -65,7 +65,7 @@ std::vector<RunSummary> RoseLockstepRun::run(const LaneRowCallback& onRow) const
       RunSummary& summary = summaries[lane];
       summary.steps = i;
       const physics::BodyState x = batch.state(index);
-      if (systems[lane].domainEvent(start + h, x) == physics::DomainEvent::None) {
+      if (systems[lane].domainEventWith(start + h, x, batch.drivePosition(index)) == physics::DomainEvent::None) {
         if (i % settings_.every == 0 || i == steps) emit(lane, target, x);
         // ScenarioRun puts the clock on the grid (Stepper::reset), which
         // classifies the state again at the grid time; where that differs

@@ -108,6 +108,12 @@ void expectRoseLanesMatchScalar(int width, int steps, int retireLane, int retire
       ASSERT_TRUE(sameBits<8>(batch.state(lane), scalar[lane]))
           << "width " << width << ", lane " << lane << ", step " << i << ": " << batch.state(lane).transpose()
           << " vs " << scalar[lane].transpose();
+      // The drive's position the lanes keep for the domain check is the
+      // scalar rose's at the step's end, for every lane that stepped.
+      if (!batch.active(lane)) continue;
+      const physics::Vec2 p = roses[lane].at(t + h).p;
+      ASSERT_EQ(batch.drivePosition(lane).x(), p.x()) << "width " << width << ", lane " << lane << ", step " << i;
+      ASSERT_EQ(batch.drivePosition(lane).y(), p.y()) << "width " << width << ", lane " << lane << ", step " << i;
     }
   }
   EXPECT_EQ(batch.activeCount(), kLanes - 1);
