@@ -103,6 +103,10 @@ inline void roseStep(const BatchView& v, double t, double h) {
     });
     store(v.drive + first, p.x);
     store(v.drive + v.padded + first, p.y);
+    // Where the grid time is not t + h to the bit, the rose once more there.
+    const Real2Of<T> grid = v.gridEnd == t + h ? p : roseSampleOf(r1, r2, k, omega, v.gridEnd).p;
+    store(v.drive + 2 * v.padded + first, grid.x);
+    store(v.drive + 3 * v.padded + first, grid.y);
   }
 }
 
