@@ -51,22 +51,34 @@ std::size_t powerOfTwoAtLeast(std::size_t n) {
 
 // Each thread's two transform buffers, grown as needed and kept (a sweep's
 // worker analyses many points of one length; no allocation per search).
+// The filter's transform depends only on the key below, so a search of the
+// same shape as the last one (the rose's rho at every sweep point) reuses it.
+struct FilterKey {
+  std::size_t length = 0, fftLength = 0, samples = 0, count = 0;
+  int sign = 0;
+  bool operator==(const FilterKey&) const = default;
+};
 struct Workspace {
   std::size_t length = 0;
   FftwBuffer signal, filter;
+  FilterKey filterKey;  // what `filter` holds the transform of; empty: nothing
   void reserve(std::size_t n) {
     if (n <= length) return;
     signal = fftwBuffer(n);
     filter = fftwBuffer(n);
     length = n;
+    filterKey = {};
   }
 };
 
 // exp(-i pi sign j^2 / L): the chirp, its phase reduced in integers (j^2
 // mod 2L is exact below 2^63), so it is as accurate for j = 10^5 as for 1.
-std::complex<double> chirp(std::int64_t j, std::int64_t twiceL, int sign) {
+double chirpPhase(std::int64_t j, std::int64_t twiceL, int sign) {
   const std::int64_t r = (j * j) % twiceL;
-  return std::polar(1.0, -std::numbers::pi * sign * 2.0 * static_cast<double>(r) / static_cast<double>(twiceL));
+  return -std::numbers::pi * sign * 2.0 * static_cast<double>(r) / static_cast<double>(twiceL);
+}
+std::complex<double> chirp(std::int64_t j, std::int64_t twiceL, int sign) {
+  return std::polar(1.0, chirpPhase(j, twiceL, sign));
 }
 
 }  // namespace
@@ -87,29 +99,34 @@ void fftGridPowers(std::span<const std::complex<double>> samples, double dt, std
   fftw_complex* a = work.signal.get();
   fftw_complex* h = work.filter.get();
   const auto twiceL = static_cast<std::int64_t>(2 * fftLength);
-  // The shift that puts `start` on bin 0: exp(-2 pi i sign start m dt).
+  // The shift that puts `start` on bin 0, exp(-2 pi i sign start m dt), and
+  // the chirp c_m, as one phase.
   const double turn = -2.0 * std::numbers::pi * (sign > 0 ? 1.0 : -1.0) * start * dt;
   for (std::size_t m = 0; m < length; ++m) {
     std::complex<double> z(0.0, 0.0);
-    if (m < n) z = samples[m] * std::polar(1.0, turn * static_cast<double>(m)) * chirp(static_cast<std::int64_t>(m), twiceL, sign);
+    if (m < n)
+      z = samples[m] * std::polar(1.0, turn * static_cast<double>(m) + chirpPhase(static_cast<std::int64_t>(m), twiceL, sign));
     a[m][0] = z.real();
     a[m][1] = z.imag();
-    h[m][0] = 0.0;
-    h[m][1] = 0.0;
   }
-  // conj(c_j) at j = 0 .. count - 1 and, wrapped round, j = -(n - 1) .. -1.
-  for (std::size_t j = 0; j < count; ++j) {
-    const std::complex<double> c = std::conj(chirp(static_cast<std::int64_t>(j), twiceL, sign));
-    h[j][0] = c.real();
-    h[j][1] = c.imag();
-  }
-  for (std::size_t j = 1; j < n; ++j) {
-    const std::complex<double> c = std::conj(chirp(static_cast<std::int64_t>(j), twiceL, sign));
-    h[length - j][0] = c.real();
-    h[length - j][1] = c.imag();
+  const FilterKey key{length, fftLength, n, count, sign};
+  if (!(work.filterKey == key)) {
+    // conj(c_j) at j = 0 .. count - 1 and, wrapped round, j = -(n - 1) .. -1.
+    for (std::size_t m = 0; m < length; ++m) h[m][0] = h[m][1] = 0.0;
+    for (std::size_t j = 0; j < count; ++j) {
+      const std::complex<double> c = std::conj(chirp(static_cast<std::int64_t>(j), twiceL, sign));
+      h[j][0] = c.real();
+      h[j][1] = c.imag();
+    }
+    for (std::size_t j = 1; j < n; ++j) {
+      const std::complex<double> c = std::conj(chirp(static_cast<std::int64_t>(j), twiceL, sign));
+      h[length - j][0] = c.real();
+      h[length - j][1] = c.imag();
+    }
+    fftw_execute_dft(planOf(length, FFTW_FORWARD), h, h);
+    work.filterKey = key;
   }
   fftw_execute_dft(planOf(length, FFTW_FORWARD), a, a);
-  fftw_execute_dft(planOf(length, FFTW_FORWARD), h, h);
   for (std::size_t m = 0; m < length; ++m) {
     const std::complex<double> product = std::complex<double>(a[m][0], a[m][1]) * std::complex<double>(h[m][0], h[m][1]);
     a[m][0] = product.real();
