@@ -93,6 +93,11 @@ std::complex<double> chirp(std::int64_t j, std::int64_t twiceL, int sign) {
 void fftGridPowers(std::span<const std::complex<double>> samples, double dt, std::size_t fftLength, double start,
                    int sign, std::size_t count, std::span<double> out) {
   const std::size_t n = samples.size();
+  if (count == 0) return;
+  if (n == 0) {
+    for (std::size_t k = 0; k < count; ++k) out[k] = 0.0;
+    return;
+  }
   const std::size_t length = powerOfTwoAtLeast(n + count - 1);
   thread_local Workspace work;
   work.reserve(length);

@@ -92,6 +92,13 @@ TEST(Periodogram, TheKeptFilterServesAnotherSignalOfTheSameShape) {
   }
 }
 
+// No samples: every power is 0 (not a transform of a negative length).
+TEST(Periodogram, NoSamplesGiveZeroPowers) {
+  std::vector<double> powers(5, 1.0);
+  fftGridPowers({}, 0.01, 16, 0.1, +1, powers.size(), powers);
+  for (double p : powers) EXPECT_EQ(p, 0.0);
+}
+
 // A bin in the wrong place would be far outside the tolerance: a tone on
 // bin 7 shows there and not on its neighbours.
 TEST(Periodogram, ATonePeaksOnItsBin) {
