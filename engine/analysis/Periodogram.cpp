@@ -3,49 +3,143 @@
 #include <fftw3.h>
 
 #include <cmath>
+#include <cstdint>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <numbers>
+#include <utility>
 
 namespace hemiroll::analysis {
 
 namespace {
 
-std::mutex& plannerLock() {
-  static std::mutex lock;
-  return lock;
-}
-
 struct FftwFree {
   void operator()(fftw_complex* p) const { fftw_free(p); }
 };
+using FftwBuffer = std::unique_ptr<fftw_complex[], FftwFree>;
+
+FftwBuffer fftwBuffer(std::size_t length) {
+  return FftwBuffer(static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * length)));
+}
+
+// One in-place plan per (power-of-two length, direction), made once and
+// kept for the process: at most 2 x 64 of them, each executed on any
+// fftw_malloc'd buffer of its length (fftw_execute_dft is thread-safe; the
+// planner is not, hence the lock). Why powers of two: planning a transform
+// of an awkward length (4 x 5961 = 4 x 3^1 x 1987) cost FFTW ~3 ms even
+// with FFTW_ESTIMATE, more than the transform, and a sweep's windows have
+// as many lengths as points.
+fftw_plan planOf(std::size_t length, int direction) {
+  static std::mutex lock;
+  static std::map<std::pair<std::size_t, int>, fftw_plan> plans;
+  const std::lock_guard<std::mutex> guard(lock);
+  fftw_plan& plan = plans[{length, direction}];
+  if (plan == nullptr) {
+    // FFTW_ESTIMATE: chosen by rule, the buffer untouched while planning.
+    const FftwBuffer scratch = fftwBuffer(length);
+    plan = fftw_plan_dft_1d(static_cast<int>(length), scratch.get(), scratch.get(), direction, FFTW_ESTIMATE);
+  }
+  return plan;
+}
+
+std::size_t powerOfTwoAtLeast(std::size_t n) {
+  std::size_t p = 1;
+  while (p < n) p *= 2;
+  return p;
+}
+
+// Each thread's two transform buffers, grown as needed and kept (a sweep's
+// worker analyses many points of one length; no allocation per search).
+// The filter's transform depends only on the key below, so a search of the
+// same shape as the last one (the rose's rho at every sweep point) reuses it.
+struct FilterKey {
+  std::size_t length = 0, fftLength = 0, samples = 0, count = 0;
+  int sign = 0;
+  bool operator==(const FilterKey&) const = default;
+};
+struct Workspace {
+  std::size_t length = 0;
+  FftwBuffer signal, filter;
+  FilterKey filterKey;  // what `filter` holds the transform of; empty: nothing
+  void reserve(std::size_t n) {
+    if (n <= length) return;
+    signal = fftwBuffer(n);
+    filter = fftwBuffer(n);
+    length = n;
+    filterKey = {};
+  }
+};
+
+// exp(-i pi sign j^2 / L): the chirp, its phase reduced in integers (j^2
+// mod 2L is exact below 2^63), so it is as accurate for j = 10^5 as for 1.
+double chirpPhase(std::int64_t j, std::int64_t twiceL, int sign) {
+  const std::int64_t r = (j * j) % twiceL;
+  return -std::numbers::pi * sign * 2.0 * static_cast<double>(r) / static_cast<double>(twiceL);
+}
+std::complex<double> chirp(std::int64_t j, std::int64_t twiceL, int sign) {
+  return std::polar(1.0, chirpPhase(j, twiceL, sign));
+}
 
 }  // namespace
 
+// The grid's k-th power is |X_k|^2 with X_k = sum_m a_m w^(k m), a_m the
+// shifted samples and w = exp(-2 pi i sign / fftLength): a transform of
+// fftLength points read at its first `count` bins. Bluestein's identity
+// k m = (k^2 + m^2 - (k - m)^2) / 2 makes it a convolution,
+//   X_k = c_k sum_m (a_m c_m) conj(c_(k-m)),   c_j = w^(j^2 / 2),
+// of n samples with count + n - 1 chirp values, done by transforms of a
+// power of two P >= n + count - 1. |c_k| = 1, so the power is |y_k|^2 / P^2.
 void fftGridPowers(std::span<const std::complex<double>> samples, double dt, std::size_t fftLength, double start,
                    int sign, std::size_t count, std::span<double> out) {
-  const std::unique_ptr<fftw_complex[], FftwFree> buffer(
-      static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * fftLength)));
-  fftw_plan plan = nullptr;
-  {
-    // FFTW_ESTIMATE: the plan is chosen by rule, not by timing, and the
-    // buffer is not touched while planning.
-    const std::lock_guard<std::mutex> guard(plannerLock());
-    plan = fftw_plan_dft_1d(static_cast<int>(fftLength), buffer.get(), buffer.get(),
-                            sign > 0 ? FFTW_FORWARD : FFTW_BACKWARD, FFTW_ESTIMATE);
+  const std::size_t n = samples.size();
+  if (count == 0) return;
+  if (n == 0) {
+    for (std::size_t k = 0; k < count; ++k) out[k] = 0.0;
+    return;
   }
-  // The shift that puts `start` on bin 0: exp(-2 pi i sign start m dt).
+  const std::size_t length = powerOfTwoAtLeast(n + count - 1);
+  thread_local Workspace work;
+  work.reserve(length);
+  fftw_complex* a = work.signal.get();
+  fftw_complex* h = work.filter.get();
+  const auto twiceL = static_cast<std::int64_t>(2 * fftLength);
+  // The shift that puts `start` on bin 0, exp(-2 pi i sign start m dt), and
+  // the chirp c_m, as one phase.
   const double turn = -2.0 * std::numbers::pi * (sign > 0 ? 1.0 : -1.0) * start * dt;
-  for (std::size_t m = 0; m < fftLength; ++m) {
+  for (std::size_t m = 0; m < length; ++m) {
     std::complex<double> z(0.0, 0.0);
-    if (m < samples.size()) z = samples[m] * std::polar(1.0, turn * static_cast<double>(m));
-    buffer[m][0] = z.real();
-    buffer[m][1] = z.imag();
+    if (m < n)
+      z = samples[m] * std::polar(1.0, turn * static_cast<double>(m) + chirpPhase(static_cast<std::int64_t>(m), twiceL, sign));
+    a[m][0] = z.real();
+    a[m][1] = z.imag();
   }
-  fftw_execute(plan);
-  for (std::size_t k = 0; k < count; ++k) out[k] = buffer[k][0] * buffer[k][0] + buffer[k][1] * buffer[k][1];
-  const std::lock_guard<std::mutex> guard(plannerLock());
-  fftw_destroy_plan(plan);
+  const FilterKey key{length, fftLength, n, count, sign};
+  if (!(work.filterKey == key)) {
+    // conj(c_j) at j = 0 .. count - 1 and, wrapped round, j = -(n - 1) .. -1.
+    for (std::size_t m = 0; m < length; ++m) h[m][0] = h[m][1] = 0.0;
+    for (std::size_t j = 0; j < count; ++j) {
+      const std::complex<double> c = std::conj(chirp(static_cast<std::int64_t>(j), twiceL, sign));
+      h[j][0] = c.real();
+      h[j][1] = c.imag();
+    }
+    for (std::size_t j = 1; j < n; ++j) {
+      const std::complex<double> c = std::conj(chirp(static_cast<std::int64_t>(j), twiceL, sign));
+      h[length - j][0] = c.real();
+      h[length - j][1] = c.imag();
+    }
+    fftw_execute_dft(planOf(length, FFTW_FORWARD), h, h);
+    work.filterKey = key;
+  }
+  fftw_execute_dft(planOf(length, FFTW_FORWARD), a, a);
+  for (std::size_t m = 0; m < length; ++m) {
+    const std::complex<double> product = std::complex<double>(a[m][0], a[m][1]) * std::complex<double>(h[m][0], h[m][1]);
+    a[m][0] = product.real();
+    a[m][1] = product.imag();
+  }
+  fftw_execute_dft(planOf(length, FFTW_BACKWARD), a, a);
+  const double scale = 1.0 / (static_cast<double>(length) * static_cast<double>(length));
+  for (std::size_t k = 0; k < count; ++k) out[k] = (a[k][0] * a[k][0] + a[k][1] * a[k][1]) * scale;
 }
 
 }  // namespace hemiroll::analysis

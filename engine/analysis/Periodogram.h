@@ -7,10 +7,14 @@
 // fftLength log(fftLength).
 //
 // How: the samples are shifted by `start` (multiplied by exp(-+2 pi i start
-// m dt)), zero-padded to fftLength and transformed, forwards for positive
-// frequencies and backwards for negative ones; bin k is then the grid's k-th
-// frequency. Its round-off differs from the direct sum's in the last bits
-// (DominantTone uses it to find the peak and the direct sum for the values it
+// m dt)); bin k of a transform of fftLength points is then the grid's k-th
+// frequency. That transform is evaluated at its first `count` bins only, by
+// Bluestein's chirp-z convolution with FFTs of a power of two (issue 32):
+// FFTW planned a transform of an awkward length (4 x a prime, as a sweep's
+// windows give) in ~3 ms, more than the sweep point's integration, and a
+// sweep has as many lengths as points; the power-of-two plans are made once.
+// The round-off differs from the direct sum's in the last bits (DominantTone
+// uses these powers to find the peak and the direct sum for the values it
 // reports). FFTW's planner is not thread-safe: plans are made under one lock
 // (sweeps run tone searches on many threads); executing them is.
 

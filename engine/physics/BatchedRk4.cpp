@@ -125,14 +125,27 @@ int RoseBatch::add(const HemisphereParams& params, const RoseDef& rose, const Bo
   return lane;
 }
 
-void RoseBatch::step(double t, double h) {
-  const lanes::BatchView v = beginStep(-1);
+void RoseBatch::step(double t, double h, double gridEnd) {
+  lanes::BatchView v = beginStep(-1);
+  drivePadded_ = v.padded;
+  driveEnd_.resize(4 * static_cast<std::size_t>(v.padded));  // allocates only when lanes were added
+  v.drive = driveEnd_.data();
+  v.gridEnd = gridEnd;
   switch (width()) {
     case 8: lanes::roseStepLanes8(v, t, h); break;
     case 4: lanes::roseStepLanes4(v, t, h); break;
     case 2: lanes::roseStepLanes2(v, t, h); break;
     default: lanes::roseStepLanes1(v, t, h); break;
   }
+}
+
+Vec2 RoseBatch::drivePosition(int lane) const {
+  return {driveEnd_[static_cast<std::size_t>(lane)], driveEnd_[static_cast<std::size_t>(drivePadded_ + lane)]};
+}
+
+Vec2 RoseBatch::gridDrivePosition(int lane) const {
+  return {driveEnd_[static_cast<std::size_t>(2 * drivePadded_ + lane)],
+          driveEnd_[static_cast<std::size_t>(3 * drivePadded_ + lane)]};
 }
 
 ForceDrivenBatch::ForceDrivenBatch(std::optional<ForceMethod> coupling, int width)

@@ -49,6 +49,11 @@ struct BatchView {
   double* state;
   int padded;
   int method;  // the coupling's ForceMethod, or -1 for free motion (12-state only)
+  // Rose only: the kernel writes the drive's p at the step's end t + h here,
+  // x in drive[0 .. padded), y in drive[padded .. 2 padded), and p at
+  // gridEnd in the next two rows (RoseBatch::drivePosition, gridDrivePosition).
+  double* drive = nullptr;
+  double gridEnd = 0.0;
 };
 // Rows shared by both models: the mass constants, then whether a lane is active.
 enum Row : int {
@@ -133,8 +138,23 @@ class RoseBatch final : public LaneBatch<8> {
   explicit RoseBatch(int width = bestLaneWidth());
   // The new lane's index.
   int add(const HemisphereParams& params, const RoseDef& rose, const BodyState& x0);
-  // One RK4 step of every active lane from t to t + h.
-  void step(double t, double h);
+  // One RK4 step of every active lane from t to t + h; gridEnd is the time
+  // the caller puts the clock on after it (the grid time, which may differ
+  // from t + h in the last bit), where gridDrivePosition evaluates the rose.
+  void step(double t, double h) { step(t, h, t + h); }
+  void step(double t, double h, double gridEnd);
+  // The drive's p at t + h of the last step, as the step's last stage
+  // evaluated it in the lanes: the bits of RoseDrive::at(t + h).p, so the
+  // domain check after a step needs no scalar evaluation of the rose
+  // (PrescribedDriveSystem::domainEventWith). Only for a lane that was
+  // active in the last step (a group of retired lanes is not stepped).
+  Vec2 drivePosition(int lane) const;
+  // The same at the last step's gridEnd (RoseDrive::at(gridEnd).p's bits).
+  Vec2 gridDrivePosition(int lane) const;
+
+ private:
+  std::vector<double> driveEnd_;
+  int drivePadded_ = 0;
 };
 
 // The 12-state force-driven model (ForceDrivenSystem): free motion, or every

@@ -95,10 +95,18 @@ inline void roseStep(const BatchView& v, double t, double h) {
     const MassConstantsOf<T> c = massConstantsAt<T>(v, first);
     auto at = [&](int r) { return rowAt<T>(v, r, first); };
     const T r1 = at(kRoseR1), r2 = at(kRoseR2), k = at(kRoseK), omega = at(kRoseOmega);
+    Real2Of<T> p;  // after the step: the last stage's, at t + h
     stepGroup<8, T>(v, first, t, h, [&](double tau, const T* x, T* dxdt) {
       const RoseSampleOf<T> s = roseSampleOf(r1, r2, k, omega, tau);
+      p = s.p;
       prescribedRatesOf(c, s.p, s.pDot, x, dxdt);
     });
+    store(v.drive + first, p.x);
+    store(v.drive + v.padded + first, p.y);
+    // Where the grid time is not t + h to the bit, the rose once more there.
+    const Real2Of<T> grid = v.gridEnd == t + h ? p : roseSampleOf(r1, r2, k, omega, v.gridEnd).p;
+    store(v.drive + 2 * v.padded + first, grid.x);
+    store(v.drive + 3 * v.padded + first, grid.y);
   }
 }
 

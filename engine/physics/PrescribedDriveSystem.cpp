@@ -38,7 +38,10 @@ DomainMargins PrescribedDriveSystem::margins(double t, const BodyState& x) const
 }
 
 DomainEvent PrescribedDriveSystem::domainEvent(double t, const BodyState& x) const {
-  const Vec2 p = trajectory_.at(t).p;
+  return domainEventWith(t, x, trajectory_.at(t).p);
+}
+
+DomainEvent PrescribedDriveSystem::domainEventWith(double t, const BodyState& x, const Vec2& p) const {
   if (interior_.surelyInside(x[u_o], x[v_o], p.x(), p.y()) && x.allFinite()) return DomainEvent::None;
   return OdeSystem::domainEvent(t, x);
 }

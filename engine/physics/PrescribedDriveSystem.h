@@ -45,6 +45,9 @@ class PrescribedDriveSystem final : public OdeSystem<8> {
   DomainMargins margins(double t, const BodyState& x) const override;
   // The margins' answer, without their trigonometry away from the edges.
   DomainEvent domainEvent(double t, const BodyState& x) const override;
+  // The same answer given the trajectory's p at t (the lanes computed it
+  // while stepping: BatchedRk4.h), without evaluating the trajectory again.
+  DomainEvent domainEventWith(double t, const BodyState& x, const Vec2& p) const;
 
   // f of eq. (46): the in-face force on the mass point that realises p''(t).
   Vec2 drivingForce(double t, const BodyState& x) const;

@@ -15,8 +15,9 @@ bool RoseLockstepRun::eligible(const script::ScenarioDef& scenario, const RunSet
          settings.orientation == physics::OrientationForm::ContactAngles;
 }
 
-RoseLockstepRun::RoseLockstepRun(std::vector<script::ScenarioDef> scenarios, const RunSettings& settings, int width)
-    : scenarios_(std::move(scenarios)), settings_(settings), width_(width) {
+RoseLockstepRun::RoseLockstepRun(std::vector<script::ScenarioDef> scenarios, const RunSettings& settings, int width,
+                                 RowContent content)
+    : scenarios_(std::move(scenarios)), settings_(settings), width_(width), content_(content) {
   for (const script::ScenarioDef& s : scenarios_)
     if (!eligible(s, settings_))
       throw std::invalid_argument("a lockstep run takes rose drives with rk4 on the contact angles only");
@@ -35,7 +36,13 @@ std::vector<RunSummary> RoseLockstepRun::run(const LaneRowCallback& onRow) const
   physics::RungeKutta4<8> rk4;
   std::vector<RunSummary> summaries(lanes);
   auto emit = [&](std::size_t lane, double t, const physics::BodyState& x) {
-    const TrajectoryRow row = roseRow(systems[lane], t, x);
+    TrajectoryRow row;
+    if (content_ == RowContent::Full) {
+      row = roseRow(systems[lane], t, x);
+    } else {
+      row.time = t;
+      row.state = systems[lane].fullState(t, x);
+    }
     summaries[lane].endTime = row.time;
     summaries[lane].finalEnergy = row.energy;
     onRow(lane, row);
@@ -58,21 +65,21 @@ std::vector<RunSummary> RoseLockstepRun::run(const LaneRowCallback& onRow) const
   for (long long i = 1; i <= steps && batch.activeCount() > 0; ++i) {
     const double h = i == steps ? lastStep : settings_.timeStep;
     const double target = i == steps ? settings_.duration : static_cast<double>(i) * settings_.timeStep;
-    batch.step(start, h);
+    batch.step(start, h, target);
     for (std::size_t lane = 0; lane < lanes; ++lane) {
       const int index = static_cast<int>(lane);
       if (!batch.active(index)) continue;
       RunSummary& summary = summaries[lane];
       summary.steps = i;
       const physics::BodyState x = batch.state(index);
-      if (systems[lane].domainEvent(start + h, x) == physics::DomainEvent::None) {
+      if (systems[lane].domainEventWith(start + h, x, batch.drivePosition(index)) == physics::DomainEvent::None) {
         if (i % settings_.every == 0 || i == steps) emit(lane, target, x);
         // ScenarioRun puts the clock on the grid (Stepper::reset), which
         // classifies the state again at the grid time; where that differs
         // from start + h in the last bit, so may the verdict, and its next
         // step then reports the event without stepping.
         if (i < steps && target != start + h) {
-          const physics::DomainEvent atGrid = systems[lane].domainEvent(target, x);
+          const physics::DomainEvent atGrid = systems[lane].domainEventWith(target, x, batch.gridDrivePosition(index));
           if (atGrid != physics::DomainEvent::None) {
             summary.steps = i + 1;
             summary.event = atGrid;

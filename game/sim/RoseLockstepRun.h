@@ -24,9 +24,15 @@ class RoseLockstepRun {
 
   static bool eligible(const script::ScenarioDef& scenario, const RunSettings& settings);
 
+  // What a row holds: everything ScenarioRun's has, or only the time and
+  // the state (energy and face force left 0, and so the summary's final
+  // energy): a sweep measures neither, and they cost it ~8 % (issue 32).
+  enum class RowContent { Full, StateOnly };
+
   // Every scenario eligible; width is a lane width this CPU runs
   // (physics::laneWidthSupported). Throws std::invalid_argument otherwise.
-  RoseLockstepRun(std::vector<script::ScenarioDef> scenarios, const RunSettings& settings, int width);
+  RoseLockstepRun(std::vector<script::ScenarioDef> scenarios, const RunSettings& settings, int width,
+                  RowContent content = RowContent::Full);
 
   // Rows of lane i in the order ScenarioRun::run gives them (lanes interleaved).
   std::vector<RunSummary> run(const LaneRowCallback& onRow) const;
@@ -35,6 +41,7 @@ class RoseLockstepRun {
   std::vector<script::ScenarioDef> scenarios_;
   RunSettings settings_;
   int width_;
+  RowContent content_;
 };
 
 }  // namespace hemiroll::game

@@ -140,7 +140,8 @@ std::vector<PointMeasurement> measurePoints(const SweepGrid& grid, const std::ve
   std::vector<PointRecorder> recorders;  // each built in place: a copy would not keep the reserved columns
   recorders.reserve(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) recorders.emplace_back(settings);
-  const std::vector<RunSummary> summaries = RoseLockstepRun(std::move(scenarios), settings, laneWidth)
+  const std::vector<RunSummary> summaries = RoseLockstepRun(std::move(scenarios), settings, laneWidth,
+                                                            RoseLockstepRun::RowContent::StateOnly)
                                                 .run([&](std::size_t lane, const TrajectoryRow& row) {
                                                   recorders[lane].add(row);
                                                 });

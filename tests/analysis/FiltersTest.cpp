@@ -2,8 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <numbers>
+#include <random>
 #include <vector>
 
 #include "engine/analysis/Filters.h"
@@ -27,6 +30,42 @@ TEST(Filters, LocalSlopeIsExactOnAQuadratic) {
   for (int i = 0; i < 500; ++i) v.push_back(0.3 * (i * dt) * (i * dt) - 2.0 * i * dt);
   const std::vector<double> s = localSlope(v, dt, 50);
   for (std::size_t i = 0; i < v.size(); ++i) EXPECT_NEAR(s[i], 0.6 * i * dt - 2.0, i == 0 || i + 1 == v.size() ? 4e-3 : 1e-9);
+}
+
+// localSlope runs its whole windows side by side (issue 32); each slope must
+// keep the bits of the plain one-window-at-a-time definition, ends included.
+TEST(Filters, LocalSlopeHasTheBitsOfOneWindowAtATime) {
+  auto plain = [](const std::vector<double>& v, double dt, std::size_t halfWidth) {
+    const std::size_t n = v.size();
+    std::vector<double> out(n, 0.0);
+    halfWidth = std::max<std::size_t>(halfWidth, 1);
+    for (std::size_t i = 0; i < n && n >= 2; ++i) {
+      const std::size_t h = std::min({halfWidth, i, n - 1 - i});
+      if (h == 0) {
+        out[i] = i == 0 ? (v[1] - v[0]) / dt : (v[n - 1] - v[n - 2]) / dt;
+        continue;
+      }
+      double num = 0.0, den = 0.0;
+      for (std::size_t k = 1; k <= h; ++k) {
+        num += static_cast<double>(k) * (v[i + k] - v[i - k]);
+        den += 2.0 * static_cast<double>(k) * static_cast<double>(k);
+      }
+      out[i] = num / (den * dt);
+    }
+    return out;
+  };
+  std::mt19937 rng(32);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  for (const std::size_t n : {2u, 3u, 7u, 100u, 1001u}) {
+    std::vector<double> v(n);
+    double walk = 0.0;
+    for (double& x : v) x = walk += normal(rng);
+    for (const std::size_t halfWidth : {0u, 1u, 3u, 50u, 600u}) {
+      const std::vector<double> fast = localSlope(v, 0.01, halfWidth), slow = plain(v, 0.01, halfWidth);
+      ASSERT_EQ(fast.size(), slow.size());
+      EXPECT_EQ(std::memcmp(fast.data(), slow.data(), sizeof(double) * n), 0) << "n " << n << " half width " << halfWidth;
+    }
+  }
 }
 
 TEST(Filters, UnwrapUndoesWrappingIntoMinusPiPi) {

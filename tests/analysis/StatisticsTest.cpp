@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <random>
 #include <vector>
 
 #include "engine/analysis/Statistics.h"
@@ -29,6 +31,27 @@ TEST(Statistics, EmptyAndSingleValuesGiveZeroNotNaN) {
   EXPECT_EQ(mean(none), 0.0);
   EXPECT_EQ(standardDeviation(one), 0.0);
   EXPECT_EQ(summarize(none).count, 0);
+}
+
+// quantile selects its two order statistics instead of sorting: the result
+// must be the sorted definition's to the bit, ties and odd sizes included.
+TEST(Statistics, QuantileBySelectionIsTheSortedDefinition) {
+  std::mt19937 rng(32);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  for (const std::size_t n : {1u, 2u, 3u, 10u, 101u, 1000u}) {
+    std::vector<double> v(n);
+    for (double& x : v) x = std::round(8.0 * normal(rng)) / 8.0;  // coarse: many ties
+    std::vector<double> sorted = v;
+    std::sort(sorted.begin(), sorted.end());
+    for (const double q : {0.0, 0.05, 0.25, 1.0 / 3.0, 0.5, 0.77, 0.95, 1.0}) {
+      const double at = q * static_cast<double>(n - 1);
+      const auto below = static_cast<std::size_t>(std::floor(at));
+      const std::size_t above = std::min(below + 1, n - 1);
+      const double w = at - static_cast<double>(below);
+      const double expected = sorted[below] * (1.0 - w) + sorted[above] * w;
+      EXPECT_EQ(quantile(v, q), expected) << "n " << n << " q " << q;
+    }
+  }
 }
 
 }  // namespace

@@ -77,6 +77,34 @@ TEST(RoseLockstepRun, EveryLaneHasTheRowsAndSummaryOfItsScalarRun) {
   }
 }
 
+// A sweep's rows (StateOnly): the same times, states and events as the full
+// rows, without the energy and face force a sweep does not measure.
+TEST(RoseLockstepRun, StateOnlyRowsAreTheFullRowsWithoutEnergyAndForce) {
+  RunSettings settings;
+  settings.duration = 1.5;
+  settings.every = 10;
+  const std::vector<script::ScenarioDef> all = scenarios();
+  const int width = physics::bestLaneWidth();
+  std::vector<std::vector<TrajectoryRow>> full(all.size()), lean(all.size());
+  const std::vector<RunSummary> fullSummaries = RoseLockstepRun(all, settings, width).run(
+      [&](std::size_t lane, const TrajectoryRow& row) { full[lane].push_back(row); });
+  const std::vector<RunSummary> leanSummaries =
+      RoseLockstepRun(all, settings, width, RoseLockstepRun::RowContent::StateOnly)
+          .run([&](std::size_t lane, const TrajectoryRow& row) { lean[lane].push_back(row); });
+  for (std::size_t lane = 0; lane < all.size(); ++lane) {
+    EXPECT_EQ(leanSummaries[lane].event, fullSummaries[lane].event) << lane;
+    EXPECT_EQ(leanSummaries[lane].steps, fullSummaries[lane].steps) << lane;
+    EXPECT_TRUE(sameBits(leanSummaries[lane].endTime, fullSummaries[lane].endTime)) << lane;
+    ASSERT_EQ(lean[lane].size(), full[lane].size()) << lane;
+    for (std::size_t r = 0; r < lean[lane].size(); ++r) {
+      TrajectoryRow expected = full[lane][r];
+      expected.energy = 0.0;
+      expected.faceForce.setZero();
+      ASSERT_TRUE(sameRow(lean[lane][r], expected)) << "lane " << lane << ", row " << r;
+    }
+  }
+}
+
 TEST(RoseLockstepRun, TakesOnlyRoseDrivesWithRk4) {
   const std::vector<script::ScenarioDef> all = scenarios();
   RunSettings settings;

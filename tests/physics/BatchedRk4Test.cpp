@@ -98,20 +98,34 @@ void expectRoseLanesMatchScalar(int width, int steps, int retireLane, int retire
     ASSERT_TRUE(sameBits<8>(batch.previousState(lane), scalar[lane])) << "lane " << lane;
   physics::RungeKutta4<8> rk4;
   const double h = 1e-3;
+  int gridEndsOffTheStep = 0;
   for (int i = 0; i < steps; ++i) {
     if (i == retireAfter) batch.retire(retireLane);
     const double t = static_cast<double>(i) * h;
-    batch.step(t, h);
+    // The grid end as a run's clock gives it, i h, which is not always t + h.
+    const double gridEnd = static_cast<double>(i + 1) * h;
+    gridEndsOffTheStep += gridEnd != t + h;
+    batch.step(t, h, gridEnd);
     for (int lane = 0; lane < kLanes; ++lane) {
       ASSERT_TRUE(sameBits<8>(batch.previousState(lane), scalar[lane])) << "lane " << lane << ", step " << i;
       if (lane != retireLane || i < retireAfter) rk4.step(systems[lane], t, scalar[lane], h);
       ASSERT_TRUE(sameBits<8>(batch.state(lane), scalar[lane]))
           << "width " << width << ", lane " << lane << ", step " << i << ": " << batch.state(lane).transpose()
           << " vs " << scalar[lane].transpose();
+      // The drive's position the lanes keep for the domain check is the
+      // scalar rose's at the step's end, for every lane that stepped.
+      if (!batch.active(lane)) continue;
+      const physics::Vec2 p = roses[lane].at(t + h).p;
+      ASSERT_EQ(batch.drivePosition(lane).x(), p.x()) << "width " << width << ", lane " << lane << ", step " << i;
+      ASSERT_EQ(batch.drivePosition(lane).y(), p.y()) << "width " << width << ", lane " << lane << ", step " << i;
+      const physics::Vec2 q = roses[lane].at(gridEnd).p;
+      ASSERT_EQ(batch.gridDrivePosition(lane).x(), q.x()) << "width " << width << ", lane " << lane << ", step " << i;
+      ASSERT_EQ(batch.gridDrivePosition(lane).y(), q.y()) << "width " << width << ", lane " << lane << ", step " << i;
     }
   }
   EXPECT_EQ(batch.activeCount(), kLanes - 1);
   EXPECT_FALSE(batch.active(retireLane));
+  EXPECT_GT(gridEndsOffTheStep, 0) << "the rose at a grid end other than t + h was not tried";
 }
 
 TEST(BatchedRk4Test, RoseLanesHaveTheScalarBitsAtEveryWidth) {

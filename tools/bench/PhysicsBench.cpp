@@ -63,6 +63,26 @@ void BM_ForceDrivenRk4Step(benchmark::State& state) {
 }
 BENCHMARK(BM_ForceDrivenRk4Step)->Arg(0)->Arg(1)->ArgName("coupledM3");
 
+// One right-hand side waiting on the one before, as RK4's stages do (issue
+// 32, item 4): each evaluation's input is the stage x0 + (h/2) dx formed
+// from the previous one's output, so this is the latency of an evaluation
+// plus a stage, where BM_ForceDrivenDerivative (independent calls on one
+// input, overlapped by the CPU) is its throughput. Four of these plus the
+// final combination are what an RK4 step cannot go below.
+void BM_ForceDrivenDerivativeChained(benchmark::State& state) {
+  ForceDrivenSystem system{HemisphereParams{}};
+  configure(system, static_cast<int>(state.range(0)));
+  const ForceDrivenState x0 = typicalState();
+  ForceDrivenState x = x0, dx;
+  for (auto _ : state) {
+    system.derivative(0.0, x, dx);
+    for (int i = 0; i < 12; ++i) x[i] = x0[i] + 5e-4 * dx[i];
+  }
+  benchmark::DoNotOptimize(x);
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_ForceDrivenDerivativeChained)->Arg(0)->Arg(1)->ArgName("coupledM3");
+
 // The same model with the orientation as a quaternion (RotationDrivenSystem.h),
 // on the same state.
 void configure(RotationDrivenSystem& system, int mode) {
