@@ -7,6 +7,7 @@ namespace hemiroll::game {
 const char* sessionUsage() {
   return "usage: hemiroll session PROTOCOL.lua --participant ID [--session ID] [--data DIR]\n"
          "                        [--bot BOT.lua] [--seed N] [--levels DIR]\n"
+         "                        [--device-profile NAME] [--device udp [--port N]]\n"
          "\n"
          "Runs a research protocol (docs/PROTOCOLS.md) for one participant: every trial of\n"
          "its plan is recorded into DIR/<experiment>/<participant>/<session>/ (trial CSV +\n"
@@ -24,6 +25,13 @@ const char* sessionUsage() {
          "                    default: the protocol's; a resumed session keeps its own)\n"
          "  --levels DIR      where level files are looked for after the protocol's folder\n"
          "                    (default: the folder named levels that holds the protocol)\n"
+         "  --device-profile NAME  the device's limits (devices/NAME.lua or a file;\n"
+         "                    docs/UDP_BRIDGE.md); default: the protocol's device_profile\n"
+         "  --device udp      a participant at a real haptic device behind the UDP bridge\n"
+         "                    plays every trial, without a window (docs/UDP_BRIDGE.md);\n"
+         "                    the trial lines name any stop and the packet counts\n"
+         "  --port N          the bridge's port (default 47110)\n"
+         "  --client-timeout S  how long each trial waits for the device (default 30 s)\n"
          "  --help            print this help\n"
          "\n"
          "Exit codes: 0 the session ran to its end or to a break that ends the sitting\n"
@@ -44,12 +52,18 @@ SessionOptionsResult parseSessionOptions(const std::vector<std::string>& args) {
       .option("--data", cli::text(o.dataRoot, "a directory"))
       .option("--bot", cli::text(o.botPath, "a bot file"))
       .option("--levels", cli::text(o.levelsDir, "a directory"))
+      .option("--device-profile", cli::text(o.deviceProfile, "a device profile name or file"))
+      .option("--device", cli::text(o.device, "bot or udp"))
+      .option("--port", cli::integerIn(o.port, 1, 65535, "a port from 1 to 65535"))
+      .option("--client-timeout", cli::numberIn(o.clientTimeout, 0.001, 3600.0, "seconds from 0.001 to 3600"))
       // Lua integers are signed 64-bit, and the plan's trial seeds reach bots as one.
       .option("--seed", cli::unsignedUpTo(o.seed, 0x7fffffffffffffffULL, "a whole number from 0 to 9223372036854775807"));
   result.error = reader.read(args);
   if (!result.error.empty() || o.help) return result;
   if (o.protocolPath.empty()) result.error = "missing the protocol file";
   else if (o.participant.empty()) result.error = "missing --participant ID";
+  else if (o.device != "bot" && o.device != "udp") result.error = "--device needs bot or udp, not '" + o.device + "'";
+  else if (o.device == "udp" && o.botPath) result.error = "--device udp and --bot exclude each other: the participant plays";
   return result;
 }
 

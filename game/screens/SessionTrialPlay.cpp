@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "engine/haptics/devices/DeviceFactory.h"
+#include "game/trial/DeviceTrial.h"
 #include "game/research/ResearchSession.h"
 #include "game/screens/ScreenHost.h"
 #include "game/screens/ScreenStack.h"
@@ -24,6 +25,8 @@ std::unique_ptr<PlaySession> SessionTrialPlay::begin(script::LoadedLevel& level,
   // The plan's haptic guidance: the autopilot plans beside the participant
   // and the device pulls towards its plan (felt on a device with force output).
   def.guidance = trial.guidance;
+  // The study's device (its protocol's, or the session's --device-profile) holds a device behind the bridge.
+  if (def.device == "udp" && research_.deviceProfile()) useDeviceProfile(def, *research_.deviceProfile());
   const std::optional<haptics::DeviceSpec> spec = haptics::DeviceFactory().specOf(def.device, def.deviceOptions);
   if (!spec) throw std::runtime_error("unknown device '" + def.device + "'");
   auto session = std::make_unique<PlaySession>(level, def);
@@ -58,7 +61,7 @@ void SessionTrialPlay::end(SessionTrialEnd end, const PlaySession* session) {
   ended_ = true;
   if (end.recorded && session != nullptr) {
     try {
-      research_.finishNext(*recording_, end.result, session->timing());
+      research_.finishNext(*recording_, end.result, session->timing(), deviceResultFields(nullptr, session->deviceName()));
     } catch (const std::exception& e) {
       end.recorded = false;
       end.error = e.what();
