@@ -84,8 +84,10 @@ BENCHMARK(BM_UdpBridgeRoundTrip)->Arg(1000)->Arg(990)->Iterations(1)->Unit(bench
 
 // End to end, a step of the hand to the force's response (issue 31): the
 // simulated device (a Touch's figures: 3.3 N clamp, 50 g handle, 0.02 N
-// friction, 0.055 mm encoder counts) reports a 2 mm square wave on x every
-// 50 ms; the latency runs from sending the first state after an edge to the
+// friction, 0.055 mm encoder counts) reports a 2 mm square wave on x, an
+// edge every 47 ms (at 990 Hz the client's phase to the loop's grid moves
+// 0.47 of a period between edges, so the edges sample every phase; every
+// 50 ms would sample two); the latency runs from sending the first state after an edge to the
 // client receiving the first force computed from it that differs by more
 // than 0.02 N. The path: socket, the bridge's receiver, the servo loop's
 // next tick (physics, coupling, safety with its rate limit), socket back.
@@ -110,7 +112,7 @@ void BM_UdpBridgeStepResponse(benchmark::State& state) {
     options.friction = 0.02;
     options.resolution = 0.000055;
     options.step = 0.002;
-    options.stepPeriod = 0.1;
+    options.stepPeriod = 0.094;
     options.realtimePriority = 70;
     std::atomic<bool> stopClient{false};
     hapticclient::ClientSummary summary;
