@@ -51,20 +51,26 @@ std::vector<fs::path> deviceProfileFolders() {
   return folders;
 }
 
+std::vector<std::string> deviceProfileNames() {
+  std::set<std::string> names;
+  std::error_code ec;
+  for (const fs::path& folder : deviceProfileFolders())
+    for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec))
+      if (it->path().extension() == ".lua") names.insert(it->path().stem().string());
+  return {names.begin(), names.end()};
+}
+
 script::DeviceProfileDef loadDeviceProfile(const std::string& nameOrFile) {
   if (nameOrFile.empty()) throw script::ScriptError("an empty device profile name (try generic, touch, omega3, ...)");
   if (namesAFile(nameOrFile)) return script::DeviceProfileLoader().loadFile(nameOrFile);
   std::error_code ec;
   std::string searched, known;
-  std::set<std::string> names;
   for (const fs::path& folder : deviceProfileFolders()) {
     const fs::path file = folder / (nameOrFile + ".lua");
     if (fs::is_regular_file(file, ec)) return script::DeviceProfileLoader().loadFile(file.string());
     searched += (searched.empty() ? "" : ", ") + folder.string();
-    for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec))
-      if (it->path().extension() == ".lua") names.insert(it->path().stem().string());
   }
-  for (const std::string& n : names) known += (known.empty() ? "" : ", ") + n;
+  for (const std::string& n : deviceProfileNames()) known += (known.empty() ? "" : ", ") + n;
   throw script::ScriptError("unknown device profile '" + nameOrFile + "': no " + nameOrFile + ".lua in " + searched +
                             (known.empty() ? std::string(" (none holds a profile)") : "; known profiles: " + known));
 }

@@ -22,6 +22,9 @@ namespace hemiroll::game {
 // beside the running program and one level up (build/hemiroll in a checkout).
 std::vector<std::filesystem::path> deviceProfileFolders();
 
+// The names of the profiles those folders hold, sorted, each once.
+std::vector<std::string> deviceProfileNames();
+
 // A profile by name ("touch") or file ("my/lab_touch.lua": a name with a
 // '/' or ending in .lua is a file). Throws script::ScriptError: for an
 // unknown name, naming the folders searched and the profiles they hold;

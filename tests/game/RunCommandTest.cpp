@@ -5,6 +5,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -18,6 +20,7 @@
 #include "engine/haptics/HapticDevice.h"
 #include "engine/record/RecordingReader.h"
 #include "engine/record/ResultsFile.h"
+#include "tests/support/ChildProcess.h"
 #include "tests/support/ProcessRunner.h"
 #include "tests/support/TempDirectory.h"
 
@@ -154,6 +157,29 @@ TEST(RunCommand, ABadProfileIsNamedWithItsKey) {
                                           dir.write("h2.lua", kHoldBot), "--device-profile", "phantom9000"});
   EXPECT_EQ(unknown.exitCode, 2);
   EXPECT_THAT(unknown.err, HasSubstr("unknown device profile 'phantom9000'"));
+}
+
+// `run --realtime --device udp`: a person at a device (here the reference
+// client's simulated device, a second process) plays; the line names the
+// device, any stop and the packet counts, and the recording is the trial's.
+TEST(RunCommand, ADeviceBehindTheBridgePlaysInRealTime) {
+  TempDirectory dir;
+  const std::string level = dir.write("field.lua", R"lua(
+return { name = "field", params = { R = 0.04, m_s = 1.0, m_p = 0.2, g = 9.81 },
+         task = { targets = { u_ca = { value = {0.5, 0.5}, tol = 0.004 } }, time_limit = 1 } }
+)lua");
+  const std::string port = std::to_string(40000 + (::getpid() + 7919) % 20000);
+  ChildProcess run(kBinary, {"run", level, "--realtime", "--device", "udp", "--port", port, "--device-profile",
+                             "generic", "--client-timeout", "10", "--record", (dir.path() / "rec").string()});
+  const ProcessResult client = runProcess(HEMIROLL_HAPTIC_CLIENT, {"--port", port, "--duration", "2", "--centre",
+                                                                   "0,0,0.04", "--realtime-priority", "70"});
+  const int exit = run.wait();
+  EXPECT_TRUE(exit == 0 || exit == 1) << run.err();
+  const std::string line = onlyLine(run.out());
+  EXPECT_THAT(line, HasSubstr("\"bot\":\"\""));
+  EXPECT_THAT(line, HasSubstr("\"device\":\"udp\",\"device_profile\":\"generic\",\"stop\":"));
+  EXPECT_THAT(line, MatchesRegex(".*\"packets_received\":[1-9][0-9]*,.*"));
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / "rec" / "field_udp_seed0.csv"));
 }
 
 TEST(RunCommand, SuccessPrintsOneJsonLineAndExitsZero) {

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <set>
 #include <sstream>
 #include <thread>
@@ -235,16 +236,28 @@ return { experiment = "device-study", device_profile = "small.lua", blocks = { {
                          " above_continuous_limit_s = 100, max_stiffness_N_per_m = 2000, workspace_width_m = 0.2,"
                          " workspace_depth_m = 0.2, workspace_height_m = 0.2, update_rate_Hz = 1000 }");
   const std::string port = std::to_string(40000 + ::getpid() % 20000);
-  ChildProcess hemiroll(kBinary, {"session", protocol, "--participant", "p01", "--data", dir.path().string(),
-                                  "--device", "udp", "--port", port, "--client-timeout", "10"});
-  const ProcessResult client = runProcess(
-      HEMIROLL_HAPTIC_CLIENT, {"--port", port, "--duration", "2.5", "--centre", "0,0,0.04", "--circle-radius", "0.01",
-                               "--circle-frequency", "1", "--peak-force", "0.3", "--handle-mass", "0.05", "--friction",
-                               "0.02", "--resolution", "0.000055", "--loss", "0.02", "--reorder", "0.02", "--seed", "3",
-                               "--realtime-priority", "70"});
-  ASSERT_EQ(hemiroll.wait(), 0) << hemiroll.err();
-  EXPECT_THAT(client.out, HasSubstr("states_dropped "));
-  const fs::path folder = dir.path() / "device-study" / "p01" / "1";
+  // The bridge's 10 ms watchdog is the real one here: under ctest -j2 on two
+  // loaded cores the client can be starved past it (PlaySessionTest measured
+  // a fault at 0.16 s). A trial a stop ended is retried, at most three
+  // times, as RunCommandTest retries a stalled real-time run; anything else
+  // fails the test.
+  std::string participant;
+  for (int attempt = 1; attempt <= 3; ++attempt) {
+    participant = "p0" + std::to_string(attempt);
+    ChildProcess hemiroll(kBinary, {"session", protocol, "--participant", participant, "--data", dir.path().string(),
+                                    "--device", "udp", "--port", port, "--client-timeout", "10"});
+    const ProcessResult client = runProcess(
+        HEMIROLL_HAPTIC_CLIENT, {"--port", port, "--duration", "2.5", "--centre", "0,0,0.04", "--circle-radius", "0.01",
+                                 "--circle-frequency", "1", "--peak-force", "0.3", "--handle-mass", "0.05", "--friction",
+                                 "0.02", "--resolution", "0.000055", "--loss", "0.02", "--reorder", "0.02", "--seed",
+                                 "3", "--realtime-priority", "70"});
+    ASSERT_EQ(hemiroll.wait(), 0) << hemiroll.err();
+    EXPECT_THAT(client.out, HasSubstr("states_dropped "));
+    EXPECT_THAT(hemiroll.out(), HasSubstr("\"packets_out_of_order\":"));
+    if (hemiroll.out().find("\"stop\":\"\"") != std::string::npos) break;
+    std::cerr << "attempt " << attempt << " was stopped (machine load?): " << hemiroll.out() << "\n";
+  }
+  const fs::path folder = dir.path() / "device-study" / participant / "1";
   const record::Recording rec = record::RecordingReader::load(folder / "trial-001.csv");
   EXPECT_EQ(rec.meta.deviceSpec.maxForce, kPeak);
   double largest = 0.0;
@@ -266,8 +279,8 @@ return { experiment = "device-study", device_profile = "small.lua", blocks = { {
   EXPECT_GT(std::stoll(column("packets_received")), 1000);
   EXPECT_GT(std::stoll(column("packets_lost")), 0);
   EXPECT_GT(std::stoll(column("packets_out_of_order")), 0);
+  EXPECT_EQ(column("stop"), "");
   EXPECT_THAT(TempDirectory::read(folder / "trial-001.json"), HasSubstr("device states received"));
-  EXPECT_THAT(hemiroll.out(), HasSubstr("\"packets_out_of_order\":"));
 }
 
 TEST(SessionCommandTest, BadInputIsOneSentenceAndExitTwoWithNothingWritten) {
