@@ -24,6 +24,7 @@
 #include "game/commands/CommandUsage.h"
 #include "game/commands/ExitCode.h"
 #include "game/research/ResearchSession.h"
+#include "game/trial/DeviceProfiles.h"
 #include "game/trial/TrialSetup.h"
 
 namespace hemiroll::game {
@@ -196,6 +197,15 @@ std::vector<std::string> checkProtocol(const std::string& path) {
   std::vector<std::string> problems;
   const script::ProtocolDef protocol = script::ProtocolLoader().loadFile(path);
   (void)script::expandProtocol(protocol, protocol.seed);
+  // The study's device: every condition's coupling must be one it renders.
+  std::optional<script::DeviceProfileDef> device;
+  if (!protocol.deviceProfile.empty()) {
+    try {
+      device = loadProtocolDeviceProfile(protocol.deviceProfile, path);
+    } catch (const script::ScriptError& e) {
+      problems.push_back(path + ": device_profile: " + e.what());
+    }
+  }
   for (std::size_t b = 0; b < protocol.blocks.size(); ++b) {
     const script::BlockDef& block = protocol.blocks[b];
     for (std::size_t c = 0; c < block.conditions.size(); ++c) {
@@ -207,6 +217,9 @@ std::vector<std::string> checkProtocol(const std::string& path) {
         options.adjust = [&](script::LevelDef& level) { script::applyTrialOverrides(condition.overrides, level); };
         script::LoadedLevel level = script::LevelLoader(options).loadFile(condition.levelPath);
         checkLoadedLevel(level, where, problems);
+        if (device)
+          if (const std::string refusal = couplingRefusal(*device, level.def.coupling, where); !refusal.empty())
+            problems.push_back(refusal);
         const haptics::GuidanceDef guidance = guidanceOf(condition.overrides, 1);
         if (const std::string why = haptics::guidanceProblem(guidance, botDeviceSpec()); !why.empty())
           problems.push_back(where + ": guidance " + why);

@@ -70,15 +70,9 @@ ResearchSession::ResearchSession(const SessionRequest& request) {
   if (request.deviceProfile && !named.empty() && *request.deviceProfile != named)
     badInput(request.protocolPath + " names the device profile '" + named + "', not '" + *request.deviceProfile +
              "': a study runs on the device its protocol names (leave --device-profile out, or change the protocol)");
-  if (std::string name = request.deviceProfile.value_or(named); !name.empty()) {
-    // A profile file the protocol names is looked for beside the protocol first.
-    std::error_code ec;
-    const fs::path besideProtocol = fs::path(request.protocolPath).parent_path() / name;
-    if (!request.deviceProfile && fs::path(name).extension() == ".lua" && fs::path(name).is_relative() &&
-        fs::is_regular_file(besideProtocol, ec))
-      name = besideProtocol.string();
+  if (const std::string name = request.deviceProfile.value_or(named); !name.empty()) {
     try {
-      profile_ = loadDeviceProfile(name);
+      profile_ = request.deviceProfile ? loadDeviceProfile(name) : loadProtocolDeviceProfile(name, request.protocolPath);
     } catch (const script::ScriptError& e) {
       badInput(e.what());
     }

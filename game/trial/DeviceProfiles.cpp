@@ -75,6 +75,14 @@ script::DeviceProfileDef loadDeviceProfile(const std::string& nameOrFile) {
                             (known.empty() ? std::string(" (none holds a profile)") : "; known profiles: " + known));
 }
 
+script::DeviceProfileDef loadProtocolDeviceProfile(const std::string& nameOrFile, const std::string& protocolPath) {
+  std::error_code ec;
+  const fs::path beside = fs::path(protocolPath).parent_path() / nameOrFile;
+  if (fs::path(nameOrFile).extension() == ".lua" && fs::path(nameOrFile).is_relative() && fs::is_regular_file(beside, ec))
+    return script::DeviceProfileLoader().loadFile(beside.string());
+  return loadDeviceProfile(nameOrFile);
+}
+
 haptics::DeviceSpec deviceSpecOf(const script::DeviceProfileDef& p) {
   haptics::DeviceSpec spec;
   spec.name = keptName(p.model);

@@ -31,6 +31,10 @@ std::vector<std::string> deviceProfileNames();
 // for a bad file, the loader's "file:line: key: what".
 script::DeviceProfileDef loadDeviceProfile(const std::string& nameOrFile);
 
+// The profile a protocol names (its `device_profile`): a relative .lua file
+// is looked for beside the protocol first, then as loadDeviceProfile does.
+script::DeviceProfileDef loadProtocolDeviceProfile(const std::string& nameOrFile, const std::string& protocolPath);
+
 // The device's limits: maxForce the peak force, maxStiffness the profile's,
 // workspaceRadius the box's smallest half-extent (a sphere inside it: what a
 // bot's reach is held to), force output yes; named by the profile's model.
