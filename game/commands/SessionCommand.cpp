@@ -2,10 +2,10 @@
 
 #include <chrono>
 #include <cstdio>
-#include <thread>
 #include <iostream>
 #include <memory>
 #include <stdexcept>
+#include <thread>
 
 #include "engine/script/BotScript.h"
 #include "engine/script/ScriptError.h"

@@ -1,10 +1,9 @@
 #include "game/trial/DeviceTrial.h"
 
 #include <chrono>
+#include <sstream>
 #include <stdexcept>
 #include <thread>
-
-#include "engine/physics/StateKinematics.h"
 
 namespace hemiroll::game {
 
@@ -22,7 +21,12 @@ TrialRigDef rigDefOf(const DeviceTrialDef& def) {
   return rig;
 }
 
-std::string endpoint(const haptics::UdpBridgeDef& b) { return b.bindAddress + ":" + std::to_string(b.port); }
+std::string noClient(const haptics::UdpBridgeDef& b, std::uint16_t port, double timeout) {
+  std::ostringstream out;
+  out << "no device: no state from a client on " << b.bindAddress << ":" << port << " within " << timeout
+      << " s; start the device's client (docs/UDP_BRIDGE.md) before the trial";
+  return out.str();
+}
 
 }  // namespace
 
@@ -51,9 +55,7 @@ TrialResult DeviceTrial::run() {
   level_.script->setTiming({.realtime = true, .tickSeconds = 10 * kDeviceDrainPeriod});
   judging.start(rig_.initial());  // on_start (and on_fail, should it end the trial)
   if (!judging.finished() && !bridge_->waitForClient(def_.clientTimeout))
-    judging.fail("no device: no state from a client on " + endpoint(def_.bridge) + " within " +
-                 std::to_string(static_cast<int>(def_.clientTimeout)) +
-                 " s; start the device's client (docs/UDP_BRIDGE.md) before the trial");
+    judging.fail(noClient(def_.bridge, bridge_->port(), def_.clientTimeout));
   if (!judging.finished()) {
     rig_.post(haptics::ServoCommandKind::Engage);  // engages when the handle reaches the mass point
     rig_.startLoop();

@@ -107,6 +107,19 @@ Played play(const script::DeviceProfileDef& device, hapticclient::ClientOptions 
   return out;
 }
 
+TEST(DeviceTrial, NoClientIsAFailureThatSaysWhatToStart) {
+  script::LoadedLevel level = script::LevelLoader().loadSource(kLevel, "level.lua");
+  DeviceTrialDef def;
+  def.bridge.port = 0;
+  def.clientTimeout = 0.2;
+  DeviceTrial trial(level, def);
+  const TrialResult r = trial.run();
+  EXPECT_EQ(r.outcome, script::TrialOutcome::Failure);
+  EXPECT_EQ(r.reason, "no device: no state from a client on 127.0.0.1:" + std::to_string(trial.port()) +
+                          " within 0.2 s; start the device's client (docs/UDP_BRIDGE.md) before the trial");
+  EXPECT_EQ(trial.stop(), haptics::SafetyFault::None);
+}
+
 TEST(DeviceTrial, TheRecordedForceNeverExceedsTheProfilesPeak) {
   constexpr double kPeak = 0.3;  // [N]
   const Played p = play(profile(smallDevice(kPeak, kPeak, 100.0)), clientNear());
