@@ -29,7 +29,7 @@ struct ClientSummary {
   std::uint64_t safetyStops = 0;      // forces with status SafetyStop
   int lastSafetyFault = 0;            // the last one's fault (haptics::SafetyFault as a number)
   bool bridgeClosed = false;          // a Closing status arrived
-  double maxForce = 0.0;              // largest |F| received [N]
+  double maxForce = 0.0;              // largest |F| rendered: received, after the device's clamp (--peak-force) [N]
   // Round trip: from sending a state to receiving the first force computed
   // from it [s]; includes the wait for the bridge's next servo tick.
   double rttMin = 0.0, rttMedian = 0.0, rttP99 = 0.0, rttMax = 0.0;
