@@ -35,6 +35,16 @@ std::string bridgeWords(const BridgeFacts& b) {
 
 }  // namespace
 
+StopLimits stopLimitsOf(const haptics::SafetyDef& s) {
+  StopLimits l;
+  l.continuousForce = s.continuousForce;
+  l.aboveContinuousLimit = s.aboveContinuousLimit;
+  l.maxTickLateness = s.maxTickLateness;
+  l.staleLimit = s.staleLimit;
+  l.maxDeviceSpeed = s.maxDeviceSpeed;
+  return l;
+}
+
 std::string deviceStopWords(haptics::SafetyFault fault, const BridgeFacts& b, const StopLimits& l) {
   using haptics::SafetyFault;
   switch (fault) {

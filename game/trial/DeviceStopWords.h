@@ -31,6 +31,9 @@ struct StopLimits {
   double maxDeviceSpeed = 2.0;         // [m/s]
 };
 
+// The figures of a loop's safety definition that the sentences name.
+StopLimits stopLimitsOf(const haptics::SafetyDef& safety);
+
 // One sentence for a stop; "" for SafetyFault::None.
 std::string deviceStopWords(haptics::SafetyFault fault, const BridgeFacts& bridge, const StopLimits& limits);
 

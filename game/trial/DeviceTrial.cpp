@@ -109,28 +109,27 @@ void DeviceTrial::noteStop() {
     facts_.silentFor = bridge_->silentFor();
     facts_.clientGone = facts_.silentFor >= def_.goneAfter;
   }
-  const haptics::SafetyDef& s = rig_.loopDef().safety;
-  StopLimits limits;
-  limits.continuousForce = s.continuousForce;
-  limits.aboveContinuousLimit = s.aboveContinuousLimit;
-  limits.maxTickLateness = s.maxTickLateness;
-  limits.staleLimit = s.staleLimit;
-  limits.maxDeviceSpeed = s.maxDeviceSpeed;
-  stopWords_ = deviceStopWords(stop_, facts_, limits);
+  stopWords_ = deviceStopWords(stop_, facts_, stopLimitsOf(rig_.loopDef().safety));
+}
+
+record::Fields deviceResultFields(const std::string& device, const std::string& stop,
+                                  const haptics::UdpBridgeCounters* c) {
+  const auto count = [c](std::uint64_t haptics::UdpBridgeCounters::*field) {
+    return c ? std::to_string(c->*field) : std::string();
+  };
+  return {{"device", device},
+          {"stop", stop},
+          {"packets_received", count(&haptics::UdpBridgeCounters::accepted)},
+          {"packets_lost", count(&haptics::UdpBridgeCounters::lost)},
+          {"packets_out_of_order", count(&haptics::UdpBridgeCounters::outOfOrder)},
+          {"packets_late", count(&haptics::UdpBridgeCounters::late)},
+          {"packets_malformed", count(&haptics::UdpBridgeCounters::malformed)}};
 }
 
 record::Fields deviceResultFields(const DeviceTrial* trial, const std::string& device) {
-  if (trial == nullptr)
-    return {{"device", device},         {"stop", ""},         {"packets_received", ""}, {"packets_lost", ""},
-            {"packets_out_of_order", ""}, {"packets_late", ""}, {"packets_malformed", ""}};
+  if (trial == nullptr) return deviceResultFields(device, "", nullptr);
   const haptics::UdpBridgeCounters c = trial->counters();
-  return {{"device", "udp"},
-          {"stop", trial->stopWords()},
-          {"packets_received", std::to_string(c.accepted)},
-          {"packets_lost", std::to_string(c.lost)},
-          {"packets_out_of_order", std::to_string(c.outOfOrder)},
-          {"packets_late", std::to_string(c.late)},
-          {"packets_malformed", std::to_string(c.malformed)}};
+  return deviceResultFields("udp", trial->stopWords(), &c);
 }
 
 record::Fields deviceOutcomeFields(const DeviceTrial& trial) {

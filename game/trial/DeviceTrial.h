@@ -85,6 +85,10 @@ class DeviceTrial {
 // without a stop), packets_received, packets_lost, packets_out_of_order,
 // packets_late, packets_malformed ("" without a DeviceTrial).
 record::Fields deviceResultFields(const DeviceTrial* trial, const std::string& device = "bot");
+// The same columns for any trial: its device's name, its stop in words ("":
+// none), and the bridge's counts (null: not behind the bridge, left empty).
+record::Fields deviceResultFields(const std::string& device, const std::string& stop,
+                                  const haptics::UdpBridgeCounters* counters);
 // The sidecar's outcome.device for a trial at a device: the stop and the counts.
 record::Fields deviceOutcomeFields(const DeviceTrial& trial);
 

@@ -107,6 +107,25 @@ Played play(const script::DeviceProfileDef& device, hapticclient::ClientOptions 
   return out;
 }
 
+// results.csv's device columns have one set of names for every trial.
+TEST(DeviceTrial, TheDeviceColumnsAreTheSameForEveryTrial) {
+  haptics::UdpBridgeCounters c;
+  c.accepted = 1000;
+  c.lost = 2;
+  c.outOfOrder = 1;
+  c.late = 3;
+  const record::Fields udp = deviceResultFields("udp", "the words", &c);
+  const record::Fields bot = deviceResultFields(nullptr);
+  ASSERT_EQ(udp.size(), bot.size());
+  for (std::size_t i = 0; i < udp.size(); ++i) EXPECT_EQ(udp[i].first, bot[i].first);
+  EXPECT_EQ(udp, (record::Fields{{"device", "udp"}, {"stop", "the words"}, {"packets_received", "1000"},
+                                 {"packets_lost", "2"}, {"packets_out_of_order", "1"}, {"packets_late", "3"},
+                                 {"packets_malformed", "0"}}));
+  EXPECT_EQ(bot[0].second, "bot");
+  for (std::size_t i = 1; i < bot.size(); ++i) EXPECT_EQ(bot[i].second, "") << bot[i].first;
+  EXPECT_EQ(deviceResultFields("mouse", "", nullptr)[0].second, "mouse");
+}
+
 TEST(DeviceTrial, NoClientIsAFailureThatSaysWhatToStart) {
   script::LoadedLevel level = script::LevelLoader().loadSource(kLevel, "level.lua");
   DeviceTrialDef def;
