@@ -171,7 +171,7 @@ return { name = "field", params = { R = 0.04, m_s = 1.0, m_p = 0.2, g = 9.81 },
   const std::string port = std::to_string(40000 + (::getpid() + 7919) % 20000);
   ChildProcess run(kBinary, {"run", level, "--realtime", "--device", "udp", "--port", port, "--device-profile",
                              "generic", "--client-timeout", "10", "--record", (dir.path() / "rec").string()});
-  const ProcessResult client = runProcess(HEMIROLL_HAPTIC_CLIENT, {"--port", port, "--duration", "2", "--centre",
+  const ProcessResult client = runProcess(HEMIROLL_HAPTIC_CLIENT, {"--port", port, "--duration", "3", "--centre",
                                                                    "0,0,0.04", "--realtime-priority", "70"});
   const int exit = run.wait();
   EXPECT_TRUE(exit == 0 || exit == 1) << run.err();

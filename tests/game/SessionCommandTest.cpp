@@ -247,7 +247,7 @@ return { experiment = "device-study", device_profile = "small.lua", blocks = { {
     ChildProcess hemiroll(kBinary, {"session", protocol, "--participant", participant, "--data", dir.path().string(),
                                     "--device", "udp", "--port", port, "--client-timeout", "10"});
     const ProcessResult client = runProcess(
-        HEMIROLL_HAPTIC_CLIENT, {"--port", port, "--duration", "2.5", "--centre", "0,0,0.04", "--circle-radius", "0.01",
+        HEMIROLL_HAPTIC_CLIENT, {"--port", port, "--duration", "3", "--centre", "0,0,0.04", "--circle-radius", "0.01",
                                  "--circle-frequency", "1", "--peak-force", "0.3", "--handle-mass", "0.05", "--friction",
                                  "0.02", "--resolution", "0.000055", "--loss", "0.02", "--reorder", "0.02", "--seed",
                                  "3", "--realtime-priority", "70"});
