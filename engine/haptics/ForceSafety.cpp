@@ -1,6 +1,7 @@
 #include "engine/haptics/ForceSafety.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace hemiroll::haptics {
 
@@ -10,6 +11,15 @@ ForceSafety::ForceSafety(const SafetyDef& def, const DeviceSpec& spec)
 void ForceSafety::clearFault() {
   fault_ = SafetyFault::None;
   staleTime_ = 0.0;
+  aboveContinuous_ = 0.0;
+}
+
+bool ForceSafety::outsideWorkspace(const Vec3& p) const {
+  if (!(def_.workspaceHalfWidth > 0.0)) return false;
+  const double m = def_.workspaceMargin;
+  // Negated so that a NaN position counts as outside.
+  return !(std::abs(p.x()) <= def_.workspaceHalfWidth + m && std::abs(p.y()) <= def_.workspaceHalfDepth + m &&
+           std::abs(p.z()) <= def_.workspaceHalfHeight + m);
 }
 
 double ForceSafety::recentPath(const SafetyInputs& in) {
@@ -50,6 +60,12 @@ SafetyFault ForceSafety::watchdogs(const SafetyInputs& in) {
   if (!(in.injectedEnergy <= def_.maxInjectedEnergy)) return SafetyFault::EnergyInjection;
   if (!(in.angularSpeed <= def_.maxAngularSpeed)) return SafetyFault::RunawayRotation;
   if (!in.desiredForce.allFinite()) return SafetyFault::NonFiniteForce;
+  if (maxForce_ > 0.0 && outsideWorkspace(in.devicePosition)) return SafetyFault::OutsideWorkspace;
+  // The force sent last tick (what the motors hold now) against the rating.
+  if (def_.continuousForce > 0.0) {
+    aboveContinuous_ = last_.norm() > def_.continuousForce ? aboveContinuous_ + in.dt : 0.0;
+    if (aboveContinuous_ > def_.aboveContinuousLimit) return SafetyFault::ForceSaturated;
+  }
   return SafetyFault::None;
 }
 
@@ -93,6 +109,8 @@ const char* safetyFaultName(SafetyFault f) {
     case SafetyFault::RunawayRotation: return "runaway angular velocity";
     case SafetyFault::ModelHalted: return "model halted at a domain edge";
     case SafetyFault::LoopOverrun: return "servo loop stalled";
+    case SafetyFault::OutsideWorkspace: return "device outside its workspace";
+    case SafetyFault::ForceSaturated: return "force held above the device's continuous rating too long";
   }
   return "?";
 }

@@ -9,7 +9,10 @@
 //      ServoLoop.h),
 //      device speed above maxDeviceSpeed (velocity guard), energy injected
 //      into the model beyond maxInjectedEnergy, angular speed beyond
-//      maxAngularSpeed, a non-finite force. Any of them latches a fault: the
+//      maxAngularSpeed, a non-finite force; with a device profile's limits
+//      (game/trial/DeviceProfiles), the device's position outside its
+//      workspace box, and the force held above the device's continuous rating
+//      for longer than aboveContinuousLimit. Any of them latches a fault: the
 //      force is zero from this very tick (no fade, no rate limit), the
 //      engagement is dropped, and the loop pauses until clearFault().
 //   2. engagement and ramp (EngagementRamp): scale in [0, 1].
@@ -35,6 +38,8 @@ enum class SafetyFault {
   ModelHalted,       // the physics stopped at a domain edge (tip-over, off-face, non-finite)
   LoopOverrun,       // the servo loop stalled: a tick started too late
   PositionJump,      // the device's positions moved faster than maxDeviceSpeed, whatever velocity it reported
+  OutsideWorkspace,  // the device reported a position outside its workspace box (wrong units or origin?)
+  ForceSaturated,    // the force stayed above the device's continuous rating for longer than allowed
 };
 
 struct SafetyDef {
@@ -47,6 +52,16 @@ struct SafetyDef {
   // [s] a tick starting this late means the device held a stale force that
   // long; well above the scheduler hiccups of a loaded desktop (a few ms).
   double maxTickLateness = 0.020;
+  // A device profile's limits (zero: not checked, as for a device without a
+  // profile). The box is centred on the device's origin [m]; a position
+  // beyond it by more than workspaceMargin means the client's units or
+  // origin are wrong, or the handle slipped its mechanical stops.
+  double workspaceHalfWidth = 0.0, workspaceHalfDepth = 0.0, workspaceHalfHeight = 0.0;  // [m]
+  double workspaceMargin = 0.0;        // [m]
+  // [N] the force a device may hold indefinitely (its motors' thermal
+  // rating); above it for longer than aboveContinuousLimit [s] is a stop.
+  double continuousForce = 0.0;
+  double aboveContinuousLimit = 0.0;
 };
 
 // Per-tick observations the watchdogs judge.
@@ -87,11 +102,14 @@ class ForceSafety {
   const Vec3& lastForce() const { return last_; }
   bool lastClamped() const { return clamped_; }
   double staleTime() const { return staleTime_; }
+  // How long the force sent has stayed above the continuous rating [s].
+  double aboveContinuousTime() const { return aboveContinuous_; }
 
  private:
   SafetyFault watchdogs(const SafetyInputs& in);
   // The device's path length over the last kJumpWindow ticks, this tick's step included.
   double recentPath(const SafetyInputs& in);
+  bool outsideWorkspace(const Vec3& p) const;
 
   // The position guard looks at the path over 10 ticks, not one: a mouse's
   // strokes arrive once per frame (16 ms of motion in one tick), while a
@@ -106,6 +124,7 @@ class ForceSafety {
   Vec3 last_ = Vec3::Zero();
   bool clamped_ = false;
   double staleTime_ = 0.0;
+  double aboveContinuous_ = 0.0;  // [s] of consecutive ticks with |last_| above continuousForce
   std::array<double, kJumpWindow> steps_{};  // [m] per tick, a ring
   int stepIndex_ = 0;
   bool hasPosition_ = false;

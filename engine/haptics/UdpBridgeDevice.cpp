@@ -45,6 +45,7 @@ bool UdpBridgeDevice::open() {
     return false;
   }
   haveClient_ = false;
+  lastArrival_ = 0;
   current_ = Sample{};
   lastSerial_ = 0;
   health_.store(Health::NoClient, std::memory_order_relaxed);
@@ -122,8 +123,12 @@ void UdpBridgeDevice::accept(const udp::StateMessage& m, const UdpEndpoint& from
   } else if (m.sequence - lastSequence_ > 1) {
     lost_.fetch_add(m.sequence - lastSequence_ - 1, std::memory_order_relaxed);
   }
+  if (lastArrival_ != 0 && arrival - lastArrival_ > static_cast<std::int64_t>(def_.latePacket * 1e9))
+    late_.fetch_add(1, std::memory_order_relaxed);
+  if (m.deviceStatus != 0) lastDeviceFault_.store(m.deviceStatus, std::memory_order_relaxed);
   lastSequence_ = m.sequence;
   lastArrival_ = arrival;
+  lastGoodNs_.store(arrival, std::memory_order_relaxed);
   Sample s;
   s.state = m;
   s.arrivalNs = arrival;
@@ -204,11 +209,17 @@ UdpBridgeCounters UdpBridgeDevice::counters() const {
   c.malformed = malformed_.load(std::memory_order_relaxed);
   c.outOfOrder = outOfOrder_.load(std::memory_order_relaxed);
   c.lost = lost_.load(std::memory_order_relaxed);
+  c.late = late_.load(std::memory_order_relaxed);
   c.otherSender = otherSender_.load(std::memory_order_relaxed);
   c.clientChanges = clientChanges_.load(std::memory_order_relaxed);
   c.forcesSent = forcesSent_.load(std::memory_order_relaxed);
   c.sendFailures = sendFailures_.load(std::memory_order_relaxed);
   return c;
+}
+
+double UdpBridgeDevice::silentFor() const {
+  const std::int64_t last = lastGoodNs_.load(std::memory_order_relaxed);
+  return last == 0 ? -1.0 : static_cast<double>(def_.clock() - last) * 1e-9;
 }
 
 bool UdpBridgeDevice::waitForClient(double timeout) const {

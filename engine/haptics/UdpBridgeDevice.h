@@ -50,6 +50,9 @@ struct UdpBridgeDef {
   std::uint16_t port = 47110;        // 0: any free port (tests; see UdpBridgeDevice::port())
   bool allowNonLoopback = false;     // required for any address outside 127.0.0.0/8
   double watchdog = 0.010;           // [s] without a good state -> error
+  // [s] a good state arriving this long after the previous one is counted
+  // late (twice a 1 kHz client's period: its scheduler or the network held it).
+  double latePacket = 0.002;
   MonotonicClock clock = &monotonicNowNs;
   // SCHED_FIFO priority of the receiver thread, when permitted (0: do not
   // ask). Just below the servo loop's 80: a receiver starved by other work
@@ -67,6 +70,7 @@ struct UdpBridgeCounters {
   std::uint64_t malformed = 0;    // failed to decode (magic, version, type, size, NaN)
   std::uint64_t outOfOrder = 0;   // sequence not after the last accepted one (late or duplicate)
   std::uint64_t lost = 0;         // sequence gaps among accepted states (never arrived, or arrived late)
+  std::uint64_t late = 0;         // accepted states that arrived more than latePacket after the previous one
   std::uint64_t otherSender = 0;  // from a second sender while the client was alive
   std::uint64_t clientChanges = 0;
   std::uint64_t forcesSent = 0;
@@ -92,6 +96,12 @@ class UdpBridgeDevice final : public HapticDevice {
   RealtimeResult receiverRealtime() const;
   UdpBridgeCounters counters() const;
   udp::DecodeError lastDecodeError() const { return lastDecodeError_.load(std::memory_order_relaxed); }
+  // Seconds since the latest good state arrived (on the bridge's clock);
+  // negative before the first. What tells a client that is gone from one
+  // that paused past the watchdog.
+  double silentFor() const;
+  // The device status byte of the latest good state that reported a fault (0: none has).
+  std::uint8_t lastDeviceFault() const { return lastDeviceFault_.load(std::memory_order_relaxed); }
   // Outside the loop: waits until a client has sent a good state.
   bool waitForClient(double timeout) const;
   bool ready() const override { return waitForClient(0.0); }
@@ -132,7 +142,9 @@ class UdpBridgeDevice final : public HapticDevice {
   std::atomic<Health> health_{Health::NotOpen};
 
   std::atomic<udp::DecodeError> lastDecodeError_{udp::DecodeError::None};
-  std::atomic<std::uint64_t> received_{0}, accepted_{0}, malformed_{0}, outOfOrder_{0}, lost_{0}, otherSender_{0},
+  std::atomic<std::int64_t> lastGoodNs_{0};  // arrival of the latest good state (0: none yet)
+  std::atomic<std::uint8_t> lastDeviceFault_{0};
+  std::atomic<std::uint64_t> received_{0}, accepted_{0}, malformed_{0}, outOfOrder_{0}, lost_{0}, late_{0}, otherSender_{0},
       clientChanges_{0}, forcesSent_{0}, sendFailures_{0};
 };
 

@@ -11,7 +11,7 @@ using haptics::RecordRow;
 
 static_assert(static_cast<int>(physics::DomainEvent::NonFinite) == kEventCodes - 1);
 static_assert(static_cast<int>(haptics::Engagement::RampingOut) == kEngagementCodes - 1);
-static_assert(static_cast<int>(haptics::SafetyFault::PositionJump) == kFaultCodes - 1);
+static_assert(static_cast<int>(haptics::SafetyFault::ForceSaturated) == kFaultCodes - 1);
 
 namespace {
 

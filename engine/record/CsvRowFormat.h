@@ -18,7 +18,7 @@ namespace hemiroll::record {
 // static_asserts in CsvRowFormat.cpp fail when an enum grows at the end).
 inline constexpr int kEventCodes = 4;       // physics::DomainEvent
 inline constexpr int kEngagementCodes = 4;  // haptics::Engagement
-inline constexpr int kFaultCodes = 10;      // haptics::SafetyFault
+inline constexpr int kFaultCodes = 12;      // haptics::SafetyFault
 
 // Files written before guidance (issue 14) end at force_clamped; they read
 // back with a zero guidance force.

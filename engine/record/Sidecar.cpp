@@ -101,6 +101,11 @@ std::string Sidecar::toJson(const TrialMeta& m, const SidecarStatus& s) {
   if (s.end) {
     j["dropped_rows"] = s.end->droppedRows;
     j["outcome"] = {{"result", s.end->outcome}, {"reason", s.end->reason}};
+    if (!s.end->device.empty()) {
+      ordered_json device = ordered_json::object();
+      for (const auto& [key, value] : s.end->device) device[key] = value;
+      j["outcome"]["device"] = device;
+    }
     j["timing"] = s.end->hasTiming ? timingJson(s.end->timing) : ordered_json(nullptr);
   } else {
     j["dropped_rows"] = nullptr;
@@ -177,6 +182,8 @@ void Sidecar::fromJson(const std::string& text, const std::string& source, Trial
       TrialEnd end;
       end.outcome = j.at("outcome").at("result").get<std::string>();
       end.reason = j.at("outcome").at("reason").get<std::string>();
+      if (const auto device = j.at("outcome").find("device"); device != j.at("outcome").end())
+        for (const auto& [key, value] : device->items()) end.device.emplace_back(key, value.get<std::string>());
       end.droppedRows = j.at("dropped_rows").get<std::uint64_t>();
       end.hasTiming = !j.at("timing").is_null();
       if (end.hasTiming) end.timing = timingFrom(j.at("timing"));

@@ -51,6 +51,9 @@ struct TrialEnd {
   bool hasTiming = false;
   haptics::LoopTimingSummary timing;
   std::uint64_t droppedRows = 0;     // ServoLoop::recordDropped()
+  // How the trial's device fared (a device behind the UDP bridge: the stop
+  // in words, packet counts); the sidecar's outcome.device, absent when empty.
+  Fields device;
 };
 
 // This build's version (the CMake project version).

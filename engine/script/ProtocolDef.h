@@ -127,6 +127,9 @@ struct ProtocolDef {
   std::string description;
   std::string version = "1";
   std::uint64_t seed = 0;   // the randomisation's seed when the session gives none
+  // The device the study is run on, by profile name (devices/NAME.lua;
+  // docs/UDP_BRIDGE.md "Device profiles"); "" = none named.
+  std::string deviceProfile;
   std::vector<BlockDef> blocks;  // at least one
   // Between-subjects design (all optional).
   std::vector<GroupDef> groups;            // empty: one group, unnamed

@@ -318,8 +318,8 @@ std::uint64_t readSeed(const LuaTableReader& top) {
 }
 
 ProtocolDef readProtocol(const LuaTableReader& top, const LevelFolders& folders) {
-  rejectUnknownLevelKeys(top, {"experiment", "description", "version", "seed", "blocks", "groups", "assignment",
-                               "participants", "counterbalance"});
+  rejectUnknownLevelKeys(top, {"experiment", "description", "version", "seed", "device_profile", "blocks", "groups",
+                               "assignment", "participants", "counterbalance"});
   ProtocolDef def;
   def.source = top.source();
   const auto experiment = top.string("experiment");
@@ -330,6 +330,9 @@ ProtocolDef readProtocol(const LuaTableReader& top, const LevelFolders& folders)
   def.description = top.string("description").value_or("");
   def.version = top.string("version").value_or(def.version);
   def.seed = readSeed(top);
+  def.deviceProfile = top.string("device_profile").value_or("");
+  if (top.typeOf("device_profile") != LUA_TNIL && def.deviceProfile.empty())
+    top.fail("device_profile", "must name a device profile (\"touch\", \"omega3\", ...), not be empty");
   const auto blocks = top.table("blocks");
   if (!blocks) top.fail("blocks", "missing; a protocol is a list of blocks { {level = ...}, ... }");
   const int count = listLength(*blocks, "block");

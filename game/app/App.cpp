@@ -26,6 +26,7 @@ App::App(const AppDef& def) : def_(def) {
   for (const std::string& n : loaded.notes) notes_.push_back(n);
   // --no-vsync (measuring) wins over the saved choice for this run.
   settings_.vsync = settings_.vsync && def.vsync;
+  if (!def.deviceProfile.empty()) settings_.deviceProfile = def.deviceProfile;
   window_->setVsync(settings_.vsync);
   render::RendererDef r;
   r.assetsDir = findAssetsDirectory();

@@ -43,6 +43,7 @@ struct AppDef {
   std::string scoresFile;           // "" = record::dataDirectory()/scores.sqlite
   std::string settingsFile;         // "" = configDirectory()/settings.json
   bool requestRealtime = true;      // SCHED_FIFO for the servo thread when permitted
+  std::string deviceProfile;        // --device-profile: this run's instead of the settings' ("" = theirs)
 };
 
 class App final : public ScreenHost {

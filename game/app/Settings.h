@@ -17,6 +17,9 @@ struct Settings {
   std::string device = "mouse";
   int joystickIndex = 0;       // SDL joystick index
   int udpPort = 47110;         // the bridge's port on 127.0.0.1
+  // The device behind the bridge: its profile's name (devices/NAME.lua,
+  // docs/UDP_BRIDGE.md "Device profiles"); "" = the bridge's own defaults.
+  std::string deviceProfile;
   // Force method and gains: the level's unless overridden.
   bool overrideCoupling = false;
   int method = 2;              // 0 M1, 1 M2, 2 M3 (the paper's), 3 visual only

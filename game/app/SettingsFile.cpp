@@ -100,10 +100,11 @@ class Reader {
       if (!knownAction(it.key())) notes_.push_back(file_ + ": 'keys." + it.key() + "' is no action; ignored");
     target = wanted;
   }
-  void identifier(const char* key, std::string& target) {
+  // `allowEmpty`: "" means none (a device profile's name).
+  void identifier(const char* key, std::string& target, bool allowEmpty = false) {
     const Json* v = find(key);
     if (!v) return;
-    if (!v->is_string() || !isIdentifier(v->get<std::string>()))
+    if (!v->is_string() || !(isIdentifier(v->get<std::string>()) || (allowEmpty && v->get<std::string>().empty())))
       return bad(key, "an id of letters, digits, '-' and '_'");
     target = v->get<std::string>();
   }
@@ -174,6 +175,7 @@ LoadedSettings loadSettings(const std::filesystem::path& file) {
   r.choice("device", kDevices, device);
   s.device = kDevices[device];
   r.integer("udp_port", s.udpPort, 1, 65535, "a port in 1..65535");
+  r.identifier("device_profile", s.deviceProfile, /*allowEmpty=*/true);
   r.integer("joystick_index", s.joystickIndex, 0, 63, "a joystick index in 0..63");
   r.boolean("override_coupling", s.overrideCoupling);
   r.choice("method", kMethods, s.method);
@@ -203,6 +205,7 @@ std::string settingsJson(const Settings& s) {
   json["version"] = 1;
   json["device"] = s.device;
   json["udp_port"] = s.udpPort;
+  json["device_profile"] = s.deviceProfile;
   json["joystick_index"] = s.joystickIndex;
   json["override_coupling"] = s.overrideCoupling;
   json["method"] = kMethods[s.method >= 0 && s.method < 4 ? s.method : 2];

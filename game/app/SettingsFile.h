@@ -2,7 +2,7 @@
 // The player's settings kept between runs: one JSON object in settings.json
 // under the user's configuration directory (XDG; HEMIROLL_CONFIG_DIR
 // overrides it), SI units in the key names:
-//   {"version": 1, "device": "mouse", "udp_port": 47110, "joystick_index": 0,
+//   {"version": 1, "device": "mouse", "udp_port": 47110, "device_profile": "touch", "joystick_index": 0,
 //    "override_coupling": false, "method": "M3", "stiffness_N_per_m": 250,
 //    "damping_N_s_per_m": 10, "alpha": 2, "volume": 0.6, "mouse_mm_per_px": 0.25,
 //    "vsync": true, "frame_cap_fps": 60, "ui_scale": 1,

@@ -26,6 +26,7 @@
 #include "game/commands/ExitCode.h"
 #include "game/research/ParticipantsFile.h"
 #include "game/research/ResearchSession.h"
+#include "game/trial/DeviceProfiles.h"
 #include "game/trial/TrialSetup.h"
 
 namespace hemiroll::game {
@@ -198,6 +199,15 @@ std::vector<std::string> checkProtocol(const std::string& path) {
   std::vector<std::string> problems;
   const script::ProtocolDef protocol = script::ProtocolLoader().loadFile(path);
   (void)script::expandProtocol(protocol, protocol.seed);
+  // The study's device: every condition's coupling must be one it renders.
+  std::optional<script::DeviceProfileDef> device;
+  if (!protocol.deviceProfile.empty()) {
+    try {
+      device = loadProtocolDeviceProfile(protocol.deviceProfile, path);
+    } catch (const script::ScriptError& e) {
+      problems.push_back(path + ": device_profile: " + e.what());
+    }
+  }
   // Every condition as written, and again as each group that changes its
   // block plays it.
   std::vector<const script::GroupDef*> groups = {nullptr};
@@ -219,6 +229,9 @@ std::vector<std::string> checkProtocol(const std::string& path) {
           options.adjust = [&](script::LevelDef& level) { script::applyTrialOverrides(condition.overrides, level); };
           script::LoadedLevel level = script::LevelLoader(options).loadFile(condition.levelPath);
           checkLoadedLevel(level, where, problems);
+          if (device)
+            if (const std::string refusal = couplingRefusal(*device, level.def.coupling, where); !refusal.empty())
+              problems.push_back(refusal);
           const haptics::GuidanceDef guidance = guidanceOf(condition.overrides, 1);
           if (const std::string why = haptics::guidanceProblem(guidance, botDeviceSpec()); !why.empty())
             problems.push_back(where + ": guidance " + why);

@@ -159,9 +159,11 @@ int tour(App& app, const PlayOptions& o) {
 
 std::string playUsage() {
   return "usage: hemiroll play [LEVEL.lua] [--levels DIR] [--size WxH] [--no-vsync] [--autoplay SECONDS]\n"
-         "                     [--watch] [--tour DIR]\n"
+         "                     [--watch] [--tour DIR] [--device-profile NAME]\n"
          "Opens the game window on the title screen (or straight into LEVEL).\n"
          "  --levels DIR        the level select lists DIR/*.lua (default: the shipped levels)\n"
+         "  --device-profile NAME  the limits of the device behind the UDP bridge (devices/NAME.lua;\n"
+         "                      default: the settings' device_profile)\n"
          "  --size WxH          window size in pixels (default 1280x720)\n"
          "  --no-vsync          no vsync (the frame cap of the settings still holds)\n"
          "  --autoplay SECONDS  a scripted mouse plays LEVEL for at most SECONDS (until the trial\n"
@@ -190,6 +192,7 @@ PlayOptionsResult parsePlayOptions(const std::vector<std::string>& args) {
       .flag("--watch", [&] { o.watch = true; })
       .positional("level", 1, [&](const std::string& path) { o.level = path; })
       .option("--tour", cli::text(o.tourDir, "a directory"))
+      .option("--device-profile", cli::text(o.deviceProfile, "a device profile name"))
       .option("--levels", cli::text(o.levelsDir, "a directory"))
       .option("--size", cli::size(o.width, o.height, 64, 16384))
       .option("--autoplay", cli::numberIn(o.autoplay, 1e-3, 3600.0, "seconds in [0.001, 3600]"));
@@ -213,6 +216,7 @@ int runPlayCommand(const std::vector<std::string>& args) {
     def.height = o.height;
     def.vsync = o.vsync;
     def.levelsDir = o.levelsDir;
+    def.deviceProfile = o.deviceProfile;
     App app(def);
     o.level = resolveLevelPath(o.level, app.levelsDir());
     // What the game starts without (no sound card, missing assets), once,

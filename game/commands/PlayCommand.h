@@ -32,6 +32,7 @@ struct PlayOptions {
   double autoplay = 0.0;         // [s]; 0 = a human plays
   bool watch = false;            // --watch: the autopilot plays LEVEL (the player may take over)
   std::string tourDir;           // --tour: screenshots of the main screens go here
+  std::string deviceProfile;     // --device-profile: the UDP device's limits (devices/NAME.lua)
   bool help = false;
 };
 

@@ -12,7 +12,8 @@ namespace hemiroll::game {
 const char* runUsage() {
   static const std::string usage = std::string(
          "usage: hemiroll run LEVEL.lua --bot BOT.lua|autopilot|passive-hand|human [--seed N] [--record DIR]\n"
-         "                    [--realtime]\n"
+         "       hemiroll run LEVEL.lua --realtime --device udp [--port N] [--device-profile NAME]\n"
+         "                    [--realtime] [--device-profile NAME]\n"
          "                    [--autopilot-budget X] [--guidance KIND [--guidance-stiffness K]\n"
          "                    [--guidance-damping C]] [--human-delay S] [--human-interval S]\n"
          "                    [--human-noise X] [--human-device mouse|haptic] [--human-aids]\n"
@@ -33,6 +34,13 @@ const char* runUsage() {
          "  --record DIR    record the trial into DIR (per-trial CSV + JSON sidecar and\n"
          "                  results.csv, docs/RECORDING.md)\n"
          "  --realtime      pace the servo ticks at 1 kHz on the wall clock\n"
+         "  --device-profile NAME  hold the trial to a device's limits: NAME.lua in\n"
+         "                  devices/ (generic, touch, touch_x, omega3, omega6, falcon,\n"
+         "                  inverse3) or a profile file (docs/UDP_BRIDGE.md)\n"
+         "  --device udp    a person plays at a real haptic device behind the UDP bridge\n"
+         "                  (its client sends to 127.0.0.1:PORT; needs --realtime, no --bot)\n"
+         "  --port N        the bridge's port (default 47110)\n"
+         "  --client-timeout S  how long to wait for the device's first state (default 30 s)\n"
          "  --guidance KIND haptic guidance: \"autopilot\" pulls the device towards the\n"
          "                  autopilot's plan, \"error_augmentation\" pushes it away,\n"
          "                  \"none\" (default); try it with --bot passive-hand\n"
@@ -55,6 +63,10 @@ RunOptionsResult parseRunOptions(const std::vector<std::string>& args) {
       .positional("level file", 1, [&](const std::string& path) { o.levelPath = path; })
       .option("--bot", cli::text(o.botPath, "a bot file"))
       .option("--record", cli::text(o.recordDir, "a directory"))
+      .option("--device-profile", cli::text(o.deviceProfile, "a device profile name or file"))
+      .option("--device", cli::text(o.device, "bot or udp"))
+      .option("--port", cli::integerIn(o.port, 1, 65535, "a port from 1 to 65535"))
+      .option("--client-timeout", cli::numberIn(o.clientTimeout, 0.001, 3600.0, "seconds from 0.001 to 3600"))
       .option("--guidance", cli::text(o.guidance, "none, autopilot or error_augmentation"))
       // The bounds a protocol's guidance has (one rule: 0 is allowed for both).
       .option("--guidance-stiffness",
@@ -68,7 +80,15 @@ RunOptionsResult parseRunOptions(const std::vector<std::string>& args) {
   result.error = reader.read(args);
   if (!result.error.empty() || o.help) return result;
   if (o.levelPath.empty()) result.error = "missing the level file";
-  else if (o.botPath.empty()) result.error = "missing --bot BOT.lua";
+  else if (o.device != "bot" && o.device != "udp")
+    result.error = "--device needs bot or udp, not '" + o.device + "'";
+  else if (o.device == "udp" && !o.realtime)
+    result.error = "--device udp needs --realtime: a person at a device plays on the wall clock";
+  else if (o.device == "udp" && !o.botPath.empty())
+    result.error = "--device udp and --bot exclude each other: the person at the device plays";
+  else if (o.device == "udp" && o.guidance != "none")
+    result.error = "--guidance needs a bot (the autopilot plans beside it); not with --device udp";
+  else if (o.device == "bot" && o.botPath.empty()) result.error = "missing --bot BOT.lua";
   else if (o.autopilotBudget < 0.25 || o.autopilotBudget > 4.0)
     result.error = "--autopilot-budget needs a planning effort from 0.25 to 4";
   else if (o.guidance != "none" && o.guidance != "autopilot" && o.guidance != "error_augmentation")

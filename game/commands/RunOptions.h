@@ -17,6 +17,14 @@ struct RunOptions {
   std::uint64_t seed = 0;                  // --seed: 0 .. 2^63 - 1
   std::optional<std::string> recordDir;    // --record DIR
   bool realtime = false;                   // --realtime
+  // --device-profile NAME|FILE: the device's limits (devices/NAME.lua): the
+  // clamp, stiffness, rate limit and workspace the trial is held to.
+  std::optional<std::string> deviceProfile;
+  // --device bot|udp: who plays. "udp": a person at a real device behind the
+  // UDP bridge on 127.0.0.1:--port (needs --realtime; no --bot).
+  std::string device = "bot";
+  int port = 47110;
+  double clientTimeout = 30.0;             // --client-timeout [s] for the device's first state
   // --guidance KIND with --guidance-stiffness K [N/m] (a gain for error
   // augmentation) and --guidance-damping C [N s/m]: haptic guidance
   // towards (or away from) the autopilot's plan (docs/PROTOCOLS.md "Guidance").

@@ -6,6 +6,7 @@
 #include <iostream>
 #include <memory>
 #include <stdexcept>
+#include <thread>
 
 #include "engine/script/BotScript.h"
 #include "engine/script/ScriptError.h"
@@ -14,6 +15,8 @@
 #include "game/commands/SessionOptions.h"
 #include "game/trial/BotTrial.h"
 #include "game/trial/BuiltinBots.h"
+#include "game/trial/DeviceProfiles.h"
+#include "game/trial/DeviceTrial.h"
 #include "game/trial/JsonLine.h"
 #include "engine/script/ProtocolLoader.h"
 #include "game/research/ResearchSession.h"
@@ -32,7 +35,7 @@ int fail(int code, const std::string& message) {
 int exitCodeOf(const SessionError& e) { return e.kind() == SessionError::Kind::BadInput ? kExitUsage : kExitFailure; }
 
 std::string trialLine(const std::string& participant, const std::string& group, const ManifestTrial& t,
-                      const TrialResult& r) {
+                      const TrialResult& r, const DeviceTrial* device) {
   JsonLine line;
   line.add("event", "trial").add("trial", static_cast<long long>(t.index)).add("trial_id", t.trialId);
   line.add("block", static_cast<long long>(t.block)).add("block_name", t.blockName);
@@ -46,6 +49,12 @@ std::string trialLine(const std::string& participant, const std::string& group, 
     line.addNull("score");
   line.add("medal", script::medalName(r.medal)).add("ticks", r.ticks).add("wall_time_s", r.wallTime, 6);
   line.add("participant", participant).add("group", group);
+  if (device) {  // a participant at a device: the stop in words and the packet counts
+    const haptics::UdpBridgeCounters c = device->counters();
+    line.add("stop", device->stopWords()).add("packets_received", static_cast<long long>(c.accepted));
+    line.add("packets_lost", static_cast<long long>(c.lost)).add("packets_out_of_order", static_cast<long long>(c.outOfOrder));
+    line.add("packets_late", static_cast<long long>(c.late)).add("packets_malformed", static_cast<long long>(c.malformed));
+  }
   return line.str();
 }
 
@@ -101,6 +110,10 @@ TrialResult playNext(ResearchSession& session, const SessionOptions& o, script::
   settings.guidance = trial.guidance;
   settings.place = placeOf(session, trial);
   settings.memory = &memory;
+  if (const auto& profile = session.deviceProfile()) {
+    settings.device = deviceSpecOf(*profile);
+    settings.safety = safetyOf(*profile);
+  }
   std::unique_ptr<BotTrial> playing;
   try {
     playing = std::make_unique<BotTrial>(level, *bot, settings);
@@ -109,7 +122,7 @@ TrialResult playNext(ResearchSession& session, const SessionOptions& o, script::
     throw SessionError(SessionError::Kind::BadInput, trial.levelFile + " (" + trial.trialId + "): " + e.what());
   }
   const std::unique_ptr<TrialRecording> recording =
-      session.recordNext(level.def, playing->rig().loopDef(), "bot", botDeviceSpec());
+      session.recordNext(level.def, playing->rig().loopDef(), "bot", settings.device);
   playing->rig().record(recording->tap());
   const TrialResult result = playing->run();
   try {
@@ -122,7 +135,39 @@ TrialResult playNext(ResearchSession& session, const SessionOptions& o, script::
   if (!result.endCallbackError.empty())
     std::cerr << "hemiroll session: " << trial.trialId << ": " << result.endCallbackError << "\n";
   writeBotMemory(session.folder(), trial.index, memory, before);
-  session.finishNext(*recording, result);
+  session.finishNext(*recording, result, std::nullopt, deviceResultFields(nullptr));
+  return result;
+}
+
+// One trial of the session at a device behind the bridge, recorded; prints
+// its line. Throws SessionError.
+TrialResult playAtDevice(ResearchSession& session, const SessionOptions& o, const std::string& participant) {
+  const ManifestTrial& trial = session.nextTrial();
+  script::LoadedLevel level = session.loadNextLevel();
+  DeviceTrialDef def;
+  def.bridge.port = static_cast<std::uint16_t>(o.port);
+  def.clientTimeout = o.clientTimeout;
+  if (const auto& profile = session.deviceProfile()) {
+    def.bridge.spec = deviceSpecOf(*profile);
+    def.safety = safetyOf(*profile);
+  }
+  std::unique_ptr<DeviceTrial> playing;
+  try {
+    playing = std::make_unique<DeviceTrial>(level, def);
+  } catch (const std::invalid_argument& e) {
+    throw SessionError(SessionError::Kind::BadInput, trial.levelFile + " (" + trial.trialId + "): " + e.what());
+  } catch (const std::runtime_error& e) {  // the bridge could not open
+    throw SessionError(SessionError::Kind::Environment, e.what());
+  }
+  const std::unique_ptr<TrialRecording> recording =
+      session.recordNext(level.def, playing->rig().loopDef(), "udp", def.bridge.spec);
+  playing->rig().record(recording->tap());
+  const TrialResult result = playing->run();
+  if (!result.scoreError.empty()) std::cerr << "hemiroll session: " << trial.trialId << ": " << result.scoreError << "\n";
+  session.finishNext(*recording, result, playing->timing(), deviceResultFields(playing.get()),
+                     deviceOutcomeFields(*playing));
+  std::printf("%s\n", trialLine(participant, session.manifest().group, trial, result, playing.get()).c_str());
+  std::fflush(stdout);
   return result;
 }
 
@@ -132,24 +177,37 @@ int runParticipant(const SessionOptions& o, const SessionRequest& request) {
   Tally tally;
   try {
     ResearchSession session(request);
-    if (const std::string problem = session.couplingProblem(botDeviceSpec()); !problem.empty())
+    const bool atDevice = o.device == "udp";
+    haptics::DeviceSpec device = atDevice ? haptics::UdpBridgeDef{}.spec : botDeviceSpec();
+    if (session.deviceProfile()) device = deviceSpecOf(*session.deviceProfile());
+    if (const std::string problem = session.couplingProblem(device); !problem.empty())
       return fail(kExitUsage, problem);
     std::string memoryNote;
     script::BotMemory memory = restoreBotMemory(session.folder(), session.done(), memoryNote);
-    session.begin(*o.botPath);
+    session.begin(atDevice ? std::string("udp") : *o.botPath);
     if (!session.lockNote().empty()) std::cerr << "hemiroll session: " << session.lockNote() << "\n";
     if (!memoryNote.empty()) std::cerr << "hemiroll session: " << memoryNote << "\n";
     for (const auto& [trialId, reason] : session.interrupted())
       std::cerr << "hemiroll session: " << trialId << " was " << reason << "; its files were moved aside (*.aborted-N)\n";
     while (!session.complete() && !session.stopsHere()) {
-      if (const ManifestBreak* pause = session.pendingBreak())
+      if (const ManifestBreak* pause = session.pendingBreak()) {
         std::cerr << "hemiroll session: break before block " << session.nextTrial().block << ": " << pause->message
-                  << " (bots do not rest)\n";
+                  << (atDevice ? "\n" : " (bots do not rest)\n");
+        if (atDevice)  // a person rests at least the protocol's break
+          std::this_thread::sleep_for(std::chrono::duration<double>(pause->minDuration));
+      }
       const ManifestTrial trial = session.nextTrial();
+      if (atDevice) {
+        std::cerr << "hemiroll session: " << trial.trialId << ": " << session.instructionsOf(trial) << "\n";
+        const TrialResult result = playAtDevice(session, o, request.participant);
+        ++tally.ran;
+        tally.successes += result.outcome == script::TrialOutcome::Success;
+        continue;
+      }
       const TrialResult result = playNext(session, o, memory);
       ++tally.ran;
       tally.successes += result.outcome == script::TrialOutcome::Success;
-      std::printf("%s\n", trialLine(request.participant, session.manifest().group, trial, result).c_str());
+      std::printf("%s\n", trialLine(request.participant, session.manifest().group, trial, result, nullptr).c_str());
       std::fflush(stdout);
     }
     std::printf("%s\n", summaryLine(session, tally, !session.complete()).c_str());
@@ -176,13 +234,18 @@ int runSessionCommand(const std::vector<std::string>& args) {
   const SessionOptionsResult parsed = parseSessionOptions(args);
   if (const std::optional<int> exit = exitBeforeRunning("hemiroll session: ", parsed, sessionUsage())) return *exit;
   const SessionOptions& o = parsed.options;
-  if (!o.botPath)
+  const bool atDevice = o.device == "udp";
+  if (!o.botPath && !atDevice)
     return fail(kExitUsage,
                 "people play sessions in the game window: run `hemiroll play`, open Research session (R), pick "
-                "the protocol, enter the participant and start; here a bot plays every trial (--bot BOT.lua)");
+                "the protocol, enter the participant and start; here a bot plays every trial (--bot BOT.lua), or a "
+                "participant at a device behind the UDP bridge (--device udp)");
+  if (atDevice && o.participants > 0)
+    return fail(kExitUsage, "--participants runs simulated participants (--bot); a person at a device sits one "
+                            "session at a time (--participant ID --device udp)");
   try {
     // A broken bot is refused before anything is written.
-    if (!isBuiltinBot(*o.botPath)) script::BotScript{*o.botPath};
+    if (o.botPath && !isBuiltinBot(*o.botPath)) script::BotScript{*o.botPath};
   } catch (const script::ScriptError& e) {
     return fail(kExitUsage, e.what());
   }
@@ -194,6 +257,7 @@ int runSessionCommand(const std::vector<std::string>& args) {
   request.session = o.session;
   if (o.dataRoot) request.dataRoot = *o.dataRoot;
   request.seed = o.seed;
+  request.deviceProfile = o.deviceProfile;
   if (o.participants == 0) return runParticipant(o, request);
 
   // A cohort: participant k with the plan's seed + k - 1, so that each

@@ -17,6 +17,12 @@ struct SessionOptions {
   std::optional<std::string> dataRoot;     // --data DIR (default: the game's data directory/sessions)
   std::optional<std::string> botPath;      // --bot: without it, people play in the game window
   std::optional<std::uint64_t> seed;       // --seed: 0 .. 2^63 - 1 (default: the protocol's)
+  std::optional<std::string> deviceProfile;  // --device-profile: the device's limits (else the protocol's)
+  // --device udp: a participant at a real device behind the UDP bridge
+  // plays every trial (no window); --port, --client-timeout as for `run`.
+  std::string device = "bot";
+  int port = 47110;
+  double clientTimeout = 30.0;
   std::string levelsDir;                   // --levels DIR ("" = the folder named levels above the protocol)
   // --participants N: a cohort of N simulated participants, <ID>-01 ..
   // <ID>-N (ID: --participant, default "sim"), one after the other, each

@@ -4,12 +4,17 @@
 #include <stdexcept>
 
 #include "engine/physics/StateKinematics.h"
+#include "game/trial/DeviceProfiles.h"
 
 namespace hemiroll::game {
 
 namespace {
 
-TrialRigDef rigDefOf(const PlaySessionDef& def) {
+TrialRigDef rigDefOf(const PlaySessionDef& def, const script::LevelDef& level) {
+  if (def.profile) {
+    const std::string refusal = couplingRefusal(*def.profile, def.coupling.value_or(level.coupling), level.source);
+    if (!refusal.empty()) throw std::invalid_argument(refusal);
+  }
   TrialRigDef rig;
   rig.device = def.device;
   rig.coupling = def.coupling;
@@ -26,11 +31,17 @@ TrialRigDef rigDefOf(const PlaySessionDef& def) {
 
 }  // namespace
 
+void useDeviceProfile(PlaySessionDef& def, const script::DeviceProfileDef& profile) {
+  def.profile = profile;
+  def.deviceOptions.udp.spec = deviceSpecOf(profile);
+  def.safety = safetyOf(profile, def.safety.value_or(haptics::SafetyDef{}));
+}
+
 PlaySession::PlaySession(script::LoadedLevel& level, const PlaySessionDef& def)
     : level_(level),
       mapping_(def.pointer),
       deviceName_(def.device),
-      rig_(level, rigDefOf(def), [&](const haptics::ServoLoopDef& loop) { return makeDevice(def, loop); }) {
+      rig_(level, rigDefOf(def, level.def), [&](const haptics::ServoLoopDef& loop) { return makeDevice(def, loop); }) {
   clockStartsOnTakeHold_ = def.clockStartsOnTakeHold;
   if (def.watchAutopilot || def.guidance.active())
     companion_ = std::make_unique<AutopilotCompanion>(level.def, rig_.loop(), rig_.loopDef().mapping, autopilotHand_,

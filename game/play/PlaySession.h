@@ -57,6 +57,7 @@
 #include "engine/haptics/ServoLoop.h"
 #include "game/play/AutopilotCompanion.h"
 #include "game/play/TakeoverDevice.h"
+#include "engine/script/DeviceProfileDef.h"
 #include "game/trial/TrialJudge.h"
 #include "game/trial/TrialRig.h"
 
@@ -96,7 +97,14 @@ struct PlaySessionDef {
   // The physics and the clock wait for the player's first take-hold
   // (ignored while the autopilot holds: it takes hold at once).
   bool clockStartsOnTakeHold = true;
+  // The force device's profile (useDeviceProfile): a level whose coupling it
+  // cannot render is refused by the constructor, in one sentence naming both.
+  std::optional<script::DeviceProfileDef> profile;
 };
+
+// Holds a device behind the bridge to `profile`: the bridge's spec (the
+// clamp, the stiffest coupling) and the safety layer's limits (DeviceProfiles.h).
+void useDeviceProfile(PlaySessionDef& def, const script::DeviceProfileDef& profile);
 
 class PlaySession {
  public:

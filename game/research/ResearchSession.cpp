@@ -14,6 +14,8 @@
 #include "engine/script/ScriptError.h"
 #include "game/research/GroupAssignment.h"
 #include "game/research/ParticipantsFile.h"
+#include "game/trial/DeviceProfiles.h"
+#include "game/trial/DeviceTrial.h"
 #include "game/trial/ReplayCapture.h"
 #include "game/research/SessionFolder.h"
 #include "game/research/SessionResume.h"
@@ -66,6 +68,17 @@ ResearchSession::ResearchSession(const SessionRequest& request) {
     protocol_ = script::ProtocolLoader(options).loadFile(request.protocolPath);
   } catch (const script::ScriptError& e) {
     badInput(e.what());
+  }
+  const std::string& named = protocol_.deviceProfile;
+  if (request.deviceProfile && !named.empty() && *request.deviceProfile != named)
+    badInput(request.protocolPath + " names the device profile '" + named + "', not '" + *request.deviceProfile +
+             "': a study runs on the device its protocol names (leave --device-profile out, or change the protocol)");
+  if (const std::string name = request.deviceProfile.value_or(named); !name.empty()) {
+    try {
+      profile_ = request.deviceProfile ? loadDeviceProfile(name) : loadProtocolDeviceProfile(name, request.protocolPath);
+    } catch (const script::ScriptError& e) {
+      badInput(e.what());
+    }
   }
   folder_ = sessionFolder(request.dataRoot.empty() ? defaultSessionsRoot() : request.dataRoot, protocol_.experiment,
                           request.participant, request.session);
@@ -162,7 +175,7 @@ void ResearchSession::checkResultsColumns(const SessionManifest& previous) const
   }
   if (found.empty() || manifest_.plan.empty()) return;  // no rows yet: nothing to line up with
   record::ResultsRow row;
-  row.extra = resultsFields(manifest_.plan.front(), TrialResult{});
+  row.extra = resultsFields(manifest_.plan.front(), TrialResult{}, {});
   const std::vector<std::string> wanted = record::ResultsFile::columns(row);
   if (found == wanted) return;
   std::string missing, extra;
@@ -311,6 +324,10 @@ std::string ResearchSession::couplingProblem(const haptics::DeviceSpec& device) 
     planned.damping = t.damping;
     planned.alpha = t.alpha;
     const physics::CouplingDef coupling = script::overriddenCoupling(planned, {});
+    if (profile_) {
+      const std::string refusal = couplingRefusal(*profile_, coupling, t.levelFile + " (" + t.trialId + ", " + t.conditionLabel + ")");
+      if (!refusal.empty()) return refusal;
+    }
     const std::string problem = haptics::ServoLoop::couplingProblem(coupling, device);
     if (!problem.empty())
       return t.trialId + " (" + t.conditionLabel + ", " + t.levelFile + "): the " + device.name +
@@ -357,12 +374,12 @@ std::unique_ptr<TrialRecording> ResearchSession::recordNext(const script::LevelD
                       {"block_name", t.blockName},            {"trial_in_block", std::to_string(t.trialInBlock)},
                       {"repetition", std::to_string(t.repetition)}, {"condition", std::to_string(t.condition)},
                       {"condition_label", t.conditionLabel},  {"level_file", t.levelFile},
-                      {"player", player_}};
+                      {"player", player_},  {"device_profile", profile_ ? profile_->name : ""}};
   // A results.csv whose header this trial's row could not join is found
   // now, not after the participant has played the trial.
   try {
     record::ResultsRow row;
-    row.extra = resultsFields(t, TrialResult{});
+    row.extra = resultsFields(t, TrialResult{}, {});
     record::ResultsFile(folder_ / "results.csv").checkColumns(row);
   } catch (const record::RecordError& e) {
     environment(e.what());
@@ -375,10 +392,11 @@ std::unique_ptr<TrialRecording> ResearchSession::recordNext(const script::LevelD
 }
 
 void ResearchSession::finishNext(TrialRecording& recording, const TrialResult& result,
-                                 const std::optional<haptics::LoopTimingSummary>& timing) {
-  record::Fields extra = resultsFields(nextTrial(), result);
+                                 const std::optional<haptics::LoopTimingSummary>& timing,
+                                 const record::Fields& device, const record::Fields& outcome) {
+  record::Fields extra = resultsFields(nextTrial(), result, device);
   try {
-    recording.finish(result, extra, timing);
+    recording.finish(result, extra, timing, outcome);
   } catch (const TrialRecordingError& e) {
     environment(e.what());
   }
@@ -386,7 +404,8 @@ void ResearchSession::finishNext(TrialRecording& recording, const TrialResult& r
   ++ranThisSitting_;
 }
 
-record::Fields ResearchSession::resultsFields(const ManifestTrial& t, const TrialResult& result) const {
+record::Fields ResearchSession::resultsFields(const ManifestTrial& t, const TrialResult& result,
+                                              const record::Fields& device) const {
   record::Fields extra = {{"group", manifest_.group},
                           {"block_order", std::to_string(manifest_.blockOrder)},
                           {"trial_index", std::to_string(t.index)},
@@ -411,6 +430,9 @@ record::Fields ResearchSession::resultsFields(const ManifestTrial& t, const Tria
   for (auto& field : TrialRecording::measureFields(result)) extra.push_back(std::move(field));
   extra.emplace_back("ticks", std::to_string(result.ticks));
   extra.emplace_back("player", player_);
+  extra.emplace_back("device_profile", profile_ ? profile_->name : "");
+  // The same columns for every player (DeviceTrial.h); before the trial, their names only.
+  for (auto& field : device.empty() ? deviceResultFields(nullptr, "") : device) extra.push_back(field);
   return extra;
 }
 

@@ -27,6 +27,7 @@
 
 #include "engine/haptics/ServoLoop.h"
 #include "engine/script/LevelLoader.h"
+#include "engine/script/DeviceProfileDef.h"
 #include "engine/script/ProtocolDef.h"
 #include "game/trial/TrialRecording.h"
 #include "game/research/SessionError.h"
@@ -46,6 +47,9 @@ struct SessionRequest {
   std::string session = "1";
   std::filesystem::path dataRoot;         // "" = defaultSessionsRoot()
   std::optional<std::uint64_t> seed;      // none = the session's (resumed) or the protocol's
+  // --device-profile: the device's profile (DeviceProfiles.h); none = the
+  // protocol's `device_profile`, if any. Naming another than the protocol's is refused.
+  std::optional<std::string> deviceProfile;
   // What the protocol and its levels are loaded with (the window's screens
   // give a listing's shorter limits; game/screens/ListingBudget.h).
   script::SandboxLimits loadLimits;
@@ -70,6 +74,8 @@ class ResearchSession {
   const std::string& lockNote() const;
 
   const script::ProtocolDef& protocol() const { return protocol_; }
+  // The device profile the session runs on (the request's or the protocol's); none when neither names one.
+  const std::optional<script::DeviceProfileDef>& deviceProfile() const { return profile_; }
   const SessionManifest& manifest() const { return manifest_; }
   const std::filesystem::path& folder() const { return folder_; }
   int trialCount() const { return static_cast<int>(manifest_.plan.size()); }
@@ -90,6 +96,7 @@ class ResearchSession {
   // "" when every trial still to run has a coupling `device` renders
   // stably; else one sentence naming the first that has not (a protocol's
   // kr, alpha too stiff for the device): checked before the first trial.
+  // With a device profile, the sentence names the level and the profile.
   std::string couplingProblem(const haptics::DeviceSpec& device) const;
 
   // The next trial's level with the plan's overrides and seed. Throws
@@ -100,13 +107,16 @@ class ResearchSession {
                                              const std::string& deviceName, const haptics::DeviceSpec& spec) const;
   // Completes the sidecar, appends the results row and moves on. Throws
   // SessionError (Environment).
+  // `device`: results.csv's device columns (deviceResultFields; a bot's when
+  // none given); `outcome`: the sidecar's outcome.device.
   void finishNext(TrialRecording& recording, const TrialResult& result,
-                  const std::optional<haptics::LoopTimingSummary>& timing = std::nullopt);
+                  const std::optional<haptics::LoopTimingSummary>& timing = std::nullopt,
+                  const record::Fields& device = {}, const record::Fields& outcome = {});
 
  private:
   // The extra columns of `t`'s row in results.csv (their names never depend
   // on the result, so they can be checked before the trial).
-  record::Fields resultsFields(const ManifestTrial& t, const TrialResult& result) const;
+  record::Fields resultsFields(const ManifestTrial& t, const TrialResult& result, const record::Fields& device) const;
   void buildPlan(const SessionRequest& request, std::uint64_t seed);
   void checkAgainst(const SessionManifest& previous) const;
   // The resumed session's group and order (checked against the participants file).
@@ -116,6 +126,7 @@ class ResearchSession {
   void checkResultsColumns(const SessionManifest& previous) const;
 
   script::ProtocolDef protocol_;
+  std::optional<script::DeviceProfileDef> profile_;
   SessionManifest manifest_;
   std::filesystem::path folder_;
   std::string player_;

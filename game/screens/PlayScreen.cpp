@@ -22,6 +22,7 @@
 #include "game/trial/GhostFile.h"
 #include "game/hud/HudLayout.h"
 #include "game/screens/MedalTimes.h"
+#include "game/trial/DeviceProfiles.h"
 #include "game/view/RenderSceneBuilder.h"
 
 namespace hemiroll::game {
@@ -41,6 +42,8 @@ void PlayScreen::begin() {
     def.device = host_.settings().device;
     def.deviceOptions.joystick.index = host_.settings().joystickIndex;
     def.deviceOptions.udp.port = static_cast<std::uint16_t>(host_.settings().udpPort);
+    if (def.device == "udp" && !host_.settings().deviceProfile.empty())
+      useDeviceProfile(def, loadDeviceProfile(host_.settings().deviceProfile));
     def.pointer.metresPerPixel =
         std::clamp(host_.settings().mouseMmPerPixel, kMouseMmPerPixel[0], kMouseMmPerPixel[1]) * 1e-3;
     def.requestRealtime = host_.requestRealtime();

@@ -6,6 +6,8 @@
 #include "game/research/ResearchSession.h"
 #include "game/screens/ScreenHost.h"
 #include "game/screens/ScreenStack.h"
+#include "game/trial/DeviceStopWords.h"
+#include "game/trial/DeviceTrial.h"
 #include "game/trial/TrialRecording.h"
 
 namespace hemiroll::game {
@@ -14,6 +16,29 @@ SessionTrialPlay::SessionTrialPlay(ScreenHost& host, ResearchSession& session, s
     : host_(host), research_(session), levelPath_(session.nextTrial().levelFile), done_(std::move(done)) {}
 
 SessionTrialPlay::~SessionTrialPlay() = default;
+
+namespace {
+
+// results.csv's device columns for a person's trial: the last safety stop
+// in words and, behind the bridge, its packet counts (DeviceTrial.h).
+record::Fields deviceColumns(const PlaySession& session) {
+  const auto* bridge = dynamic_cast<const haptics::UdpBridgeDevice*>(&session.device());
+  std::string stop;
+  if (!session.stops().empty()) {
+    BridgeFacts facts;
+    facts.present = bridge != nullptr;
+    if (bridge) {
+      facts.deviceStatus = bridge->lastDeviceFault();
+      facts.stale = facts.deviceStatus == 0;
+    }
+    stop = deviceStopWords(session.stops().back().fault, facts, stopLimitsOf(session.loopDef().safety));
+  }
+  if (!bridge) return deviceResultFields(session.deviceName(), stop, nullptr);
+  const haptics::UdpBridgeCounters counters = bridge->counters();
+  return deviceResultFields(session.deviceName(), stop, &counters);
+}
+
+}  // namespace
 
 std::unique_ptr<PlaySession> SessionTrialPlay::begin(script::LoadedLevel& level, PlaySessionDef& def) {
   level = research_.loadNextLevel();
@@ -24,6 +49,8 @@ std::unique_ptr<PlaySession> SessionTrialPlay::begin(script::LoadedLevel& level,
   // The plan's haptic guidance: the autopilot plans beside the participant
   // and the device pulls towards its plan (felt on a device with force output).
   def.guidance = trial.guidance;
+  // The study's device (its protocol's, or the session's --device-profile) holds a device behind the bridge.
+  if (def.device == "udp" && research_.deviceProfile()) useDeviceProfile(def, *research_.deviceProfile());
   const std::optional<haptics::DeviceSpec> spec = haptics::DeviceFactory().specOf(def.device, def.deviceOptions);
   if (!spec) throw std::runtime_error("unknown device '" + def.device + "'");
   auto session = std::make_unique<PlaySession>(level, def);
@@ -58,7 +85,7 @@ void SessionTrialPlay::end(SessionTrialEnd end, const PlaySession* session) {
   ended_ = true;
   if (end.recorded && session != nullptr) {
     try {
-      research_.finishNext(*recording_, end.result, session->timing());
+      research_.finishNext(*recording_, end.result, session->timing(), deviceColumns(*session));
     } catch (const std::exception& e) {
       end.recorded = false;
       end.error = e.what();

@@ -11,6 +11,7 @@
 #include "game/screens/ScreenHost.h"
 #include "game/screens/ScreenLayout.h"
 #include "game/screens/ScreenStack.h"
+#include "game/trial/DeviceProfiles.h"
 
 namespace hemiroll::game {
 
@@ -113,6 +114,17 @@ void SettingsScreen::paint() {
     wrappedTextf("a haptic device behind the UDP bridge on 127.0.0.1:%d: start its bridge program "
                  "(or hemiroll-haptic-client); the trial starts with its first state (docs/UDP_BRIDGE.md)",
                  s.udpPort);
+    // The device's limits: the shipped profiles, read once (devices/*.lua).
+    static const std::vector<std::string> profiles = deviceProfileNames();
+    const char* shown = s.deviceProfile.empty() ? "none (the bridge's defaults)" : s.deviceProfile.c_str();
+    if (ImGui::BeginCombo("device profile", shown)) {
+      if (ImGui::Selectable("none (the bridge's defaults)", s.deviceProfile.empty())) s.deviceProfile.clear();
+      for (const std::string& name : profiles)
+        if (ImGui::Selectable(name.c_str(), name == s.deviceProfile)) s.deviceProfile = name;
+      ImGui::EndCombo();
+    }
+    wrappedTextDisabled("the device's peak force, stiffness and workspace (devices/NAME.lua): the safety layer holds "
+                        "every trial to them");
   }
 
   ImGui::Separator();

@@ -17,6 +17,7 @@ namespace {
 TrialRigDef rigDefOf(const TrialSettings& settings) {
   TrialRigDef def;
   def.guidance = settings.guidance;
+  def.safety = settings.safety;
   def.threaded = settings.realtime;
   def.requestRealtime = settings.realtime;
   return def;
@@ -31,11 +32,11 @@ BotTrial::BotTrial(script::LoadedLevel& level, script::BotPolicy& bot, const Tri
       rig_(level, rigDefOf(settings),
            [this](const haptics::ServoLoopDef& loop) -> std::unique_ptr<haptics::HapticDevice> {
              if (settings_.realtime) {
-               auto device = std::make_unique<HandoffBotDevice>(botDeviceSpec(), loop.mapping);
+               auto device = std::make_unique<HandoffBotDevice>(settings_.device, loop.mapping);
                handoff_ = device.get();
                return device;
              }
-             auto device = std::make_unique<BotDevice>(botDeviceSpec(), loop.mapping, loop.period);
+             auto device = std::make_unique<BotDevice>(settings_.device, loop.mapping, loop.period);
              botDevice_ = device.get();
              return device;
            }),
@@ -61,7 +62,7 @@ void BotTrial::begin(const script::TrialTiming& timing) {
   rig_.post(haptics::ServoCommandKind::Engage);
   bot_.setTiming(timing);
   level_.script->setTiming(timing);
-  const script::BotLevelInfo info = botLevelInfo(level_.def, rig_.loopDef());
+  const script::BotLevelInfo info = botLevelInfo(level_.def, rig_.loopDef(), settings_.device);
   script::BotLevelInfo placed = info;
   placed.place = settings_.place;
   placed.memory = settings_.memory;

@@ -32,6 +32,7 @@
 #include <chrono>
 #include <cstdint>
 #include <memory>
+#include <optional>
 
 #include "engine/haptics/Guidance.h"
 #include "engine/script/BotObservation.h"
@@ -40,6 +41,7 @@
 #include "engine/script/TrialTiming.h"
 #include "game/trial/ObservationBuilder.h"
 #include "game/trial/TrialRig.h"
+#include "game/trial/TrialSetup.h"
 
 namespace hemiroll::game {
 
@@ -63,6 +65,11 @@ struct TrialSettings {
   // handed to the bot's init (BotLevelInfo; the guide's autopilot gets neither).
   script::TrialPlace place;
   script::BotMemory* memory = nullptr;
+  // The device the bot's hand is held to: a desk device (botDeviceSpec), or
+  // a device profile's (DeviceProfiles.h: deviceSpecOf) with that profile's
+  // safety limits (safetyOf; none: the loop's defaults).
+  haptics::DeviceSpec device = botDeviceSpec();
+  std::optional<haptics::SafetyDef> safety;
 };
 
 class BotTrial {

@@ -96,8 +96,10 @@ record::Fields TrialRecording::scoreFields(const TrialResult& result) {
 }
 
 void TrialRecording::finish(const TrialResult& result, const record::Fields& extra,
-                            const std::optional<haptics::LoopTimingSummary>& timing) {
+                            const std::optional<haptics::LoopTimingSummary>& timing,
+                            const record::Fields& device) {
   record::TrialEnd end;
+  end.device = device;
   // The words of `run`'s JSON line and the judge: "success" or "failure".
   end.outcome = script::trialOutcomeName(result.outcome);
   end.reason = result.reason;

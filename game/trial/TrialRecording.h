@@ -64,8 +64,10 @@ class TrialRecording {
   // Completes the sidecar (outcome, reason; the loop's timing for real-time
   // trials) and appends the results row with `extra` as its extra columns
   // (scoreFields() gives the usual has_score and medal). Throws TrialRecordingError.
+  // `device`: how a device behind the bridge fared (the sidecar's outcome.device).
   void finish(const TrialResult& result, const record::Fields& extra,
-              const std::optional<haptics::LoopTimingSummary>& timing = std::nullopt);
+              const std::optional<haptics::LoopTimingSummary>& timing = std::nullopt,
+              const record::Fields& device = {});
 
   // has_score ("true"/"false": results.csv's score column is 0 when the
   // level has none) and medal.

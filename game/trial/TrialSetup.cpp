@@ -22,7 +22,8 @@ haptics::ServoLoopDef trialLoopDef(const script::LevelDef& level, const std::str
 
 script::BotLevelInfo botLevelInfo(const script::LevelDef& level) { return botLevelInfo(level, trialLoopDef(level)); }
 
-script::BotLevelInfo botLevelInfo(const script::LevelDef& level, const haptics::ServoLoopDef& def) {
+script::BotLevelInfo botLevelInfo(const script::LevelDef& level, const haptics::ServoLoopDef& def,
+                                  const haptics::DeviceSpec& device) {
   script::BotLevelInfo info;
   info.name = level.name;
   info.file = level.source;
@@ -31,7 +32,7 @@ script::BotLevelInfo botLevelInfo(const script::LevelDef& level, const haptics::
   info.dt = def.period;
   info.timeLimit = level.task.timeLimit;
   info.engageDistance = def.safety.engagement.engageDistance;
-  info.workspaceRadius = botDeviceSpec().workspaceRadius * def.mapping.scale;
+  info.workspaceRadius = device.workspaceRadius * def.mapping.scale;
   info.workspaceCentre = {def.mapping.offset.x(), def.mapping.offset.y(), def.mapping.offset.z()};
   return info;
 }

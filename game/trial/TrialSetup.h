@@ -25,8 +25,9 @@ haptics::DeviceSpec botDeviceSpec();
 
 // The level as a bot's init sees it, in the trial's loop (`loop`: built by
 // trialLoopDef for "bot"; its period, engagement and mapping), held to
-// botDeviceSpec's workspace.
-script::BotLevelInfo botLevelInfo(const script::LevelDef& level, const haptics::ServoLoopDef& loop);
+// the workspace of `device` (botDeviceSpec's unless a profile gave another).
+script::BotLevelInfo botLevelInfo(const script::LevelDef& level, const haptics::ServoLoopDef& loop,
+                                  const haptics::DeviceSpec& device = botDeviceSpec());
 // The same for a planner beside a trial whose loop is not a bot's (the
 // autopilot in the window plans in the level's bot loop).
 script::BotLevelInfo botLevelInfo(const script::LevelDef& level);

@@ -95,6 +95,27 @@ TEST(CheckCommandTest, EachGroupsConditionsAndTheParticipantsFileAreChecked) {
   EXPECT_THAT(r.out, HasSubstr("participants.tsv:3: column 'group': no group 'soft' in the protocol"));
 }
 
+// A protocol that names its device: each condition's coupling is checked
+// against the profile, and a profile that cannot be loaded is named.
+TEST(CheckCommandTest, AProtocolsDeviceProfileHoldsEveryCondition) {
+  TempDirectory dir;
+  dir.write("soft.lua", "return { model = 'Soft Device', peak_force_N = 3, continuous_force_N = 1,"
+                        " max_stiffness_N_per_m = 400, workspace_width_m = 0.2, workspace_depth_m = 0.2,"
+                        " workspace_height_m = 0.2, update_rate_Hz = 1000 }");
+  const std::string level = kSource + "/levels/tutorial_02_roll_a_short_distance.lua";  // M3, kr 250, alpha 2
+  const std::string protocol = dir.write(
+      "study.lua", "return { experiment = 'x', device_profile = 'soft.lua', blocks = { { level = '" + level + "' } } }");
+  const ProcessResult r = check({protocol});
+  EXPECT_EQ(r.exitCode, 2) << r.out << r.err;
+  EXPECT_THAT(r.out, HasSubstr("asks for a coupling stiffness of 500 N/m (k_r 250 N/m times alpha 2), above the Soft "
+                               "Device's maximum stiffness of 400 N/m"));
+  const std::string unknown = dir.write(
+      "unknown.lua", "return { experiment = 'x', device_profile = 'phantom9000', blocks = { { level = '" + level + "' } } }");
+  const ProcessResult u = check({unknown});
+  EXPECT_EQ(u.exitCode, 2);
+  EXPECT_THAT(u.out, HasSubstr("device_profile: unknown device profile 'phantom9000'"));
+}
+
 TEST(CheckCommandTest, ALoadErrorNamesTheFileAndLineAndTheRestAreStillChecked) {
   TempDirectory dir;
   const std::string broken =

@@ -140,7 +140,9 @@ TEST_F(ResearchSessionTest, EachFinishedTrialHasItsFilesAndOneResultsRowWithTheP
                                          "final_error_w_x_rad_per_s", "final_error_w_y_rad_per_s",
                                          "final_error_w_z_rad_per_s", "final_error_u_a_m", "final_error_v_a_m",
                                          "final_error_u_o_rad", "final_error_v_o_rad", "final_error_psi_rad",
-                                         "final_error_omega_norm_rad_per_s", "ticks", "player"};
+                                         "final_error_omega_norm_rad_per_s", "ticks", "player", "device_profile",
+                                         "device", "stop", "packets_received", "packets_lost",
+                                         "packets_out_of_order", "packets_late", "packets_malformed"};
   ASSERT_EQ(table.columns.size(), 12u + plan.size());
   EXPECT_EQ(std::vector<std::string>(table.columns.begin() + 12, table.columns.end()), plan);
   ASSERT_EQ(table.rows.size(), 1u);

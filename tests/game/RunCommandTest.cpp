@@ -5,6 +5,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -15,8 +17,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "engine/haptics/HapticDevice.h"
 #include "engine/record/RecordingReader.h"
 #include "engine/record/ResultsFile.h"
+#include "tests/support/ChildProcess.h"
 #include "tests/support/ProcessRunner.h"
 #include "tests/support/TempDirectory.h"
 
@@ -88,6 +92,94 @@ TEST(RunCommand, GuidanceWinsForThePassiveHandAndIsRecorded) {
   double largest = 0.0;
   for (const haptics::RecordRow& row : rec.rows) largest = std::max(largest, std::abs(row.guidanceForce[0]));
   EXPECT_GT(largest, 0.01);
+}
+
+// A profile whose clamp the guided passive hand runs into (the guidance
+// spring pulls harder than 0.2 N), so that the clamp is exercised.
+std::string tinyProfile(const TempDirectory& dir, double peakN, double maxStiffness) {
+  return dir.write("tiny.lua", "return { model = 'Tiny Device', peak_force_N = " + std::to_string(peakN) +
+                                   ", continuous_force_N = " + std::to_string(peakN) +
+                                   ", above_continuous_limit_s = 1000, max_stiffness_N_per_m = " +
+                                   std::to_string(maxStiffness) +
+                                   ", workspace_width_m = 0.2, workspace_depth_m = 0.2, workspace_height_m = 0.2,"
+                                   " update_rate_Hz = 1000 }");
+}
+
+// --device-profile: the recorded force never exceeds the profile's peak
+// force, and the trial is recorded as run on that profile.
+TEST(RunCommand, TheRecordedForceNeverExceedsTheProfilesPeak) {
+  TempDirectory dir;
+  constexpr double kPeak = 0.2;  // [N]
+  const std::string profile = tinyProfile(dir, kPeak, 1000.0);
+  const std::string out = (dir.path() / "rec").string();
+  const ProcessResult r = hemiroll({"run", kSource + "/levels/tutorial_02_roll_a_short_distance.lua", "--bot",
+                                    "passive-hand", "--guidance", "autopilot", "--guidance-stiffness", "300",
+                                    "--device-profile", profile, "--record", out});
+  ASSERT_TRUE(r.exitCode == 0 || r.exitCode == 1) << r.out << r.err;
+  const std::filesystem::path csv = std::filesystem::path(out) / "tutorial_02_roll_a_short_distance_passive-hand_seed0.csv";
+  const record::Recording rec = record::RecordingReader::load(csv);
+  EXPECT_EQ(rec.meta.deviceSpec.maxForce, kPeak);
+  double largest = 0.0;
+  // The length as the clamp measures it (Eigen's norm; the CSV keeps every
+  // bit): std::hypot may round the other way by one ulp.
+  for (const haptics::RecordRow& row : rec.rows) {
+    const double f = haptics::Vec3(row.renderedForce[0], row.renderedForce[1], row.renderedForce[2]).norm();
+    ASSERT_LE(f, kPeak) << "tick " << row.tick;
+    largest = std::max(largest, f);
+  }
+  EXPECT_GT(largest, 0.99 * kPeak) << "the clamp was never reached: the test would not see it fail";
+  const ProcessResult results = runProcess("/bin/cat", {(std::filesystem::path(out) / "results.csv").string()});
+  EXPECT_THAT(results.out, HasSubstr("device_profile"));
+  EXPECT_THAT(results.out, HasSubstr(profile));
+}
+
+// A level whose coupling the profile cannot render: exit 2, one sentence
+// naming the level and the device, before anything runs.
+TEST(RunCommand, ACouplingTheProfileCannotRenderIsRefused) {
+  TempDirectory dir;
+  const std::string level = kSource + "/levels/tutorial_02_roll_a_short_distance.lua";  // M3, kr 250, alpha 2
+  const ProcessResult r =
+      hemiroll({"run", level, "--bot", "passive-hand", "--device-profile", tinyProfile(dir, 1.0, 400.0)});
+  EXPECT_EQ(r.exitCode, 2) << r.out << r.err;
+  EXPECT_THAT(r.err, HasSubstr(level + " asks for a coupling stiffness of 500 N/m (k_r 250 N/m times alpha 2), "
+                               "above the Tiny Device's maximum stiffness of 400 N/m"));
+  EXPECT_EQ(r.out, "");
+}
+
+TEST(RunCommand, ABadProfileIsNamedWithItsKey) {
+  TempDirectory dir;
+  const std::string bad = dir.write("bad.lua", "return { model = 'x', peak_force_N = 'lots' }");
+  const ProcessResult r = hemiroll({"run", dir.write("quick.lua", kQuickLevel), "--bot", dir.write("hold.lua", kHoldBot),
+                                    "--device-profile", bad});
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  EXPECT_THAT(r.err, HasSubstr(bad + ":1: peak_force_N"));
+  const ProcessResult unknown = hemiroll({"run", dir.write("q2.lua", kQuickLevel), "--bot",
+                                          dir.write("h2.lua", kHoldBot), "--device-profile", "phantom9000"});
+  EXPECT_EQ(unknown.exitCode, 2);
+  EXPECT_THAT(unknown.err, HasSubstr("unknown device profile 'phantom9000'"));
+}
+
+// `run --realtime --device udp`: a person at a device (here the reference
+// client's simulated device, a second process) plays; the line names the
+// device, any stop and the packet counts, and the recording is the trial's.
+TEST(RunCommand, ADeviceBehindTheBridgePlaysInRealTime) {
+  TempDirectory dir;
+  const std::string level = dir.write("field.lua", R"lua(
+return { name = "field", params = { R = 0.04, m_s = 1.0, m_p = 0.2, g = 9.81 },
+         task = { targets = { u_ca = { value = {0.5, 0.5}, tol = 0.004 } }, time_limit = 1 } }
+)lua");
+  const std::string port = std::to_string(40000 + (::getpid() + 7919) % 20000);
+  ChildProcess run(kBinary, {"run", level, "--realtime", "--device", "udp", "--port", port, "--device-profile",
+                             "generic", "--client-timeout", "10", "--record", (dir.path() / "rec").string()});
+  const ProcessResult client = runProcess(HEMIROLL_HAPTIC_CLIENT, {"--port", port, "--duration", "3", "--centre",
+                                                                   "0,0,0.04", "--realtime-priority", "70"});
+  const int exit = run.wait();
+  EXPECT_TRUE(exit == 0 || exit == 1) << run.err();
+  const std::string line = onlyLine(run.out());
+  EXPECT_THAT(line, HasSubstr("\"bot\":\"\""));
+  EXPECT_THAT(line, HasSubstr("\"device\":\"udp\",\"device_profile\":\"generic\",\"stop\":"));
+  EXPECT_THAT(line, MatchesRegex(".*\"packets_received\":[1-9][0-9]*,.*"));
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / "rec" / "field_udp_seed0.csv"));
 }
 
 TEST(RunCommand, SuccessPrintsOneJsonLineAndExitsZero) {

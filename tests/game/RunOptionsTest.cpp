@@ -37,6 +37,24 @@ TEST(RunOptions, LargestSeedIsTheLargestLuaInteger) {
               HasSubstr("--seed needs a whole number"));
 }
 
+TEST(RunOptions, ADeviceBehindTheBridgePlaysInRealTimeWithoutABot) {
+  const RunOptionsResult r = parseRunOptions({"level.lua", "--realtime", "--device", "udp", "--port", "50001",
+                                              "--client-timeout", "5", "--device-profile", "touch"});
+  ASSERT_EQ(r.error, "");
+  EXPECT_EQ(r.options.device, "udp");
+  EXPECT_EQ(r.options.port, 50001);
+  EXPECT_EQ(r.options.clientTimeout, 5.0);
+  EXPECT_EQ(r.options.deviceProfile, "touch");
+  EXPECT_EQ(parseRunOptions({"level.lua", "--device", "udp"}).error,
+            "--device udp needs --realtime: a person at a device plays on the wall clock");
+  EXPECT_EQ(parseRunOptions({"level.lua", "--realtime", "--device", "udp", "--bot", "b.lua"}).error,
+            "--device udp and --bot exclude each other: the person at the device plays");
+  EXPECT_EQ(parseRunOptions({"level.lua", "--device", "mouse", "--bot", "b.lua"}).error,
+            "--device needs bot or udp, not 'mouse'");
+  EXPECT_EQ(parseRunOptions({"level.lua", "--realtime", "--device", "udp", "--port", "0"}).error,
+            "flag --port needs a port from 1 to 65535, got '0'");
+}
+
 TEST(RunOptions, BadFlagsSayWhat) {
   struct Case {
     std::vector<std::string> args;

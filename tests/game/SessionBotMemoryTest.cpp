@@ -62,7 +62,11 @@ TEST(SessionBotMemoryTest, ASessionWithoutAMemoryGoesOnWithAnEmptyOneAndSaysSo) 
 
 TEST(SessionBotMemoryTest, TheMemoryIsCappedAndHoldsFiniteNumbersUnderPlainNames) {
   script::BotMemory m;
-  for (std::size_t i = 0; i < script::BotMemory::kMaxEntries; ++i) m.set("k" + std::to_string(i), 1.0);
+  for (std::size_t i = 0; i < script::BotMemory::kMaxEntries; ++i) {
+    std::string name = "k";  // appended, not "k" + ...: GCC 12 warns falsely (-Wrestrict) on that
+    name += std::to_string(i);
+    m.set(name, 1.0);
+  }
   m.set("k0", 2.0);  // changing an entry is always allowed
   EXPECT_EQ(m.get("k0"), 2.0);
   EXPECT_THROW(m.set("one_more", 1.0), script::ScriptError);

@@ -35,6 +35,20 @@ TEST(SessionOptions, DefaultsAreSessionOneTheProtocolsSeedAndNoBot) {
   EXPECT_EQ(r.options.levelsDir, "");
 }
 
+TEST(SessionOptions, AParticipantAtADeviceBehindTheBridge) {
+  const SessionOptionsResult r = parseSessionOptions({"p.lua", "--participant", "p01", "--device", "udp", "--port",
+                                                      "50002", "--client-timeout", "3", "--device-profile", "omega3"});
+  ASSERT_EQ(r.error, "");
+  EXPECT_EQ(r.options.device, "udp");
+  EXPECT_EQ(r.options.port, 50002);
+  EXPECT_EQ(r.options.clientTimeout, 3.0);
+  EXPECT_EQ(r.options.deviceProfile, "omega3");
+  EXPECT_EQ(parseSessionOptions({"p.lua", "--participant", "p01", "--device", "udp", "--bot", "b.lua"}).error,
+            "--device udp and --bot exclude each other: the participant plays");
+  EXPECT_EQ(parseSessionOptions({"p.lua", "--participant", "p01", "--device", "mouse"}).error,
+            "--device needs bot or udp, not 'mouse'");
+}
+
 TEST(SessionOptions, MistakesAreOneSentence) {
   const std::pair<std::vector<std::string>, std::string> cases[] = {
       {{"--participant", "x"}, "missing the protocol file"},

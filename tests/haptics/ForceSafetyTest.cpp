@@ -212,5 +212,73 @@ TEST(ForceSafetyTest, AFreshSampleResetsTheStaleTimer) {
   EXPECT_FALSE(safety.faulted());
 }
 
+// A device profile's box (game/trial/DeviceProfiles): a position beyond it
+// by more than the margin stops the force, on that tick; inside, nothing.
+TEST(ForceSafetyTest, APositionOutsideTheProfilesWorkspaceStops) {
+  SafetyDef def = quickRamp();
+  def.workspaceHalfWidth = 0.08;
+  def.workspaceHalfDepth = 0.035;
+  def.workspaceHalfHeight = 0.06;
+  def.workspaceMargin = 0.01;
+  ForceSafety safety(def, DeviceSpec{});
+  safety.engage();
+  SafetyInputs in;
+  in.desiredForce = Vec3(0.5, 0.0, 0.0);
+  in.devicePosition = Vec3(0.0, 0.044, 0.0);  // 9 mm beyond the depth: within the margin
+  for (int i = 0; i < 20; ++i) safety.update(in);
+  EXPECT_FALSE(safety.faulted()) << safetyFaultName(safety.fault());
+  in.devicePosition = Vec3(0.0, 0.046, 0.0);  // 11 mm beyond it (a slow 2 mm step: not a jump)
+  EXPECT_EQ(safety.update(in), Vec3::Zero());
+  EXPECT_EQ(safety.fault(), SafetyFault::OutsideWorkspace);
+}
+
+TEST(ForceSafetyTest, WithoutAProfileTheWorkspaceIsNotChecked) {
+  ForceSafety safety(quickRamp(), DeviceSpec{});
+  safety.engage();
+  SafetyInputs in;
+  in.devicePosition = Vec3(0.0, 0.0, 5.0);
+  for (int i = 0; i < 20; ++i) safety.update(in);
+  EXPECT_FALSE(safety.faulted()) << safetyFaultName(safety.fault());
+}
+
+// The continuous rating: held above it for longer than the limit stops the
+// force; dipping below it starts the count again.
+TEST(ForceSafetyTest, AForceHeldAboveTheContinuousRatingTooLongStops) {
+  SafetyDef def = quickRamp();
+  def.continuousForce = 1.0;
+  def.aboveContinuousLimit = 0.1;  // 100 ticks
+  ForceSafety safety(def, DeviceSpec{});
+  safety.engage();
+  SafetyInputs in;
+  in.desiredForce = Vec3(2.0, 0.0, 0.0);  // within the 3 N clamp, above the 1 N rating
+  int ticks = 0;
+  while (!safety.faulted() && ticks < 1000) {
+    safety.update(in);
+    ++ticks;
+  }
+  EXPECT_EQ(safety.fault(), SafetyFault::ForceSaturated);
+  // The ramp (10 ticks) passes 1 N on its 6th tick; the count starts on
+  // the next tick (it judges the force already sent) and trips past 100.
+  EXPECT_GE(ticks, 100);
+  EXPECT_LE(ticks, 110);
+  EXPECT_EQ(safety.lastForce(), Vec3::Zero());
+}
+
+TEST(ForceSafetyTest, DippingBelowTheContinuousRatingRestartsTheCount) {
+  SafetyDef def = quickRamp();
+  def.continuousForce = 1.0;
+  def.aboveContinuousLimit = 0.1;
+  ForceSafety safety(def, DeviceSpec{});
+  safety.engage();
+  SafetyInputs high, low;
+  high.desiredForce = Vec3(2.0, 0.0, 0.0);
+  low.desiredForce = Vec3(0.5, 0.0, 0.0);
+  for (int round = 0; round < 5; ++round) {
+    for (int i = 0; i < 80; ++i) safety.update(high);
+    for (int i = 0; i < 3; ++i) safety.update(low);
+  }
+  EXPECT_FALSE(safety.faulted()) << safetyFaultName(safety.fault());
+}
+
 }  // namespace
 }  // namespace hemiroll::haptics

@@ -179,6 +179,31 @@ TEST(UdpBridgeDeviceTest, OutOfOrderAndDuplicatesAreDroppedGapsCountedAsLost) {
   EXPECT_EQ(d.read(0.0).position.x(), 0.013);
 }
 
+// A good state more than latePacket (2 ms) after the previous one is late;
+// silentFor and the device's fault status are what a stop's words need.
+TEST(UdpBridgeDeviceTest, LateStatesSilenceAndTheDevicesFaultAreKept) {
+  UdpBridgeDevice d(testDef());
+  ASSERT_TRUE(d.open());
+  EXPECT_LT(d.silentFor(), 0.0);  // nothing yet
+  FakeClient client(d.port());
+  client.sendState(state(1));
+  ASSERT_TRUE(waitReceived(d, 1));
+  gFakeNow.fetch_add(1'900'000);  // 1.9 ms: on time
+  client.sendState(state(2));
+  ASSERT_TRUE(waitReceived(d, 2));
+  EXPECT_EQ(d.counters().late, 0u);
+  gFakeNow.fetch_add(2'100'000);  // 2.1 ms: late
+  udp::StateMessage faulty = state(3);
+  faulty.deviceStatus = 5;
+  client.sendState(faulty);
+  ASSERT_TRUE(waitReceived(d, 3));
+  EXPECT_EQ(d.counters().late, 1u);
+  EXPECT_EQ(d.lastDeviceFault(), 5);
+  EXPECT_EQ(d.silentFor(), 0.0);  // the fake clock has not moved since
+  gFakeNow.fetch_add(250'000'000);
+  EXPECT_DOUBLE_EQ(d.silentFor(), 0.25);
+}
+
 TEST(UdpBridgeDeviceTest, WatchdogTripsAfterTenMillisecondsAndZeroesTheForce) {
   UdpBridgeDevice d(testDef());
   ASSERT_TRUE(d.open());

@@ -49,6 +49,7 @@ TEST(SidecarTest, MetadataRoundTripsExactly) {
   end.hasTiming = true;
   end.timing.latenessP999 = 4.2e-5;
   end.timing.missedTicks = 2;
+  end.device = {{"stop", "the device reported a fault (status 1): check it"}, {"packets", "10 device states received"}};
   s.end = end;
   TrialMeta back;
   SidecarStatus sback;
@@ -71,8 +72,23 @@ TEST(SidecarTest, MetadataRoundTripsExactly) {
   EXPECT_EQ(sback.end->reason, "tipped over");
   EXPECT_EQ(bits(sback.end->timing.latenessP999), bits(4.2e-5));
   EXPECT_EQ(sback.end->timing.missedTicks, 2u);
+  EXPECT_EQ(sback.end->device, end.device);  // outcome.device: a trial at a device's stop and packet counts
   EXPECT_TRUE(sback.complete);
   EXPECT_EQ(sback.rows, 42u);
+}
+
+// A trial without a device behind the bridge has no outcome.device.
+TEST(SidecarTest, OnlyATrialAtADeviceHasOutcomeDevice) {
+  SidecarStatus s;
+  s.complete = true;
+  s.end = TrialEnd{};
+  const std::string json = Sidecar::toJson(awkwardMeta(), s);
+  EXPECT_EQ(json.find("\"device\": {\n      \"stop\""), std::string::npos);
+  TrialMeta back;
+  SidecarStatus sback;
+  Sidecar::fromJson(json, "x.json", back, sback);
+  ASSERT_TRUE(sback.end.has_value());
+  EXPECT_TRUE(sback.end->device.empty());
 }
 
 // No guidance has no spring: the sidecar says kind none with null numbers

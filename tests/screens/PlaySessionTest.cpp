@@ -17,6 +17,7 @@
 #include "engine/record/ContentHash.h"
 #include "engine/record/ReplayReader.h"
 #include "engine/record/ReplayRunner.h"
+#include "engine/script/DeviceProfileLoader.h"
 #include "engine/script/LevelLoader.h"
 #include "game/trial/ReplayCapture.h"
 #include "game/view/RenderSceneBuilder.h"
@@ -287,6 +288,33 @@ TEST(PlaySessionTest, AUdpDeviceWaitsForItsClientThenPlays) {
   EXPECT_NE(session.fault(), haptics::SafetyFault::None);  // the bridge's watchdog: force off at once
   EXPECT_FALSE(session.finished());                       // a person's trial pauses, it does not end
   session.finish();
+}
+
+// The settings' or the study's device profile holds a device behind the
+// bridge: a level whose coupling it cannot render is refused before the
+// bridge opens, in one sentence naming the level and the device; one it
+// can render gets the profile's clamp.
+TEST(PlaySessionTest, ADeviceProfileRefusesACouplingItCannotRender) {
+  script::LoadedLevel level = script::LevelLoader().loadFile(HEMIROLL_SOURCE_DIR "/levels/tutorial_01_tilt_and_return.lua");
+  script::DeviceProfileDef soft = script::DeviceProfileLoader().loadFile(HEMIROLL_SOURCE_DIR "/devices/touch.lua");
+  soft.maxStiffnessNPerM = 400.0;  // tutorial 01: M3, kr 250, alpha 2 = 500 N/m
+  PlaySessionDef def;
+  def.device = "udp";
+  def.deviceOptions.udp.port = 0;
+  useDeviceProfile(def, soft);
+  EXPECT_EQ(def.deviceOptions.udp.spec.maxForce, 3.3);
+  ASSERT_TRUE(def.safety.has_value());
+  EXPECT_EQ(def.safety->continuousForce, 0.88);
+  try {
+    PlaySession session(level, def);
+    FAIL() << "a coupling stiffer than the device was let through";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("tutorial_01_tilt_and_return.lua asks for a coupling stiffness of 500 N/m"),
+              std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find("the 3D Systems Touch's maximum stiffness of 400 N/m"), std::string::npos)
+        << e.what();
+  }
 }
 
 // A device that cannot be opened is one sentence naming it.

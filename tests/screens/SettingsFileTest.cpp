@@ -25,6 +25,7 @@ TEST(SettingsFileTest, EveryFieldRoundTrips) {
   Settings s;
   s.device = "udp";
   s.udpPort = 50000;
+  s.deviceProfile = "touch_x";
   s.joystickIndex = 2;
   s.overrideCoupling = true;
   s.method = 0;
@@ -52,6 +53,7 @@ TEST(SettingsFileTest, EveryFieldRoundTrips) {
   EXPECT_EQ(back.settings.stiffness, 123.25);
   EXPECT_EQ(back.settings.camera, render::CameraMode::Top);
   EXPECT_EQ(back.settings.participant, "P-07");
+  EXPECT_EQ(back.settings.deviceProfile, "touch_x");
   EXPECT_EQ(back.settings.keys, s.keys);
   EXPECT_EQ(back.settings.keys.keyName(KeyAction::TakeHold), "H");
   EXPECT_EQ(back.settings.mouseMmPerPixel, 0.125);

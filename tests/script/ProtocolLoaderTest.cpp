@@ -58,6 +58,17 @@ TEST_F(ProtocolLoaderTest, MinimalProtocolHasTheDefaults) {
   EXPECT_EQ(b.conditions[0].label, "mine");  // the level file's stem
 }
 
+TEST_F(ProtocolLoaderTest, AStudyNamesItsDevice) {
+  EXPECT_EQ(load("return { experiment = 'e1', blocks = { { level = 'mine.lua' } } }").deviceProfile, "");
+  EXPECT_EQ(load("return { experiment = 'e1', device_profile = 'touch', blocks = { { level = 'mine.lua' } } }")
+                .deviceProfile,
+            "touch");
+  EXPECT_THAT(errorOf("return { experiment = 'e1', device_profile = '', blocks = { { level = 'mine.lua' } } }"),
+              ::testing::HasSubstr("device_profile: must name a device profile"));
+  EXPECT_THAT(errorOf("return { experiment = 'e1', device_profile = 3, blocks = { { level = 'mine.lua' } } }"),
+              ::testing::HasSubstr("device_profile"));
+}
+
 TEST_F(ProtocolLoaderTest, ReadsEveryFieldAndMergesBlockValuesIntoConditions) {
   const ProtocolDef def = load(R"(
     return {

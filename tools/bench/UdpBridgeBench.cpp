@@ -82,6 +82,64 @@ void BM_UdpBridgeRoundTrip(benchmark::State& state) {
 }
 BENCHMARK(BM_UdpBridgeRoundTrip)->Arg(1000)->Arg(990)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
 
+// End to end, a step of the hand to the force's response (issue 31): the
+// simulated device (a Touch's figures: 3.3 N clamp, 50 g handle, 0.02 N
+// friction, 0.055 mm encoder counts) reports a 2 mm square wave on x, an
+// edge every 47 ms (at 990 Hz the client's phase to the loop's grid moves
+// 0.47 of a period between edges, so the edges sample every phase; every
+// 50 ms would sample two); the latency runs from sending the first state after an edge to the
+// client receiving the first force computed from it that differs by more
+// than 0.02 N. The path: socket, the bridge's receiver, the servo loop's
+// next tick (physics, coupling, safety with its rate limit), socket back.
+// Counters (us): step_p50_us, step_p10_us, step_p90_us, step_max_us, steps.
+void BM_UdpBridgeStepResponse(benchmark::State& state) {
+  const double clientRate = static_cast<double>(state.range(0));
+  for (auto _ : state) {
+    UdpBridgeDef bridgeDef;
+    bridgeDef.port = 0;
+    UdpBridgeDevice bridge(bridgeDef);
+    if (!bridge.open()) {
+      state.SkipWithError(bridge.error());
+      return;
+    }
+    hapticclient::ClientOptions options;
+    options.port = bridge.port();
+    options.duration = benchSeconds();
+    options.rate = clientRate;
+    options.centre = {0.0, 0.0, 0.04};  // on the mass point at rest, so the coupling engages
+    options.peakForce = 3.3;
+    options.handleMass = 0.05;
+    options.friction = 0.02;
+    options.resolution = 0.000055;
+    options.step = 0.002;
+    options.stepPeriod = 0.094;
+    options.realtimePriority = 70;
+    std::atomic<bool> stopClient{false};
+    hapticclient::ClientSummary summary;
+    std::thread client([&] { summary = hapticclient::runClient(options, stopClient); });
+    if (!bridge.waitForClient(2.0)) {
+      stopClient = true;
+      client.join();
+      state.SkipWithError("the client sent nothing");
+      return;
+    }
+    ServoLoop loop(ServoLoopDef{}, bridge);
+    ServoCommand engage;
+    engage.kind = ServoCommandKind::Engage;
+    loop.post(engage);
+    loop.start();
+    client.join();
+    loop.stop();
+    state.counters["step_p50_us"] = summary.stepMedian * 1e6;
+    state.counters["step_p10_us"] = summary.stepP10 * 1e6;
+    state.counters["step_p90_us"] = summary.stepP90 * 1e6;
+    state.counters["step_max_us"] = summary.stepMax * 1e6;
+    state.counters["steps"] = static_cast<double>(summary.steps);
+    state.counters["lost"] = static_cast<double>(bridge.counters().lost);
+  }
+}
+BENCHMARK(BM_UdpBridgeStepResponse)->Arg(1000)->Arg(990)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
+
 }  // namespace
 
 BENCHMARK_MAIN();

@@ -23,6 +23,22 @@ const char* clientUsage() {
          "  --circle-frequency HZ   turns per second of that circle (default 0.5)\n"
          "  --realtime-priority N   ask for SCHED_FIFO at N (1..99) so that other work cannot\n"
          "                          starve the 1 kHz sends (default 0: normal scheduler)\n"
+         "A simulated physical device (docs/UDP_BRIDGE.md; give it your profile's figures):\n"
+         "  --peak-force N          clamp every force to N (the motors' limit; default: none)\n"
+         "  --handle-mass KG        the handle's moving mass, added to the hand's (default 0)\n"
+         "  --friction N            the handle's Coulomb friction (default 0)\n"
+         "  --resolution M          position quantisation, one encoder count (default: none)\n"
+         "  --passive               a passive hand: no stiffness or damping towards an intent\n"
+         "Faults, to try hemiroll's stops:\n"
+         "  --jitter S              delay each state by a uniform 0..S seconds (default 0)\n"
+         "  --loss P                lose each state with probability P (default 0)\n"
+         "  --reorder P             send a state after the next one with probability P (default 0)\n"
+         "  --seed N                the faults' random seed (default 1)\n"
+         "  --pause-at S --pause-for S  send nothing for a while (the bridge's watchdog)\n"
+         "  --exit-at S             stop for good at S (the client is gone)\n"
+         "  --fault-at S            report a device fault (status 1) from S on\n"
+         "  --step M                a square wave of M on x every --step-period S/2 (default\n"
+         "                          0.2 s); the summary gives the step-to-force latency\n"
          "  --help                  this text\n";
 }
 
@@ -54,7 +70,22 @@ ParsedOptions parseClientOptions(const std::vector<std::string>& args) {
               })
       .option("--circle-radius", cli::numberIn(o.circleRadius, 0.0, kHuge, "a radius >= 0 in metres"))
       .option("--circle-frequency", cli::numberIn(o.circleFrequency, 0.0, kHuge, "a frequency >= 0 in Hz"))
-      .option("--realtime-priority", cli::integerIn(o.realtimePriority, 0, 99, "an integer priority in 0..99"));
+      .option("--realtime-priority", cli::integerIn(o.realtimePriority, 0, 99, "an integer priority in 0..99"))
+      .option("--peak-force", cli::numberIn(o.peakForce, 0.0, kHuge, "a force >= 0 in N"))
+      .option("--handle-mass", cli::numberIn(o.handleMass, 0.0, kHuge, "a mass >= 0 in kg"))
+      .option("--friction", cli::numberIn(o.friction, 0.0, kHuge, "a force >= 0 in N"))
+      .option("--resolution", cli::numberIn(o.resolution, 0.0, 1.0, "a length in 0..1 m"))
+      .flag("--passive", [&] { o.hand.stiffness = 0.0; o.hand.damping = 0.0; })
+      .option("--jitter", cli::numberIn(o.jitter, 0.0, 1.0, "seconds in 0..1"))
+      .option("--loss", cli::numberIn(o.loss, 0.0, 1.0, "a probability in 0..1"))
+      .option("--reorder", cli::numberIn(o.reorder, 0.0, 1.0, "a probability in 0..1"))
+      .option("--seed", cli::unsignedUpTo(o.seed, ~std::uint64_t{0}, "a whole number"))
+      .option("--pause-at", cli::numberIn(o.pauseAt, 0.0, 1e6, "seconds >= 0"))
+      .option("--pause-for", cli::numberIn(o.pauseFor, 0.0, 1e6, "seconds >= 0"))
+      .option("--exit-at", cli::numberIn(o.exitAt, 0.0, 1e6, "seconds >= 0"))
+      .option("--fault-at", cli::numberIn(o.faultAt, 0.0, 1e6, "seconds >= 0"))
+      .option("--step", cli::numberIn(o.step, 0.0, 0.1, "a length in 0..0.1 m"))
+      .option("--step-period", cli::numberIn(o.stepPeriod, 0.002, 1e3, "seconds from 0.002"));
   p.error = reader.read(args);
   return p;
 }

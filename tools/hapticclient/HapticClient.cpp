@@ -10,6 +10,7 @@
 #include "engine/haptics/SimulatedHandDevice.h"
 #include "engine/haptics/UdpProtocol.h"
 #include "engine/haptics/UdpSocket.h"
+#include "tools/hapticclient/SimulatedDevice.h"
 
 namespace hemiroll::hapticclient {
 
@@ -47,7 +48,7 @@ class ForceInbox {
   // (the client is not a servo tick) rather than reserving gigabytes.
   explicit ForceInbox(std::uint64_t expected) { rtts_.reserve(std::min<std::uint64_t>(expected, 600'000)); }
 
-  void take(const udp::ForceMessage& m, std::int64_t now, SimulatedHandDevice& hand, ClientSummary& s) {
+  void take(const udp::ForceMessage& m, std::int64_t now, DeviceModel& hand, StepWatch& steps, ClientSummary& s) {
     ++s.forcesReceived;
     if (haveSequence_ && !udp::sequenceAfter(m.sequence, lastSequence_)) {
       ++s.forcesOutOfOrder;
@@ -69,8 +70,9 @@ class ForceInbox {
     }
     if (m.status == udp::BridgeStatus::Closing) s.bridgeClosed = true;
     const Vec3 f(m.force[0], m.force[1], m.force[2]);
-    s.maxForce = std::max(s.maxForce, f.norm());
-    hand.sendForce(f);
+    hand.setForce(f);
+    s.maxForce = std::max(s.maxForce, hand.rendered().norm());
+    steps.forceReceived(m.answers, f, now);
   }
 
   void finish(ClientSummary& s) const {
@@ -85,6 +87,29 @@ class ForceInbox {
   bool haveSequence_ = false, haveAnswer_ = false;
   std::uint32_t lastSequence_ = 0, lastAnswer_ = 0;
 };
+
+DeviceModelDef deviceModelOf(const ClientOptions& o) {
+  DeviceModelDef d;
+  d.hand = o.hand;
+  d.handleMass = o.handleMass;
+  d.friction = o.friction;
+  d.peakForce = o.peakForce;
+  d.resolution = o.resolution;
+  return d;
+}
+
+LinkFaultsDef linkFaultsOf(const ClientOptions& o) { return {o.jitter, o.loss, o.reorder, o.seed}; }
+
+bool within(double t, double from, double length) { return from >= 0.0 && t >= from && t < from + length; }
+
+void finishSteps(const StepWatch& steps, ClientSummary& s) {
+  const std::vector<double>& v = steps.latencies();
+  s.steps = v.size();
+  s.stepMedian = quantile(v, 0.5);
+  s.stepP10 = quantile(v, 0.1);
+  s.stepP90 = quantile(v, 0.9);
+  s.stepMax = v.empty() ? 0.0 : *std::max_element(v.begin(), v.end());
+}
 
 }  // namespace
 
@@ -104,7 +129,9 @@ ClientSummary runClient(const ClientOptions& o, const std::atomic<bool>& stop) {
 
   if (o.realtimePriority > 0)
     s.realtime = haptics::requestFifoScheduling(o.realtimePriority).status == haptics::RealtimeStatus::Fifo;
-  SimulatedHandDevice hand(circleIntent(o), o.hand);
+  DeviceModel hand(circleIntent(o), deviceModelOf(o));
+  OutgoingLink link(linkFaultsOf(o));
+  StepWatch steps;
   haptics::SteadyServoClock clock;
   const auto periodNs = static_cast<std::int64_t>(std::llround(1e9 / o.rate));
   const auto total = static_cast<std::uint64_t>(std::llround(o.duration * o.rate));
@@ -113,21 +140,38 @@ ClientSummary runClient(const ClientOptions& o, const std::atomic<bool>& stop) {
   const std::int64_t start = clock.now();
   std::int64_t deadline = start;
   std::uint64_t k = 0;
+  int lastHalf = 0;  // the step's half-period index
 
   while (!stop.load(std::memory_order_relaxed)) {
     const std::int64_t now = clock.now();
+    link.sendDue(now, [&](const OutgoingLink::Datagram& d) { socket.send(d.data(), d.size(), bridge); });
     if (now >= deadline) {
       if (k == total) break;  // the last force had one period to arrive
+      const double t = static_cast<double>(now - start) * 1e-9;
+      if (o.exitAt >= 0.0 && t >= o.exitAt) {
+        s.exited = true;
+        break;
+      }
       // The hand lives on wall time, as a real one does: a client that was
       // held up finds its hand where the intent has gone meanwhile.
-      const haptics::DeviceReading r = hand.read(static_cast<double>(now - start) * 1e-9);
+      haptics::DeviceReading r = hand.read(t);
+      const int half = o.step > 0.0 ? static_cast<int>(std::floor(2.0 * t / o.stepPeriod)) : 0;
+      r.position.x() += (half % 2 == 0 ? -0.5 : 0.5) * o.step;
       udp::StateMessage m;
       m.sequence = static_cast<std::uint32_t>(k + 1);
       m.timestampNs = static_cast<std::uint64_t>(now);
       m.position = {r.position.x(), r.position.y(), r.position.z()};
       m.velocity = {r.velocity.x(), r.velocity.y(), r.velocity.z()};
-      socket.send(buffer, udp::encodeState(m, buffer), bridge);
-      ++s.statesSent;
+      m.deviceStatus = o.faultAt >= 0.0 && t >= o.faultAt ? 1 : 0;
+      if (!within(t, o.pauseAt, o.pauseFor)) {
+        OutgoingLink::Datagram d{};
+        udp::encodeState(m, d.data());
+        link.push(d, now);
+        link.sendDue(now, [&](const OutgoingLink::Datagram& out) { socket.send(out.data(), out.size(), bridge); });
+        if (half != lastHalf && k > 0) steps.stepSent(m.sequence, now);
+        lastHalf = half;
+        ++s.statesSent;
+      }
       ++k;
       // Absolute deadlines; after a long stall, re-anchor instead of bursting.
       if (now - deadline > periodNs) {
@@ -139,16 +183,19 @@ ClientSummary runClient(const ClientOptions& o, const std::atomic<bool>& stop) {
       continue;
     }
     UdpEndpoint from;
-    const long n = socket.receive(buffer, sizeof buffer, from, deadline - now);
+    const long n = socket.receive(buffer, sizeof buffer, from, std::min(deadline, link.nextRelease()) - now);
     if (n <= 0 || !(from == bridge)) continue;
     udp::ForceMessage f;
     if (udp::decodeForce(buffer, static_cast<std::size_t>(n), f) != udp::DecodeError::None) {
       ++s.forcesMalformed;
       continue;
     }
-    inbox.take(f, clock.now(), hand, s);
+    inbox.take(f, clock.now(), hand, steps, s);
   }
   inbox.finish(s);
+  finishSteps(steps, s);
+  s.statesDropped = link.lost();
+  s.statesReordered = link.reordered();
   return s;
 }
 
@@ -164,6 +211,14 @@ void printSummary(const ClientSummary& s, std::ostream& out) {
       << "safety_stops " << s.safetyStops << (s.safetyStops > 0 ? std::string(" (last: ") +
              haptics::safetyFaultName(static_cast<haptics::SafetyFault>(s.lastSafetyFault)) + ")" : std::string())
       << "\n"
+      << "states_dropped " << s.statesDropped << "\n"
+      << "states_reordered " << s.statesReordered << "\n"
+      << "exited " << (s.exited ? 1 : 0) << "\n"
+      << "steps " << s.steps << "\n"
+      << "step_latency_median_us " << s.stepMedian * 1e6 << "\n"
+      << "step_latency_p10_us " << s.stepP10 * 1e6 << "\n"
+      << "step_latency_p90_us " << s.stepP90 * 1e6 << "\n"
+      << "step_latency_max_us " << s.stepMax * 1e6 << "\n"
       << "realtime " << (s.realtime ? 1 : 0) << "\n"
       << "bridge_closed " << (s.bridgeClosed ? 1 : 0) << "\n"
       << "max_force_N " << s.maxForce << "\n"

@@ -1,8 +1,10 @@
 #pragma once
 // The reference client of the UDP bridge: a spring-mass hand
-// (SimulatedHandDevice) that sends its state to the bridge at a fixed rate on
-// absolute deadlines and applies every force that comes back (zero-order
-// hold until the next one). Between sends it waits in ppoll on the socket,
+// (SimulatedHandDevice) on a simulated device (SimulatedDevice.h: handle
+// mass and friction, the peak force, quantised positions, a network with
+// jitter, loss and reordering) that sends its state to the bridge at a fixed
+// rate on absolute deadlines and applies every force that comes back
+// (zero-order hold until the next one). Between sends it waits in ppoll on the socket,
 // so it sleeps instead of spinning. Also what a client for a real device
 // looks like (docs/UDP_BRIDGE.md).
 
@@ -27,10 +29,17 @@ struct ClientSummary {
   std::uint64_t safetyStops = 0;      // forces with status SafetyStop
   int lastSafetyFault = 0;            // the last one's fault (haptics::SafetyFault as a number)
   bool bridgeClosed = false;          // a Closing status arrived
-  double maxForce = 0.0;              // largest |F| received [N]
+  double maxForce = 0.0;              // largest |F| rendered: received, after the device's clamp (--peak-force) [N]
   // Round trip: from sending a state to receiving the first force computed
   // from it [s]; includes the wait for the bridge's next servo tick.
   double rttMin = 0.0, rttMedian = 0.0, rttP99 = 0.0, rttMax = 0.0;
+  // The simulated link's own books (--loss, --reorder) and the step
+  // response (--step): from sending the first state after an edge to the
+  // first force that answers it and differs by more than 0.02 N [s].
+  std::uint64_t statesDropped = 0, statesReordered = 0;
+  std::uint64_t steps = 0;
+  double stepMedian = 0.0, stepP10 = 0.0, stepP90 = 0.0, stepMax = 0.0;
+  bool exited = false;                // left at --exit-at
   bool realtime = false;              // SCHED_FIFO was granted
   std::string error;                  // set when the client could not run
 };

@@ -28,6 +28,33 @@ TEST(ClientOptionsTest, DefaultsAndEveryOption) {
   EXPECT_TRUE(parseClientOptions({"--help"}).options.help);
 }
 
+TEST(ClientOptionsTest, TheSimulatedDeviceAndItsFaults) {
+  const ParsedOptions p = parseClientOptions({"--peak-force", "3.3", "--handle-mass", "0.05", "--friction", "0.02",
+                                              "--resolution", "0.000055", "--jitter", "0.0005", "--loss", "0.01",
+                                              "--reorder", "0.02", "--seed", "9", "--pause-at", "1", "--pause-for",
+                                              "0.05", "--exit-at", "2", "--fault-at", "1.5", "--step", "0.002",
+                                              "--step-period", "0.1", "--passive"});
+  ASSERT_EQ(p.error, "");
+  const ClientOptions& o = p.options;
+  EXPECT_EQ(o.peakForce, 3.3);
+  EXPECT_EQ(o.handleMass, 0.05);
+  EXPECT_EQ(o.friction, 0.02);
+  EXPECT_EQ(o.resolution, 0.000055);
+  EXPECT_EQ(o.jitter, 0.0005);
+  EXPECT_EQ(o.loss, 0.01);
+  EXPECT_EQ(o.reorder, 0.02);
+  EXPECT_EQ(o.seed, 9u);
+  EXPECT_EQ(o.pauseAt, 1.0);
+  EXPECT_EQ(o.pauseFor, 0.05);
+  EXPECT_EQ(o.exitAt, 2.0);
+  EXPECT_EQ(o.faultAt, 1.5);
+  EXPECT_EQ(o.step, 0.002);
+  EXPECT_EQ(o.stepPeriod, 0.1);
+  EXPECT_EQ(o.hand.stiffness, 0.0);
+  EXPECT_EQ(o.hand.damping, 0.0);
+  EXPECT_EQ(parseClientOptions({"--loss", "1.5"}).error, "flag --loss needs a probability in 0..1, got '1.5'");
+}
+
 TEST(ClientOptionsTest, BadValuesNameTheFlagAndTheValue) {
   struct Case {
     std::vector<std::string> args;
