@@ -12,6 +12,7 @@
 // Allocates nothing per tick once warm (the judge and accumulator do not; a
 // level's messages are its own).
 
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -36,6 +37,9 @@ struct TrialResult {
   double maxRenderedForce = 0.0;     // largest |force| sent to the device [N]
   double maxProxyDistance = 0.0;     // largest proxy to mass point distance [m]
   double wallTime = 0.0;             // [s]
+  // Rows the record tap's full ring refused (TrialRig::tapLost): a recording
+  // missing them says so in its sidecar's dropped_rows and results.csv.
+  std::uint64_t recordRowsLost = 0;
 };
 
 class TrialJudge {

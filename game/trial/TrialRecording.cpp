@@ -103,6 +103,7 @@ void TrialRecording::finish(const TrialResult& result, const record::Fields& ext
   // The words of `run`'s JSON line and the judge: "success" or "failure".
   end.outcome = script::trialOutcomeName(result.outcome);
   end.reason = result.reason;
+  end.droppedRows = result.recordRowsLost;
   end.hasTiming = timing.has_value();
   if (timing) end.timing = *timing;
   try {

@@ -121,7 +121,11 @@ class TrialRig {
   bool takeLatest() { return loop_->latest(snapshot_); }
 
   // The judge's result (wallTime is left to the driver).
-  TrialResult result() { return judging_.result(initial_); }
+  TrialResult result() {
+    TrialResult r = judging_.result(initial_);
+    r.recordRowsLost = tapLost_;
+    return r;
+  }
   // Rows the tap's ring refused (threaded drivers only).
   std::uint64_t tapLost() const { return tapLost_; }
   // After stopLoop(): the replay log when one was asked for and came out
