@@ -1,5 +1,7 @@
 #include "engine/haptics/ServoLoop.h"
 
+#include <cstdio>
+
 #include <algorithm>
 #include <climits>
 #include <cmath>
@@ -23,8 +25,19 @@ std::string ServoLoop::couplingProblem(const physics::CouplingDef& c, const Devi
   std::string problem = physics::validateCoupling(c);
   if (!problem.empty()) return problem;
   const double stiffest = c.stiffness * (c.method == physics::ForceMethod::M3 ? std::max(1.0, c.alpha) : 1.0);
-  if (!c.visualOnly && spec.hasForceOutput && stiffest > spec.maxStiffness)
-    return "coupling stiffness exceeds the device's maxStiffness";
+  if (!c.visualOnly && spec.hasForceOutput && stiffest > spec.maxStiffness) {
+    // Numbers, not names: which stiffness, and the device's limit.
+    char line[240];
+    if (c.method == physics::ForceMethod::M3 && c.alpha > 1.0)
+      std::snprintf(line, sizeof line,
+                    "a coupling stiffness of %g N/m (k_r %g N/m times alpha %g), more than the %g N/m the '%s' device "
+                    "renders stably",
+                    stiffest, c.stiffness, c.alpha, spec.maxStiffness, spec.name);
+    else
+      std::snprintf(line, sizeof line, "a coupling stiffness of %g N/m, more than the %g N/m the '%s' device renders stably",
+                    stiffest, spec.maxStiffness, spec.name);
+    return line;
+  }
   return {};
 }
 
@@ -39,7 +52,9 @@ ServoLoop::ServoLoop(const ServoLoopDef& def, HapticDevice& device)
   if (def.maxCatchUpTicks < 1) throw std::invalid_argument("ServoLoop: maxCatchUpTicks must be at least 1");
   if (def.recordEvery < 1) throw std::invalid_argument("ServoLoop: recordEvery must be at least 1");
   const std::string problem = couplingProblem(def.coupling, device.spec());
-  if (!problem.empty()) throw std::invalid_argument("ServoLoop: " + problem);
+  if (!problem.empty())
+    throw std::invalid_argument(problem.rfind("a coupling stiffness", 0) == 0 ? "the level asks for " + problem
+                                                                               : "ServoLoop: " + problem);
   const std::string params = physics::validateParams(def.params, false);
   if (!params.empty()) throw std::invalid_argument("ServoLoop: " + params);
   const std::string guidance = guidanceProblem(def.guidance, device.spec());

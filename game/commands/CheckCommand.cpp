@@ -121,17 +121,16 @@ std::string stageName(const script::StageDef& stage, std::size_t index) {
 }
 
 // What a loaded level shows only once played. `where` prefixes each problem.
-void checkLoadedLevel(script::LoadedLevel& level, const std::string& where, std::vector<std::string>& problems) {
+// `device`: the device whose stiffness the coupling is held to (the bot's
+// desk device where no profile names one); nullptr: checked elsewhere.
+void checkLoadedLevel(script::LoadedLevel& level, const std::string& where, std::vector<std::string>& problems,
+                      const haptics::DeviceSpec* device) {
   const script::LevelDef& def = level.def;
-  // A coupling stiffer than the device renders stably (the one `run` and
-  // sessions play on; the servo loop refuses it when the trial starts).
-  const haptics::DeviceSpec device = botDeviceSpec();
-  if (const std::string why = haptics::ServoLoop::couplingProblem(def.coupling, device); !why.empty()) {
-    char line[200];
-    std::snprintf(line, sizeof line, " (%g N/m x alpha against the %s device's %g N/m)", def.coupling.stiffness,
-                  device.name, device.maxStiffness);
-    problems.push_back(where + ": force: " + why + line);
-  }
+  // A coupling stiffer than the device renders stably (the servo loop
+  // refuses it when the trial starts).
+  if (device != nullptr)
+    if (const std::string why = haptics::ServoLoop::couplingProblem(def.coupling, *device); !why.empty())
+      problems.push_back(where + ": force: " + why);
   autopilot::Workspace workspace;
   const script::BotLevelInfo info = botLevelInfo(def);
   workspace.centre = physics::vec3Of(info.workspaceCentre);
@@ -228,12 +227,14 @@ std::vector<std::string> checkProtocol(const std::string& path) {
           script::LevelLoadOptions options;
           options.adjust = [&](script::LevelDef& level) { script::applyTrialOverrides(condition.overrides, level); };
           script::LoadedLevel level = script::LevelLoader(options).loadFile(condition.levelPath);
-          checkLoadedLevel(level, where, problems);
+          const haptics::DeviceSpec played = device ? deviceSpecOf(*device) : botDeviceSpec();
+          // With a profile its refusal below says it in one sentence.
+          checkLoadedLevel(level, where, problems, device ? nullptr : &played);
           if (device)
             if (const std::string refusal = couplingRefusal(*device, level.def.coupling, where); !refusal.empty())
               problems.push_back(refusal);
           const haptics::GuidanceDef guidance = guidanceOf(condition.overrides, 1);
-          if (const std::string why = haptics::guidanceProblem(guidance, botDeviceSpec()); !why.empty())
+          if (const std::string why = haptics::guidanceProblem(guidance, played); !why.empty())
             problems.push_back(where + ": guidance " + why);
         } catch (const std::exception& e) {
           problems.push_back(where + ": " + e.what());
@@ -269,7 +270,8 @@ std::vector<std::string> checkFile(const std::string& path, CheckedKind kind) {
       case CheckedKind::Level: {
         script::LoadedLevel level = script::LevelLoader().loadFile(path);
         std::vector<std::string> problems;
-        checkLoadedLevel(level, path, problems);
+        const haptics::DeviceSpec desk = botDeviceSpec();
+        checkLoadedLevel(level, path, problems, &desk);
         return problems;
       }
       case CheckedKind::Protocol: return checkProtocol(path);

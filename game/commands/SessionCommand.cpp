@@ -163,6 +163,13 @@ TrialResult playAtDevice(ResearchSession& session, const SessionOptions& o, cons
       session.recordNext(level.def, playing->rig().loopDef(), "udp", def.bridge.spec);
   playing->rig().record(recording->tap());
   const TrialResult result = playing->run();
+  // No device, no trial: nothing was played, so nothing is data. The trial
+  // stays unfinished (its files are moved aside when the session resumes)
+  // and the sitting stops here.
+  if (!playing->clientCame())
+    throw SessionError(SessionError::Kind::Environment,
+                       trial.trialId + ": " + result.reason + ". The trial was not played and is not counted: run "
+                       "the same command again once the device's client runs, and the session resumes at it");
   if (!result.scoreError.empty()) std::cerr << "hemiroll session: " << trial.trialId << ": " << result.scoreError << "\n";
   session.finishNext(*recording, result, playing->timing(), deviceResultFields(playing.get()),
                      deviceOutcomeFields(*playing));

@@ -64,6 +64,16 @@ ParticipantAssignment assignParticipant(const script::ProtocolDef& protocol, con
     a.group = row->group;
     a.order = row->order > 0 ? row->order : (row->rankInGroup - 1) % orders + 1;
     a.how = protocol.participantsFile + ", line " + std::to_string(row->line);
+    // A participant keeps their group and order across sessions: a file
+    // edited since their first session is refused, not followed.
+    if (const auto earlier = earlierAssignment(experimentFolder / participant, session);
+        earlier && (earlier->first != a.group || earlier->second != a.order))
+      throw SessionError(SessionError::Kind::BadInput,
+                         protocol.participantsFile + ":" + std::to_string(row->line) + ": participant '" + participant +
+                             "' is in group '" + a.group + "' with block order " + std::to_string(a.order) +
+                             " there, but an earlier session of theirs ran in group '" + earlier->first +
+                             "' with block order " + std::to_string(earlier->second) +
+                             "; a participant keeps their group: correct the file, or start a new participant id");
     return a;
   }
   if (const auto earlier = earlierAssignment(experimentFolder / participant, session)) {

@@ -52,6 +52,15 @@ std::optional<std::string> slurmTimeProblem(std::string_view value) {
   if (dash != std::string_view::npos && !allDigits(days)) return wanted;
   const std::vector<std::string_view> fields = split(clock, ':');
   if (fields.size() > 3 || !std::all_of(fields.begin(), fields.end(), allDigits)) return wanted;
+  // Every field after the first is a clock's: under 60 (under 24 for the
+  // hours after days), and not so long that it stops being a number.
+  for (std::size_t i = 0; i < fields.size(); ++i) {
+    if (fields[i].size() > 9) return wanted;
+    const bool hoursAfterDays = dash != std::string_view::npos && i == 0;
+    const bool later = i > 0;
+    if ((later || hoursAfterDays) && std::stol(std::string(fields[i])) >= (hoursAfterDays ? 24 : 60)) return wanted;
+  }
+  if (days.size() > 5) return wanted;
   const bool anyNonzero = std::any_of(fields.begin(), fields.end(), [](std::string_view f) {
     return f.find_first_not_of('0') != std::string_view::npos;
   }) || days.find_first_not_of('0') != std::string_view::npos;
@@ -64,7 +73,9 @@ std::optional<std::string> slurmNameProblem(std::string_view value) {
   const bool good = !value.empty() && std::all_of(value.begin(), value.end(), [](unsigned char c) {
     return std::isalnum(c) != 0 || c == '_' || c == '-' || c == '.' || c == ',';
   });
-  if (!good) return "a name of letters, digits, '_', '-', '.' (a list joined by ',')";
+  const std::vector<std::string_view> items = split(value, ',');
+  if (!good || std::any_of(items.begin(), items.end(), [](std::string_view item) { return item.empty(); }))
+    return "a name of letters, digits, '_', '-', '.' (a list joined by ',', none empty)";
   return std::nullopt;
 }
 
@@ -72,7 +83,10 @@ std::optional<std::string> slurmMemoryProblem(std::string_view value) {
   std::string_view digits = value;
   if (!digits.empty() && std::string_view("KMGTkmgt").find(digits.back()) != std::string_view::npos)
     digits.remove_suffix(1);
-  if (!allDigits(digits)) return "memory per node as Slurm writes it: a whole number with an optional unit K, M, G or T (e.g. 4G)";
+  // 0 is Slurm's "all the node's memory", a request sites allow; past 12
+  // digits a number is a typing slip, not memory.
+  if (!allDigits(digits) || digits.size() > 12)
+    return "memory per node as Slurm writes it: a whole number with an optional unit K, M, G or T (e.g. 4G)";
   return std::nullopt;
 }
 
@@ -98,7 +112,36 @@ std::string sbatchOption(std::string_view line) {
   return {};
 }
 
+namespace {
+constexpr std::string_view kWrittenTag = "# hemiroll wrote the #SBATCH options:";
+
+// The options previous's writtenOptionsLine names.
+std::vector<std::string> optionsHemirollWrote(std::string_view previous) {
+  std::vector<std::string> written;
+  for (const std::string_view raw : split(previous, '\n')) {
+    const std::string_view line = trimmed(raw);
+    if (line.substr(0, kWrittenTag.size()) != kWrittenTag) continue;
+    for (std::string_view word : split(line.substr(kWrittenTag.size()), ' '))
+      if (!(word = trimmed(word)).empty()) written.emplace_back(word);
+  }
+  return written;
+}
+}  // namespace
+
+std::string writtenOptionsLine(std::string_view fileText) {
+  std::string line(kWrittenTag);
+  bool inHeader = true;
+  for (const std::string_view raw : split(fileText, '\n')) {
+    const std::string_view trimmedLine = trimmed(raw);
+    if (!trimmedLine.empty() && trimmedLine.front() != '#') inHeader = false;
+    if (!inHeader) break;
+    if (const std::string option = sbatchOption(trimmedLine); !option.empty()) line += " " + option;
+  }
+  return line;
+}
+
 CarriedDirectives carryHandAddedDirectives(std::string_view previous, std::string_view fresh) {
+  const std::vector<std::string> hemirollWrote = optionsHemirollWrote(previous);
   std::map<std::string, std::string> freshLines;  // option -> its line in fresh
   std::vector<std::string> freshAll;
   std::size_t insertAt = 0;  // after fresh's last #SBATCH line
@@ -123,7 +166,12 @@ CarriedDirectives carryHandAddedDirectives(std::string_view previous, std::strin
     const std::string option = inHeader ? sbatchOption(line) : std::string();
     if (!option.empty()) {
       const auto same = freshLines.find(option);
-      if (same == freshLines.end()) carried.kept.emplace_back(line);
+      if (same == freshLines.end()) {
+        if (std::find(hemirollWrote.begin(), hemirollWrote.end(), option) != hemirollWrote.end())
+          carried.retired.emplace_back(line);
+        else
+          carried.kept.emplace_back(line);
+      }
       else if (same->second != line) carried.replaced.emplace_back(line);
     } else if (!comment && std::find(freshAll.begin(), freshAll.end(), line) == freshAll.end()) {
       carried.dropped.emplace_back(line);

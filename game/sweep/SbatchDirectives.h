@@ -45,11 +45,17 @@ struct CarriedDirectives {
   std::vector<std::string> kept;    // #SBATCH lines carried over, as they were
   std::vector<std::string> replaced;// previous #SBATCH lines whose option the fresh file sets differently
   std::vector<std::string> dropped; // other previous lines the fresh file does not have
+  std::vector<std::string> retired; // previous #SBATCH lines hemiroll wrote whose option is not asked now
 };
 
+// The comment line that names the #SBATCH options hemiroll wrote into a
+// file, so that writing it again tells its own old lines from a user's.
+std::string writtenOptionsLine(std::string_view fileText);
+
 // Carries into `fresh` every #SBATCH line of `previous` whose option
-// `fresh` does not set: a user's --qos, --constraint or --mail-user survives
-// writing the job again. They go after fresh's own #SBATCH lines (sbatch
+// `fresh` does not set and that hemiroll did not write (previous's
+// writtenOptionsLine names those; they are `retired`): a user's --qos,
+// --constraint or --mail-user survives writing the job again. They go after fresh's own #SBATCH lines (sbatch
 // stops reading them at the first command). A previous line that sets an
 // option fresh also sets, to another value, is reported in `replaced`; any
 // other line of previous that fresh lacks (a hand-written command) in

@@ -64,6 +64,12 @@ SlurmJobFiles slurmJobFiles(const SlurmJobDef& d) {
             "set -euo pipefail\n"
             "exec " + program + " sweep merge " + parts + " --out " + out + " --maps " + (d.maps ? "svg" : "none") +
             "\n";
+  // Each script names the #SBATCH options it holds, so that writing it
+  // again carries a user's lines and retires hemiroll's own.
+  for (std::string* text : {&f.array, &f.merge}) {
+    const std::size_t commands = text->find("set -euo pipefail\n");
+    text->insert(commands, writtenOptionsLine(*text) + "\n");
+  }
   f.submit = "#!/bin/bash\n"
              "# Submits the sweep's " + n + " array tasks, then the merge once they have all\n"
              "# succeeded. After a failure (a task killed, a node lost) run this again: the\n"
@@ -102,6 +108,9 @@ std::string withPreviousLines(const fs::path& path, const std::string& fresh, st
     notes.push_back(name + ": kept the #SBATCH lines added to it: " + listed(carried.kept));
   if (!carried.replaced.empty())
     notes.push_back(name + ": replaced by this command's values: " + listed(carried.replaced));
+  if (!carried.retired.empty())
+    notes.push_back(name + ": not written again (hemiroll wrote them last time; this command does not ask them): " +
+                    listed(carried.retired));
   if (!carried.dropped.empty()) {
     const fs::path kept = path.string() + ".previous";
     try {

@@ -54,8 +54,8 @@ TrialResult DeviceTrial::run() {
   // The level's callbacks run on this thread for each drain's ticks.
   level_.script->setTiming({.realtime = true, .tickSeconds = 10 * kDeviceDrainPeriod});
   judging.start(rig_.initial());  // on_start (and on_fail, should it end the trial)
-  if (!judging.finished() && !bridge_->waitForClient(def_.clientTimeout))
-    judging.fail(noClient(def_.bridge, bridge_->port(), def_.clientTimeout));
+  clientCame_ = judging.finished() || bridge_->waitForClient(def_.clientTimeout);
+  if (!clientCame_) judging.fail(noClient(def_.bridge, bridge_->port(), def_.clientTimeout));
   if (!judging.finished()) {
     rig_.post(haptics::ServoCommandKind::Engage);  // engages when the handle reaches the mass point
     rig_.startLoop();

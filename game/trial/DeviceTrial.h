@@ -64,6 +64,9 @@ class DeviceTrial {
   haptics::SafetyFault stop() const { return stop_; }
   // The stop in words; "" when there was none.
   const std::string& stopWords() const { return stopWords_; }
+  // False when no client sent a state within the timeout: the trial was
+  // never played (a session does not count it: the next sitting plays it).
+  bool clientCame() const { return clientCame_; }
   haptics::LoopTimingSummary timing() const { return rig_.loop().timingSummary(); }
 
  private:
@@ -77,6 +80,7 @@ class DeviceTrial {
   haptics::SafetyFault stop_ = haptics::SafetyFault::None;
   BridgeFacts facts_;
   std::string stopWords_;
+  bool clientCame_ = false;
 };
 
 // results.csv's device columns, the same names for every trial so that a

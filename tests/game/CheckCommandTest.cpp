@@ -60,7 +60,7 @@ TEST(CheckCommandTest, ALevelThatLoadsButCannotBePlayedIsToldWhyEveryTime) {
   const ProcessResult r = check({level});
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_THAT(r.out, HasSubstr("4 problems (as a level)"));
-  EXPECT_THAT(r.out, HasSubstr("coupling stiffness exceeds the device's maxStiffness"));
+  EXPECT_THAT(r.out, HasSubstr("the 'bot' device renders stably"));
   EXPECT_THAT(r.out, HasSubstr("stage 1 (\"reach\") asks for a hold of 12 s, not shorter than the time limit of 10 s"));
   EXPECT_THAT(r.out, HasSubstr("beyond its reach"));
   EXPECT_THAT(r.out, HasSubstr("the score function fails on a won trial"));
@@ -90,7 +90,7 @@ TEST(CheckCommandTest, EachGroupsConditionsAndTheParticipantsFileAreChecked) {
   const ProcessResult r = check({protocol});
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_THAT(r.out, HasSubstr("group \"stiff\", block 1 (\"train\"), condition 1 (\"kr 5000\""));
-  EXPECT_THAT(r.out, HasSubstr("coupling stiffness exceeds the device's maxStiffness"));
+  EXPECT_THAT(r.out, HasSubstr("the 'bot' device renders stably"));
   EXPECT_THAT(r.out, Not(HasSubstr("group \"plain\"")));  // a group that changes nothing plays the blocks as checked
   EXPECT_THAT(r.out, HasSubstr("participants.tsv:3: column 'group': no group 'soft' in the protocol"));
 }
@@ -114,6 +114,19 @@ TEST(CheckCommandTest, AProtocolsDeviceProfileHoldsEveryCondition) {
   const ProcessResult u = check({unknown});
   EXPECT_EQ(u.exitCode, 2);
   EXPECT_THAT(u.out, HasSubstr("device_profile: unknown device profile 'phantom9000'"));
+}
+
+// With a device profile, conditions are held to that device only: an omega.3
+// renders 1200 N/m, which the bot's desk device (1000 N/m) would refuse.
+TEST(CheckCommandTest, AProtocolWithAStiffDeviceIsNotHeldToTheBotsDevice) {
+  TempDirectory dir;
+  const std::string protocol = dir.write(
+      "stiff.lua", "return { experiment = 'x', device_profile = 'omega3', blocks = { { level = '" + kSource +
+                       "/levels/tutorial_02_roll_a_short_distance.lua', kr = 600,\n"
+                       "  guidance = { kind = 'autopilot', stiffness = 1100 } } } }");
+  const ProcessResult r = check({protocol});
+  EXPECT_EQ(r.exitCode, 0) << r.out << r.err;
+  EXPECT_THAT(r.out, Not(HasSubstr("renders stably")));
 }
 
 TEST(CheckCommandTest, ALoadErrorNamesTheFileAndLineAndTheRestAreStillChecked) {

@@ -95,6 +95,27 @@ TEST(GroupAssignmentTest, FromTheParticipantsFileItsGroupAndOrderOrTheRankWithin
   }
 }
 
+// A file edited after a participant's first session does not move them: their
+// second session in another group would split them across two groups.
+TEST(GroupAssignmentTest, AParticipantsFileEditedSinceTheFirstSessionIsRefused) {
+  test::TempDirectory dir;
+  script::ProtocolDef p = protocol();
+  p.assignment = script::Assignment::ParticipantsFile;
+  p.participantsFile = dir.write("participants.tsv", "participant_id\tgroup\torder\nx1\tc\t2\n");
+  const fs::path experiment = dir.path() / "e";
+  arrived(experiment, "x1", "c", 2);
+  EXPECT_EQ(assignParticipant(p, experiment, "x1", "2").group, "c");  // the same line: session 2 as session 1
+  dir.write("participants.tsv", "participant_id\tgroup\torder\nx1\ta\t2\n");
+  try {
+    (void)assignParticipant(p, experiment, "x1", "2");
+    FAIL() << "no error";
+  } catch (const SessionError& e) {
+    EXPECT_EQ(e.kind(), SessionError::Kind::BadInput);
+    EXPECT_THAT(e.what(), HasSubstr(":2: participant 'x1' is in group 'a' with block order 2 there, but an earlier "
+                                    "session of theirs ran in group 'c'"));
+  }
+}
+
 TEST(GroupAssignmentTest, WithoutGroupsOrOrdersThereIsNothingToAssign) {
   test::TempDirectory dir;
   script::ProtocolDef p;

@@ -11,11 +11,13 @@ namespace hemiroll::game {
 namespace {
 
 using ::testing::HasSubstr;
+using ::testing::Not;
 
 TEST(SbatchDirectivesTest, TimeLimitsInEverySlurmFormAndNothingElse) {
   for (const char* good : {"90", "30:00", "2:30:00", "1-12", "1-12:30", "1-12:30:00", "UNLIMITED"})
     EXPECT_FALSE(slurmTimeProblem(good)) << good;
-  for (const char* bad : {"", "1h", "1:2:3:4", "a-1", "1-", "-5", "1.5", "90 ", "1-2:3:4:5"})
+  for (const char* bad : {"", "1h", "1:2:3:4", "a-1", "1-", "-5", "1.5", "90 ", "1-2:3:4:5", "61:99", "1:60:00",
+                          "2-24", "99999999999"})
     EXPECT_TRUE(slurmTimeProblem(bad)) << bad;
   // Zero would ask for no limit at all.
   ASSERT_TRUE(slurmTimeProblem("0:00"));
@@ -25,9 +27,10 @@ TEST(SbatchDirectivesTest, TimeLimitsInEverySlurmFormAndNothingElse) {
 TEST(SbatchDirectivesTest, NamesAndMemory) {
   EXPECT_FALSE(slurmNameProblem("gpu_a100.x-1"));
   EXPECT_FALSE(slurmNameProblem("short,long"));
-  for (const char* bad : {"", "a b", "a;rm", "a\nb", "$HOME"}) EXPECT_TRUE(slurmNameProblem(bad)) << bad;
+  for (const char* bad : {"", "a b", "a;rm", "a\nb", "$HOME", ",", "a,,b", "a,"}) EXPECT_TRUE(slurmNameProblem(bad)) << bad;
   for (const char* good : {"4G", "500M", "0", "1024", "2t"}) EXPECT_FALSE(slurmMemoryProblem(good)) << good;
-  for (const char* bad : {"", "G", "4GB", "1.5G", "-1", "4 G"}) EXPECT_TRUE(slurmMemoryProblem(bad)) << bad;
+  for (const char* bad : {"", "G", "4GB", "1.5G", "-1", "4 G", "99999999999999999999999G"})
+    EXPECT_TRUE(slurmMemoryProblem(bad)) << bad;
 }
 
 TEST(SbatchDirectivesTest, PathValuesAreOneQuotedWordWithLiteralPercents) {
@@ -61,6 +64,19 @@ TEST(SbatchDirectivesTest, HandAddedLinesAreCarriedBeforeTheFirstCommand) {
   // reported; a #SBATCH line after the first command was never read by
   // sbatch, so it is not made to count now.
   EXPECT_EQ(c.dropped, std::vector<std::string>{"module load gcc"});
+}
+
+TEST(SbatchDirectivesTest, HemirollsOwnOptionsAreNamedAndRetiredNotKept) {
+  const std::string fresh = "#!/bin/bash\n#SBATCH --job-name=j\nset -e\n";
+  EXPECT_EQ(writtenOptionsLine("#!/bin/bash\n#SBATCH --job-name=j\n#SBATCH -t 5\nset -e\n#SBATCH --qos=x\n"),
+            "# hemiroll wrote the #SBATCH options: job-name time");
+  const std::string previous =
+      "#!/bin/bash\n#SBATCH --job-name=j\n#SBATCH --time=90\n#SBATCH --qos=high\n"
+      "# hemiroll wrote the #SBATCH options: job-name time\nset -e\n";
+  const CarriedDirectives c = carryHandAddedDirectives(previous, fresh);
+  EXPECT_EQ(c.retired, std::vector<std::string>{"#SBATCH --time=90"});
+  EXPECT_EQ(c.kept, std::vector<std::string>{"#SBATCH --qos=high"});
+  EXPECT_THAT(c.text, Not(HasSubstr("--time")));
 }
 
 TEST(SbatchDirectivesTest, TheSameFileAgainChangesNothing) {

@@ -284,6 +284,29 @@ return { experiment = "device-study", device_profile = "small.lua", blocks = { {
   EXPECT_THAT(TempDirectory::read(folder / "trial-001.json"), HasSubstr("device states received"));
 }
 
+// No device, no trial: a trial whose client never came is not data. The
+// sitting stops (exit 1) with the trial unfinished, and running the same
+// command again starts it afresh, the first attempt's files moved aside.
+TEST(SessionCommandTest, ATrialAtADeviceWithNoClientIsNotPlayedNorCounted) {
+  TempDirectory dir;
+  const std::string protocol = dir.write(
+      "lonely.lua", "return { experiment = 'lonely', blocks = { { level = '" + kSource +
+                        "/levels/tutorial_01_tilt_and_return.lua', repetitions = 2 } } }");
+  const std::string port = std::to_string(40000 + (::getpid() + 7) % 20000);
+  const std::vector<std::string> args = {protocol, "--participant", "p01", "--data", dir.path().string(),
+                                         "--device", "udp", "--port", port, "--client-timeout", "0.2"};
+  const ProcessResult first = session(args);
+  EXPECT_EQ(first.exitCode, 1) << first.out << first.err;
+  EXPECT_THAT(first.err, HasSubstr("trial-001: no device: no state from a client"));
+  EXPECT_THAT(first.err, HasSubstr("The trial was not played and is not counted"));
+  const fs::path folder = dir.path() / "lonely" / "p01" / "1";
+  EXPECT_TRUE(record::ResultsFile(folder / "results.csv").read().rows.empty());
+  const ProcessResult again = session(args);
+  EXPECT_EQ(again.exitCode, 1);
+  EXPECT_THAT(again.err, HasSubstr("trial-001 was"));  // the unplayed attempt, moved aside, named
+  EXPECT_TRUE(record::ResultsFile(folder / "results.csv").read().rows.empty());
+}
+
 TEST(SessionCommandTest, BadInputIsOneSentenceAndExitTwoWithNothingWritten) {
   TempDirectory dir;
   const std::string data = (dir.path() / "data").string();
@@ -316,7 +339,7 @@ TEST(SessionCommandTest, BadInputIsOneSentenceAndExitTwoWithNothingWritten) {
   const ProcessResult tooStiff = session({stiff, "--participant", "p01", "--data", data, "--bot", kSolver});
   EXPECT_EQ(tooStiff.exitCode, 2);
   EXPECT_THAT(tooStiff.err, HasSubstr("trial-002 (stiff, "));
-  EXPECT_THAT(tooStiff.err, HasSubstr("the bot device cannot take this coupling: coupling stiffness exceeds"));
+  EXPECT_THAT(tooStiff.err, HasSubstr("the bot device cannot take this coupling: a coupling stiffness of 1200 N/m (k_r 600 N/m times alpha 2), more than the 1000 N/m the 'bot' device renders stably"));
   EXPECT_EQ(session({kDemo}).exitCode, 2);
   EXPECT_FALSE(fs::exists(data));
   EXPECT_EQ(session({"--help"}).exitCode, 0);

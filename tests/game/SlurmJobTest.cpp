@@ -150,6 +150,33 @@ TEST(SlurmJobTest, WritingAgainKeepsHandAddedLinesAndLosesNothing) {
   EXPECT_TRUE(saidReplaced);
 }
 
+// hemiroll's own lines of a previous run are its own, not the user's: a
+// value no longer asked goes, and says so; the warning matches the file.
+TEST(SlurmJobTest, AnOptionNoLongerAskedIsRetiredNotCarried) {
+  test::TempDirectory dir;
+  SlurmJobDef d = job();
+  d.out = dir.path() / "sweep";
+  d.resources.time = "1-00:00:00";
+  d.resources.partition = "short";
+  const auto first = writeSlurmJob(d);
+  std::string edited = readAll(first.files[0]);
+  edited.insert(edited.find("set -euo"), "#SBATCH --qos=high\n");
+  std::ofstream(first.files[0]) << edited;
+  d.resources = {};
+  const auto again = writeSlurmJob(d);
+  const std::string array = readAll(again.files[0]);
+  EXPECT_THAT(array, Not(HasSubstr("--time=")));
+  EXPECT_THAT(array, Not(HasSubstr("--partition=")));
+  EXPECT_THAT(array, HasSubstr("# No --time"));
+  EXPECT_THAT(array, HasSubstr("#SBATCH --qos=high\n"));  // the user's line stays
+  bool retired = false;
+  for (const auto& note : again.notes)
+    retired |= note.find("sweep-array.sbatch: not written again") != std::string::npos &&
+               note.find("#SBATCH --time=1-00:00:00") != std::string::npos;
+  EXPECT_TRUE(retired);
+  for (const auto& note : again.notes) EXPECT_THAT(note, Not(HasSubstr("kept the #SBATCH lines added to it: #SBATCH --time")));
+}
+
 TEST(SlurmJobTest, TheFilesAreWrittenExecutable) {
   test::TempDirectory dir;
   SlurmJobDef d = job();
