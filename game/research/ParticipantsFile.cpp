@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <iterator>
 
 #include "engine/files/FileKinds.h"
 #include "engine/record/DurableFile.h"
@@ -66,6 +67,9 @@ ParticipantsTable readParticipantsFile(const std::string& path, const script::Pr
   const auto where = [&](int line, const std::string& column) {
     return path + ":" + std::to_string(line) + ": column '" + column + "': ";
   };
+  // A file saved by a spreadsheet may start with a byte-order mark: not part
+  // of the first column's name.
+  if (table.header[0].rfind("\xEF\xBB\xBF", 0) == 0) table.header[0].erase(0, 3);
   if (table.header[0] != "participant_id")
     badInput(where(1, table.header[0]) + "the first column must be participant_id (tab-separated columns)");
   int groupColumn = -1, orderColumn = -1;
@@ -74,6 +78,15 @@ ParticipantsTable readParticipantsFile(const std::string& path, const script::Pr
     if (name.empty()) badInput(path + ":1: column " + std::to_string(c + 1) + " has no name");
     if (std::count(table.header.begin(), table.header.end(), name) > 1)
       badInput(where(1, name) + "named twice");
+    // The names hemiroll writes beside the lab's columns (BIDS participants,
+    // analyze's trials.csv): a lab column so named would clash with them.
+    static const char* const kReserved[] = {"participant", "session", "block_order", "assigned_by", "trial",
+                                            "trial_index", "trial_id", "block", "block_name", "trial_in_block",
+                                            "condition", "condition_label", "outcome", "success", "time_s",
+                                            "score", "level", "level_file", "seed", "guidance"};
+    if (std::find(std::begin(kReserved), std::end(kReserved), name) != std::end(kReserved))
+      badInput(where(1, name) + "a name hemiroll writes itself (in BIDS participants.tsv and analyze's trials.csv); "
+               "rename the column (e.g. 'lab_" + name + "')");
     if (name == "group") groupColumn = static_cast<int>(c);
     if (name == "order") orderColumn = static_cast<int>(c);
   }

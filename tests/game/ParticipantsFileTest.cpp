@@ -87,6 +87,18 @@ TEST_F(ParticipantsFileTest, MistakesNameTheFileLineAndColumn) {
   EXPECT_THAT(errorOf("participant_id\tgroup\np01\tguided\n", script::Assignment::Balanced),
               HasSubstr(":1: column 'group': the protocol assigns groups and orders by arrival"));
   EXPECT_EQ(errorOf("participant_id\tage\np01\t24\n", script::Assignment::Balanced), "no error");
+  // A lab column named as one hemiroll writes beside it would clash in BIDS and trials.csv.
+  EXPECT_THAT(errorOf("participant_id\tgroup\tsession\np01\tguided\t3\n"),
+              HasSubstr(":1: column 'session': a name hemiroll writes itself"));
+  EXPECT_THAT(errorOf("participant_id\tgroup\tblock_order\np01\tguided\t2\n"), HasSubstr("'lab_block_order'"));
+}
+
+// A spreadsheet's byte-order mark is not part of the first column's name.
+TEST_F(ParticipantsFileTest, AByteOrderMarkIsSkipped) {
+  const std::string path = dir_.write("participants.tsv", "\xEF\xBB\xBFparticipant_id\tgroup\np01\tguided\n");
+  const ParticipantsTable t = readParticipantsFile(path, protocol(script::Assignment::ParticipantsFile));
+  ASSERT_NE(t.find("p01"), nullptr);
+  EXPECT_EQ(t.header[0], "participant_id");
 }
 
 }  // namespace
