@@ -116,12 +116,21 @@ void UdpBridgeDevice::accept(const udp::StateMessage& m, const UdpEndpoint& from
   if (!haveClient_) {
     client_ = from;
     haveClient_ = true;
+    skipped_ = 0;
     clientChanges_.fetch_add(1, std::memory_order_relaxed);
   } else if (!udp::sequenceAfter(m.sequence, lastSequence_)) {
     outOfOrder_.fetch_add(1, std::memory_order_relaxed);
+    const std::uint32_t behind = lastSequence_ - m.sequence;
+    if (behind >= 1 && behind < 64 && (skipped_ >> behind & 1u) != 0) {
+      skipped_ &= ~(std::uint64_t{1} << behind);
+      lost_.fetch_sub(1, std::memory_order_relaxed);
+    }
     return;
-  } else if (m.sequence - lastSequence_ > 1) {
-    lost_.fetch_add(m.sequence - lastSequence_ - 1, std::memory_order_relaxed);
+  } else {
+    const std::uint32_t gap = m.sequence - lastSequence_;
+    skipped_ = gap >= 64 ? 0 : skipped_ << gap;
+    for (std::uint32_t d = 1; d < gap && d < 64; ++d) skipped_ |= std::uint64_t{1} << d;
+    if (gap > 1) lost_.fetch_add(gap - 1, std::memory_order_relaxed);
   }
   if (lastArrival_ != 0 && arrival - lastArrival_ > static_cast<std::int64_t>(def_.latePacket * 1e9))
     late_.fetch_add(1, std::memory_order_relaxed);

@@ -69,7 +69,7 @@ struct UdpBridgeCounters {
   std::uint64_t accepted = 0;     // good states handed to the loop
   std::uint64_t malformed = 0;    // failed to decode (magic, version, type, size, NaN)
   std::uint64_t outOfOrder = 0;   // sequence not after the last accepted one (late or duplicate)
-  std::uint64_t lost = 0;         // sequence gaps among accepted states (never arrived, or arrived late)
+  std::uint64_t lost = 0;         // states that never arrived (a gap not filled by a late one within 63 states)
   std::uint64_t late = 0;         // accepted states that arrived more than latePacket after the previous one
   std::uint64_t otherSender = 0;  // from a second sender while the client was alive
   std::uint64_t clientChanges = 0;
@@ -133,6 +133,10 @@ class UdpBridgeDevice final : public HapticDevice {
   UdpEndpoint client_;
   bool haveClient_ = false;
   std::uint32_t lastSequence_ = 0;
+  // Bit d: the state d sequence numbers behind lastSequence_ was skipped
+  // (counted lost). One arriving late, within 63, was not lost after all:
+  // it counts out of order only.
+  std::uint64_t skipped_ = 0;
   std::int64_t lastArrival_ = 0;
 
   // Servo thread only (read/sendForce).

@@ -163,20 +163,28 @@ TEST(UdpBridgeDeviceTest, MalformedDatagramsAreCountedAndDropped) {
   EXPECT_EQ(d.read(0.0).position.x(), 0.01);  // only the good state got through
 }
 
+// Received + out of order + lost is what the client sent: a state that
+// arrives after a later one is out of order (and dropped), not also lost.
 TEST(UdpBridgeDeviceTest, OutOfOrderAndDuplicatesAreDroppedGapsCountedAsLost) {
   UdpBridgeDevice d(testDef());
   ASSERT_TRUE(d.open());
   FakeClient client(d.port());
   client.sendState(state(10, 0.010));
   client.sendState(state(13, 0.013));  // 11 and 12 missing
-  client.sendState(state(12, 0.012));  // late
+  client.sendState(state(12, 0.012));  // late: not lost after all
   client.sendState(state(13, 0.013));  // duplicate
-  ASSERT_TRUE(waitReceived(d, 4));
+  client.sendState(state(12, 0.012));  // duplicate of a late one: no second un-losing
+  ASSERT_TRUE(waitReceived(d, 5));
   const UdpBridgeCounters c = d.counters();
   EXPECT_EQ(c.accepted, 2u);
-  EXPECT_EQ(c.outOfOrder, 2u);
-  EXPECT_EQ(c.lost, 2u);
+  EXPECT_EQ(c.outOfOrder, 3u);
+  EXPECT_EQ(c.lost, 1u);  // 11 never came
   EXPECT_EQ(d.read(0.0).position.x(), 0.013);
+  // A gap wider than the window stays lost whatever arrives later.
+  client.sendState(state(200, 0.2));
+  client.sendState(state(14, 0.014));  // 186 behind: out of the 63-state window
+  ASSERT_TRUE(waitReceived(d, 7));
+  EXPECT_EQ(d.counters().lost, 1u + 186u);
 }
 
 // A good state more than latePacket (2 ms) after the previous one is late;
