@@ -20,7 +20,9 @@ struct ClientOptions {
   haptics::HandModelDef hand;    // mass [kg], stiffness [N/m], damping [N s/m]
   // The hand's intent: a circle in the horizontal plane that starts at centre,
   // p(t) = centre + r (sin wt, 1 - cos wt, 0), w = 2 pi f. r = 0 holds still.
-  std::array<double, 3> centre{0.0, 0.0, 0.0};  // device frame [m]
+  // The default is on the mass point of a level's default body (R = 4 cm,
+  // upright), where the coupling engages; a hand elsewhere leaves it armed.
+  std::array<double, 3> centre{0.0, 0.0, 0.04};  // device frame [m]
   double circleRadius = 0.0;     // [m]
   double circleFrequency = 0.5;  // [Hz]
   int realtimePriority = 0;      // SCHED_FIFO priority when permitted, 0: the normal scheduler

@@ -26,6 +26,9 @@ TEST(ClientOptionsTest, DefaultsAndEveryOption) {
   EXPECT_EQ(o.circleFrequency, 2.0);
   EXPECT_EQ(o.realtimePriority, 70);
   EXPECT_TRUE(parseClientOptions({"--help"}).options.help);
+  // Without --centre the hand starts on a default level's mass point, where
+  // the coupling engages (at the origin it stayed armed all trial).
+  EXPECT_EQ(parseClientOptions({}).options.centre, (std::array<double, 3>{0.0, 0.0, 0.04}));
 }
 
 TEST(ClientOptionsTest, TheSimulatedDeviceAndItsFaults) {
