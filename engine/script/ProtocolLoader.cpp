@@ -5,6 +5,7 @@
 #include <lua.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <optional>
@@ -253,8 +254,15 @@ std::vector<GroupDef> readGroups(const LuaTableReader& list, const ProtocolDef& 
     if (!name) table.fail("name", "missing; every group needs a name (it names the group in results)");
     if (!isFolderName(*name))
       table.fail("name", "'" + *name + "' is not a group name: use 1 to 64 letters, digits, '-' or '_'");
-    for (const GroupDef& other : groups)
+    const auto lower = [](std::string text) {
+      for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      return text;
+    };
+    for (const GroupDef& other : groups) {
       if (other.name == *name) table.fail("name", "'" + *name + "' names two groups");
+      if (lower(other.name) == lower(*name))
+        table.fail("name", "'" + *name + "' and '" + other.name + "' differ only in case; name groups apart");
+    }
     g.name = *name;
     g.description = table.string("description").value_or("");
     if (const auto changes = table.table("changes")) {
@@ -266,6 +274,10 @@ std::vector<GroupDef> readGroups(const LuaTableReader& list, const ProtocolDef& 
         if (!block) change.fail("block", "missing; the name of the block this change applies to");
         GroupChange c;
         c.block = blockNamed(change, "block", *block, def);
+        for (const GroupChange& earlier : g.changes)
+          if (earlier.block == c.block)
+            change.fail("block", "'" + *block + "' is changed twice in group '" + g.name +
+                                     "'; put everything the group changes in that block into one change");
         c.overrides = readOverrides(change);
         if (c.overrides.empty()) change.fail("", "changes nothing; give method, kr, kv, alpha, time_limit or guidance");
         g.changes.push_back(std::move(c));
@@ -347,6 +359,15 @@ ProtocolDef readProtocol(const LuaTableReader& top, const LevelFolders& folders)
     if (i == count && b.breakAfter)
       block.fail("break_after", "the last block has no block after it (a break goes between blocks)");
   }
+  // Groups and counterbalancing name blocks: a name two blocks share would
+  // quietly mean the first.
+  if (top.table("groups") || top.table("counterbalance"))
+    for (std::size_t i = 0; i < def.blocks.size(); ++i)
+      for (std::size_t j = 0; j < i; ++j)
+        if (def.blocks[i].name == def.blocks[j].name)
+          entry(*blocks, static_cast<int>(i) + 1)
+              .fail("name", "'" + def.blocks[i].name + "' names blocks " + std::to_string(j + 1) + " and " +
+                                std::to_string(i + 1) + "; groups and counterbalance name blocks, so each needs its own");
   if (const auto groups = top.table("groups")) def.groups = readGroups(*groups, def);
   if (const auto counterbalance = top.table("counterbalance")) def.counterbalanced = readCounterbalance(*counterbalance, def);
   if (const auto participants = top.string("participants")) {

@@ -388,6 +388,17 @@ TEST_F(ProtocolLoaderTest, GroupAndCounterbalanceMistakesAreNamed) {
   EXPECT_EQ(errorOf("return { experiment = 'g', participants = 'nobody.tsv'," + blocks),
             "p.lua:1: participants: no participants file 'nobody.tsv' (looked in " + dir_.path().string() + ")");
   EXPECT_THAT(errorOf("return { experiment = 'g', grups = {}," + blocks), HasSubstr("did you mean 'groups'?"));
+  // Names that would quietly mean the first of two.
+  EXPECT_EQ(errorOf("return { experiment = 'g', groups = { { name = 'Stiff' }, { name = 'stiff' } }," + blocks),
+            "p.lua:1: groups[2].name: 'stiff' and 'Stiff' differ only in case; name groups apart");
+  EXPECT_EQ(errorOf("return { experiment = 'g', groups = { { name = 'x', changes = { { block = 'a', kr = 100 },"
+                    " { block = 'a', kr = 200 } } } }," + blocks),
+            "p.lua:1: groups[1].changes[2].block: 'a' is changed twice in group 'x'; put everything the group changes "
+            "in that block into one change");
+  EXPECT_EQ(errorOf("return { experiment = 'g', counterbalance = { 'a', 'b' }, blocks = { { name = 'a', level = "
+                    "'mine.lua' }, { name = 'b', level = 'mine.lua' }, { name = 'a', level = 'mine.lua' } } }"),
+            "p.lua:1: blocks[3].name: 'a' names blocks 1 and 3; groups and counterbalance name blocks, so each needs "
+            "its own");
 }
 
 }  // namespace
