@@ -68,7 +68,8 @@ int analyzeExperiment(const AnalyzeOptions& o) {
       std::cerr << "hemiroll analyze: " << e.what() << "\n";
       return kExitFailure;
     }
-    std::cerr << "hemiroll analyze: " << table.sessions << " sessions, " << table.trials.size() << " trials, "
+    std::cerr << "hemiroll analyze: " << table.sessions << (table.sessions == 1 ? " session, " : " sessions, ")
+              << table.trials.size() << (table.trials.size() == 1 ? " trial, " : " trials, ")
               << files.size() << " files written to " << *o.outDir << "\n";
   }
   std::cout << groupSummary(table);

@@ -38,6 +38,7 @@ constexpr const char* kPrefix = "hemiroll check: ";
 struct CheckOptions {
   std::vector<std::string> files;
   std::optional<CheckedKind> as;
+  std::string levelsDir;  // protocols: where levels are looked for, as `session --levels`
   bool help = false;
 };
 
@@ -57,7 +58,7 @@ const char* kindName(CheckedKind kind) {
 }
 
 std::string checkUsage() {
-  return "usage: hemiroll check FILE... [--as level|protocol|scenario|sweep]\n"
+  return "usage: hemiroll check FILE... [--as level|protocol|scenario|sweep] [--levels DIR]\n"
          "\n"
          "Loads each file as the command that uses it would (play/run, session, sim,\n"
          "sweep) and reports every problem found without playing it: a load error\n"
@@ -71,6 +72,8 @@ std::string checkUsage() {
          "  --as KIND   what the files are; without it the kind is guessed: `blocks`\n"
          "              makes a protocol, `drive` with `axes` a sweep spec, `drive`\n"
          "              with `duration` a scenario, anything else a level\n"
+         "  --levels DIR  protocols: where level files are looked for after the\n"
+         "              protocol's folder, as `hemiroll session --levels`\n"
          "  --help      print this help\n"
          "\n"
          "Exit codes: 0 every file is clean, 2 a file has a problem or a flag is wrong.\n";
@@ -83,6 +86,7 @@ CheckOptionsResult parseCheckOptions(const std::vector<std::string>& args) {
   reader.flag("--help", [&] { o.help = true; })
       .flag("-h", [&] { o.help = true; })
       .positional("file", std::numeric_limits<std::size_t>::max(), [&](const std::string& f) { o.files.push_back(f); })
+      .option("--levels", cli::text(o.levelsDir, "a directory"))
       .option("--as", [&](const std::string& flag, const std::string& value) {
         if (value == "level") o.as = CheckedKind::Level;
         else if (value == "protocol") o.as = CheckedKind::Protocol;
@@ -194,9 +198,11 @@ std::string readSource(const std::string& path) {
   return files::readCheckedFile(path, files::kLuaSource);
 }
 
-std::vector<std::string> checkProtocol(const std::string& path) {
+std::vector<std::string> checkProtocol(const std::string& path, const std::string& levelsDir) {
   std::vector<std::string> problems;
-  const script::ProtocolDef protocol = script::ProtocolLoader().loadFile(path);
+  script::ProtocolLoadOptions loadOptions;
+  loadOptions.levelsDir = levelsDir;
+  const script::ProtocolDef protocol = script::ProtocolLoader(loadOptions).loadFile(path);
   (void)script::expandProtocol(protocol, protocol.seed);
   // The study's device: every condition's coupling must be one it renders.
   std::optional<script::DeviceProfileDef> device;
@@ -264,7 +270,7 @@ CheckedKind guessKind(const std::string& source) {
   return CheckedKind::Level;
 }
 
-std::vector<std::string> checkFile(const std::string& path, CheckedKind kind) {
+std::vector<std::string> checkFile(const std::string& path, CheckedKind kind, const std::string& levelsDir) {
   try {
     switch (kind) {
       case CheckedKind::Level: {
@@ -274,7 +280,7 @@ std::vector<std::string> checkFile(const std::string& path, CheckedKind kind) {
         checkLoadedLevel(level, path, problems, &desk);
         return problems;
       }
-      case CheckedKind::Protocol: return checkProtocol(path);
+      case CheckedKind::Protocol: return checkProtocol(path, levelsDir);
       case CheckedKind::Scenario: (void)script::ScenarioLoader().loadFile(path); return {};
       case CheckedKind::Sweep: (void)script::SweepLoader().loadFile(path); return {};
     }
@@ -304,7 +310,7 @@ int runCheckCommand(const std::vector<std::string>& args) {
         continue;
       }
     }
-    const std::vector<std::string> problems = checkFile(path, kind);
+    const std::vector<std::string> problems = checkFile(path, kind, parsed.options.levelsDir);
     if (problems.empty()) {
       std::cout << path << ": ok (" << kindName(kind) << ")\n";
       continue;

@@ -12,11 +12,11 @@ namespace hemiroll::game {
 const char* runUsage() {
   static const std::string usage = std::string(
          "usage: hemiroll run LEVEL.lua --bot BOT.lua|autopilot|passive-hand|human [--seed N] [--record DIR]\n"
-         "       hemiroll run LEVEL.lua --realtime --device udp [--port N] [--device-profile NAME]\n"
          "                    [--realtime] [--device-profile NAME]\n"
          "                    [--autopilot-budget X] [--guidance KIND [--guidance-stiffness K]\n"
          "                    [--guidance-damping C]] [--human-delay S] [--human-interval S]\n"
          "                    [--human-noise X] [--human-device mouse|haptic] [--human-aids]\n"
+         "       hemiroll run LEVEL.lua --realtime --device udp [--port N] [--device-profile NAME]\n"
          "\n"
          "Plays a level with a bot (a Lua module, e.g. scripts/bots/rose.lua) and prints one\n"
          "JSON line: level, bot, outcome, reason, time, score, medal, ticks, wall_time\n"

@@ -205,7 +205,8 @@ int runParticipant(const SessionOptions& o, const SessionRequest& request) {
       }
       const ManifestTrial trial = session.nextTrial();
       if (atDevice) {
-        std::cerr << "hemiroll session: " << trial.trialId << ": " << session.instructionsOf(trial) << "\n";
+        if (const std::string words = session.instructionsOf(trial); !words.empty())
+          std::cerr << "hemiroll session: " << trial.trialId << ": " << words << "\n";
         const TrialResult result = playAtDevice(session, o, request.participant);
         ++tally.ran;
         tally.successes += result.outcome == script::TrialOutcome::Success;

@@ -129,6 +129,17 @@ TEST(CheckCommandTest, AProtocolWithAStiffDeviceIsNotHeldToTheBotsDevice) {
   EXPECT_THAT(r.out, Not(HasSubstr("renders stably")));
 }
 
+// A protocol kept outside a levels folder is checked as session runs it.
+TEST(CheckCommandTest, LevelsAreLookedForWhereSessionLooks) {
+  TempDirectory dir;
+  const std::string protocol =
+      dir.write("p.lua", "return { experiment = 'x', blocks = { { level = 'tutorial_01_tilt_and_return.lua' } } }");
+  EXPECT_EQ(check({protocol}).exitCode, 2);
+  const ProcessResult r = check({protocol, "--levels", kSource + "/levels"});
+  EXPECT_EQ(r.exitCode, 0) << r.out;
+  EXPECT_THAT(r.out, HasSubstr("ok (protocol)"));
+}
+
 TEST(CheckCommandTest, ALoadErrorNamesTheFileAndLineAndTheRestAreStillChecked) {
   TempDirectory dir;
   const std::string broken =
