@@ -4,7 +4,7 @@
 // axes, each a parameter with its values. The grid is the product of the
 // axes; point 0 is every axis at its first value, and the LAST axis varies
 // fastest (the order of nested loops written in the file's order).
-// Expanding a point into a run is the game's (game/sweep/SweepGrid).
+// Expanding a point into a run is the game's (game/research/sweep/SweepGrid).
 
 #include <array>
 #include <optional>

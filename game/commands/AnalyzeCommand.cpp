@@ -7,11 +7,11 @@
 #include <utility>
 
 #include "engine/record/RecordError.h"
-#include "game/analysis/AnalysisInputError.h"
-#include "game/analysis/AnalysisOutput.h"
-#include "game/analysis/ExperimentTable.h"
-#include "game/analysis/LearningCurves.h"
-#include "game/analysis/TrialLoader.h"
+#include "game/research/analysis/AnalysisInputError.h"
+#include "game/research/analysis/AnalysisOutput.h"
+#include "game/research/analysis/ExperimentTable.h"
+#include "game/research/analysis/LearningCurves.h"
+#include "game/research/analysis/TrialLoader.h"
 #include "game/commands/AnalyzeOptions.h"
 #include "game/commands/CommandUsage.h"
 #include "game/commands/ExitCode.h"

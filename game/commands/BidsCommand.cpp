@@ -9,7 +9,7 @@
 #include "game/cli/ArgumentReader.h"
 #include "game/commands/CommandUsage.h"
 #include "game/commands/ExitCode.h"
-#include "game/research/BidsDataset.h"
+#include "game/research/session/BidsDataset.h"
 
 namespace hemiroll::game {
 

@@ -1,6 +1,6 @@
 #pragma once
 // `hemiroll bids SESSION_OR_EXPERIMENT... --out DIR [--name NAME]`: session
-// folders as a BIDS motion dataset (game/research/BidsDataset, RECORDING.md).
+// folders as a BIDS motion dataset (game/research/session/BidsDataset, RECORDING.md).
 
 #include <string>
 #include <vector>

@@ -24,8 +24,8 @@
 #include "game/cli/ArgumentReader.h"
 #include "game/commands/CommandUsage.h"
 #include "game/commands/ExitCode.h"
-#include "game/research/ParticipantsFile.h"
-#include "game/research/ResearchSession.h"
+#include "game/research/session/ParticipantsFile.h"
+#include "game/research/session/ResearchSession.h"
 #include "game/trial/DeviceProfiles.h"
 #include "game/trial/TrialSetup.h"
 

@@ -12,10 +12,10 @@
 #include "engine/record/RecordError.h"
 #include "engine/script/ScenarioLoader.h"
 #include "engine/script/ScriptError.h"
-#include "game/analysis/PaperFigures.h"
+#include "game/research/analysis/PaperFigures.h"
 #include "game/cli/ArgumentReader.h"
 #include "game/commands/ExitCode.h"
-#include "game/sim/ScenarioRun.h"
+#include "game/research/sim/ScenarioRun.h"
 
 namespace hemiroll::game {
 

@@ -13,16 +13,16 @@
 
 #include "engine/platform/PlatformError.h"
 #include "engine/render/RenderError.h"
-#include "game/app/App.h"
-#include "game/app/ScreenTour.h"
-#include "game/app/ScriptedMouse.h"
+#include "game/ui/app/App.h"
+#include "game/ui/app/ScreenTour.h"
+#include "game/ui/app/ScriptedMouse.h"
 #include "engine/render/Image.h"
 #include "game/cli/ArgumentReader.h"
 #include "game/commands/CommandUsage.h"
 #include "game/commands/ExitCode.h"
-#include "game/screens/FreePlay.h"
-#include "game/screens/PlayScreen.h"
-#include "game/view/ShippedDirectories.h"
+#include "game/ui/screens/FreePlay.h"
+#include "game/ui/screens/PlayScreen.h"
+#include "game/ui/view/ShippedDirectories.h"
 
 namespace hemiroll::game {
 

@@ -3,7 +3,7 @@
 // opens the game window on the title screen, or straight into LEVEL.
 //   --levels DIR        the level select lists DIR/*.lua (default: the
 //                       shipped levels, found as the assets are:
-//                       game/view/ShippedDirectories.h)
+//                       game/ui/view/ShippedDirectories.h)
 //   --size WxH          window size [px] (default 1280x720)
 //   --no-vsync          no vsync (the frame cap still holds)
 //   --autoplay SECONDS  a scripted mouse takes hold of the mass point and

@@ -20,8 +20,8 @@
 #include "game/commands/CommandUsage.h"
 #include "game/commands/ExitCode.h"
 #include "game/commands/ScreenshotOptions.h"
-#include "game/view/ShippedDirectories.h"
-#include "game/view/RenderSceneBuilder.h"
+#include "game/ui/view/ShippedDirectories.h"
+#include "game/ui/view/RenderSceneBuilder.h"
 
 namespace hemiroll::game {
 

@@ -19,8 +19,8 @@
 #include "game/trial/DeviceTrial.h"
 #include "game/trial/JsonLine.h"
 #include "engine/script/ProtocolLoader.h"
-#include "game/research/ResearchSession.h"
-#include "game/research/SessionBotMemory.h"
+#include "game/research/session/ResearchSession.h"
+#include "game/research/session/SessionBotMemory.h"
 #include "game/trial/TrialSetup.h"
 
 namespace hemiroll::game {

@@ -13,8 +13,8 @@
 #include "game/commands/CommandUsage.h"
 #include "game/commands/ExitCode.h"
 #include "game/commands/SimOptions.h"
-#include "game/sim/CsvTrajectoryWriter.h"
-#include "game/sim/ScenarioRun.h"
+#include "game/research/sim/CsvTrajectoryWriter.h"
+#include "game/research/sim/ScenarioRun.h"
 
 namespace hemiroll::game {
 

@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "game/sweep/SbatchDirectives.h"
-#include "game/sweep/SweepMetrics.h"
-#include "game/sweep/SweepShard.h"
+#include "game/research/sweep/SbatchDirectives.h"
+#include "game/research/sweep/SweepMetrics.h"
+#include "game/research/sweep/SweepShard.h"
 
 namespace hemiroll::game {
 

@@ -14,10 +14,10 @@
 #include "engine/record/ReplayLogger.h"
 #include "engine/record/Sidecar.h"
 #include "engine/script/SweepLoader.h"
-#include "game/app/SettingsFile.h"
-#include "game/sweep/SweepManifest.h"
-#include "game/sweep/SweepSpecJson.h"
-#include "game/sweep/SweepTable.h"
+#include "game/ui/settings/SettingsFile.h"
+#include "game/research/sweep/SweepManifest.h"
+#include "game/research/sweep/SweepSpecJson.h"
+#include "game/research/sweep/SweepTable.h"
 
 namespace fs = std::filesystem;
 using namespace hemiroll;

@@ -1,6 +1,6 @@
-// Fuzz target: settings.json (game/app/SettingsFile): whatever the file
+// Fuzz target: settings.json (game/ui/app/SettingsFile): whatever the file
 // holds, loading gives settings and notes, never an exception.
-#include "game/app/SettingsFile.h"
+#include "game/ui/settings/SettingsFile.h"
 #include "tests/fuzz/FuzzInput.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

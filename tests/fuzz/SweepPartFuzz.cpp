@@ -1,8 +1,8 @@
-// Fuzz target: a sweep part's manifest (game/sweep/SweepManifest) and its
-// CSV table (game/sweep/SweepTable): the two files `sweep merge` reads.
-#include "game/sweep/SweepError.h"
-#include "game/sweep/SweepManifest.h"
-#include "game/sweep/SweepTable.h"
+// Fuzz target: a sweep part's manifest (game/research/sweep/SweepManifest) and its
+// CSV table (game/research/sweep/SweepTable): the two files `sweep merge` reads.
+#include "game/research/sweep/SweepError.h"
+#include "game/research/sweep/SweepManifest.h"
+#include "game/research/sweep/SweepTable.h"
 #include "tests/fuzz/FuzzInput.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

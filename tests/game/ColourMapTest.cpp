@@ -1,10 +1,10 @@
-// game/report ColourMap: the maps' ends, middle, clamping.
+// game/research/report ColourMap: the maps' ends, middle, clamping.
 
 #include <gtest/gtest.h>
 
 #include <limits>
 
-#include "game/report/ColourMap.h"
+#include "game/research/report/ColourMap.h"
 
 namespace hemiroll::report {
 namespace {

@@ -1,11 +1,11 @@
-// game/analysis/ExperimentTable: a small synthetic experiment folder (two
+// game/research/analysis/ExperimentTable: a small synthetic experiment folder (two
 // participants in two groups, sessions written by ResearchSession with
 // made-up results) read into one long table: a row per trial with its
 // place, outcome and time, the measures and the movement columns; the
 // numbers checked against the made-up ones and the curves against a mean
 // worked out here.
 
-#include "game/analysis/ExperimentTable.h"
+#include "game/research/analysis/ExperimentTable.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -13,9 +13,9 @@
 #include <algorithm>
 
 #include "engine/record/ResultsFile.h"
-#include "game/analysis/AnalysisInputError.h"
-#include "game/analysis/LearningCurves.h"
-#include "game/research/ResearchSession.h"
+#include "game/research/analysis/AnalysisInputError.h"
+#include "game/research/analysis/LearningCurves.h"
+#include "game/research/session/ResearchSession.h"
 #include "game/trial/TrialSetup.h"
 #include "tests/support/TempDirectory.h"
 

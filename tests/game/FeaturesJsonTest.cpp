@@ -1,4 +1,4 @@
-// game/analysis FeaturesJson and FeatureTable: SI keys, "found" with a
+// game/research/analysis FeaturesJson and FeatureTable: SI keys, "found" with a
 // reason instead of numbers, one table row per trial.
 
 #include <gmock/gmock.h>
@@ -7,8 +7,8 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
-#include "game/analysis/FeatureTable.h"
-#include "game/analysis/FeaturesJson.h"
+#include "game/research/analysis/FeatureTable.h"
+#include "game/research/analysis/FeaturesJson.h"
 #include "tests/analysis/support/Synthetic.h"
 
 namespace hemiroll::game {

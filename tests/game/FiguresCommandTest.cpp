@@ -12,7 +12,7 @@
 
 #include "engine/physics/StateLayout.h"
 #include "engine/script/ScenarioLoader.h"
-#include "game/sim/ScenarioRun.h"
+#include "game/research/sim/ScenarioRun.h"
 #include "tests/support/ProcessRunner.h"
 #include "tests/support/TempDirectory.h"
 #include "tests/support/XmlCheck.h"

@@ -1,8 +1,8 @@
-// game/research/GroupAssignment: the least filled group then its least used
+// game/research/session/GroupAssignment: the least filled group then its least used
 // order, by arrival; the participants file's group and order (or rank);
 // a participant's earlier session keeps its assignment.
 
-#include "game/research/GroupAssignment.h"
+#include "game/research/session/GroupAssignment.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -10,8 +10,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "game/research/SessionError.h"
-#include "game/research/SessionManifest.h"
+#include "game/research/session/SessionError.h"
+#include "game/research/session/SessionManifest.h"
 #include "tests/support/TempDirectory.h"
 
 namespace hemiroll::game {

@@ -1,4 +1,4 @@
-// game/report Heatmap: cells coloured by value, a colour bar with its label,
+// game/research/report Heatmap: cells coloured by value, a colour bar with its label,
 // grey cells for missing values, nothing broken for a bad grid.
 
 #include <gmock/gmock.h>
@@ -7,7 +7,7 @@
 #include <limits>
 #include <string>
 
-#include "game/report/Heatmap.h"
+#include "game/research/report/Heatmap.h"
 #include "tests/support/XmlCheck.h"
 
 namespace hemiroll::report {

@@ -1,9 +1,9 @@
-// game/analysis/LearningCurves: per participant and per group, by trial
+// game/research/analysis/LearningCurves: per participant and per group, by trial
 // and by block, checked against the means and standard deviations worked
 // out here by hand from a small made-up experiment; the CSV's long format;
 // the plots are SVG documents with a series per group.
 
-#include "game/analysis/LearningCurves.h"
+#include "game/research/analysis/LearningCurves.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

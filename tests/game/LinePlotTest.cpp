@@ -1,4 +1,4 @@
-// game/report LinePlot: lines break at NaN, equal axes, bands, legend.
+// game/research/report LinePlot: lines break at NaN, equal axes, bands, legend.
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -8,7 +8,7 @@
 #include <regex>
 #include <string>
 
-#include "game/report/LinePlot.h"
+#include "game/research/report/LinePlot.h"
 #include "tests/support/XmlCheck.h"
 
 namespace hemiroll::report {

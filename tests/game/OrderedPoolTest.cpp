@@ -1,8 +1,8 @@
-// game/sweep/OrderedPool: results delivered in job order whatever the thread
+// game/research/sweep/OrderedPool: results delivered in job order whatever the thread
 // count and whichever job finishes first; an exception from a job or from
 // delivery stops the pool and reaches the caller after the threads joined.
 
-#include "game/sweep/OrderedPool.h"
+#include "game/research/sweep/OrderedPool.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -1,14 +1,14 @@
-// game/research/ParticipantsFile: a lab's participants.tsv read and checked
+// game/research/session/ParticipantsFile: a lab's participants.tsv read and checked
 // against the protocol - its own columns kept in order, n/a as missing,
 // each group's rows ranked, and every mistake one sentence naming the file,
 // the line and the column.
 
-#include "game/research/ParticipantsFile.h"
+#include "game/research/session/ParticipantsFile.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "game/research/SessionError.h"
+#include "game/research/session/SessionError.h"
 #include "tests/support/TempDirectory.h"
 
 namespace hemiroll::game {

@@ -1,7 +1,7 @@
-// game/sweep/PhysicsFingerprint: the same arithmetic gives the same
+// game/research/sweep/PhysicsFingerprint: the same arithmetic gives the same
 // fingerprint; a difference of one ulp anywhere in the run's inputs (as
 // another C library's sin or a changed build would make) gives another.
-#include "game/sweep/PhysicsFingerprint.h"
+#include "game/research/sweep/PhysicsFingerprint.h"
 
 #include <gtest/gtest.h>
 

@@ -1,11 +1,11 @@
-// game/report PlotAxis: nice ticks in the label's unit, ranges from data.
+// game/research/report PlotAxis: nice ticks in the label's unit, ranges from data.
 
 #include <gtest/gtest.h>
 
 #include <limits>
 #include <vector>
 
-#include "game/report/PlotAxis.h"
+#include "game/research/report/PlotAxis.h"
 
 namespace hemiroll::report {
 namespace {

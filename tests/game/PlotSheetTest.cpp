@@ -1,9 +1,9 @@
-// game/report PlotSheet: panels in a grid on one page.
+// game/research/report PlotSheet: panels in a grid on one page.
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "game/report/PlotSheet.h"
+#include "game/research/report/PlotSheet.h"
 #include "tests/support/XmlCheck.h"
 
 namespace hemiroll::report {

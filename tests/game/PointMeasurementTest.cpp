@@ -1,10 +1,10 @@
-// game/sweep/PointMeasurement: one point run and measured. The paper's point
+// game/research/sweep/PointMeasurement: one point run and measured. The paper's point
 // from the static tilt is the run docs/FIGURES.md measured (a steady
 // precession over the whole run, a helix with one loop per leaf); from rest
 // at k = 16, Omega = -1 rad/s it tips over within half a second; the tilt
 // formula agrees with the orientation of eq. (6).
 
-#include "game/sweep/PointMeasurement.h"
+#include "game/research/sweep/PointMeasurement.h"
 
 #include <gtest/gtest.h>
 

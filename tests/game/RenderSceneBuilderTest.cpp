@@ -1,4 +1,4 @@
-#include "game/view/RenderSceneBuilder.h"
+#include "game/ui/view/RenderSceneBuilder.h"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
-// game/research/ResearchSession: a protocol's plan turned into a session
+// game/research/session/ResearchSession: a protocol's plan turned into a session
 // folder, trial by trial; resumed only with the same protocol, seed and
 // levels; breaks that end a sitting.
 
-#include "game/research/ResearchSession.h"
+#include "game/research/session/ResearchSession.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -13,7 +13,7 @@
 #include "engine/record/ContentHash.h"
 #include "engine/record/DurableFile.h"
 #include "engine/record/ResultsFile.h"
-#include "game/research/SessionFolder.h"
+#include "game/research/session/SessionFolder.h"
 #include "game/trial/ReplayCapture.h"
 #include "game/trial/TrialSetup.h"
 #include "tests/support/TempDirectory.h"

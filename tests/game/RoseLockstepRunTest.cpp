@@ -1,10 +1,10 @@
-// game/sim/RoseLockstepRun: several rose scenarios in SIMD lanes give, lane
+// game/research/sim/RoseLockstepRun: several rose scenarios in SIMD lanes give, lane
 // by lane, the rows and summary ScenarioRun gives each alone, bit for bit:
 // lanes that tip over (located by the scalar Stepper) among lanes that do
 // not, a sampling interval, and a duration that is not a whole number of
 // steps (the last step shortened). Other drives and integrators are refused.
 
-#include "game/sim/RoseLockstepRun.h"
+#include "game/research/sim/RoseLockstepRun.h"
 
 #include <gtest/gtest.h>
 
@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "engine/physics/BatchedRk4.h"
-#include "game/sweep/SweepGrid.h"
+#include "game/research/sweep/SweepGrid.h"
 #include "tests/game/support/TinySweep.h"
 
 namespace hemiroll::game {

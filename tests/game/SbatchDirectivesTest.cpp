@@ -1,8 +1,8 @@
-// game/sweep/SbatchDirectives: the values sbatch takes and the hand-added
+// game/research/sweep/SbatchDirectives: the values sbatch takes and the hand-added
 // #SBATCH lines carried into a job file written again. That sbatch itself
 // reads the quoted paths so is tools/slurm-sweep-check.sh (ctest -L heavy).
 
-#include "game/sweep/SbatchDirectives.h"
+#include "game/research/sweep/SbatchDirectives.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

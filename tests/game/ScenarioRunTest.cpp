@@ -1,6 +1,6 @@
-// game/sim/ScenarioRun: which rows a run produces, independent of the physics.
+// game/research/sim/ScenarioRun: which rows a run produces, independent of the physics.
 
-#include "game/sim/ScenarioRun.h"
+#include "game/research/sim/ScenarioRun.h"
 
 #include <gtest/gtest.h>
 

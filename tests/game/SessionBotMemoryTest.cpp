@@ -1,9 +1,9 @@
-// game/research/SessionBotMemory: the simulated participant's memory in
+// game/research/session/SessionBotMemory: the simulated participant's memory in
 // the session folder - restored after the last finished trial, the memory
 // before a trial that must run again, refused when it contradicts the
 // trials done; script::BotMemory's cap and names.
 
-#include "game/research/SessionBotMemory.h"
+#include "game/research/session/SessionBotMemory.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -11,7 +11,7 @@
 #include <cmath>
 
 #include "engine/script/ScriptError.h"
-#include "game/research/SessionError.h"
+#include "game/research/session/SessionError.h"
 #include "tests/support/TempDirectory.h"
 
 namespace hemiroll::game {

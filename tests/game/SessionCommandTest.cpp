@@ -23,7 +23,7 @@
 #include "engine/haptics/HapticDevice.h"
 #include "engine/record/RecordingReader.h"
 #include "engine/record/ResultsFile.h"
-#include "game/research/SessionManifest.h"
+#include "game/research/session/SessionManifest.h"
 #include "tests/support/ChildProcess.h"
 #include "tests/support/ProcessRunner.h"
 #include "tests/support/TempDirectory.h"

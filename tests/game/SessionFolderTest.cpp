@@ -1,7 +1,7 @@
-// game/research/SessionFolder: where a session's data goes and the ids that
+// game/research/session/SessionFolder: where a session's data goes and the ids that
 // name its folders.
 
-#include "game/research/SessionFolder.h"
+#include "game/research/session/SessionFolder.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -1,15 +1,15 @@
-// game/research/SessionLock: one session at a time in a folder (issue 33),
+// game/research/session/SessionLock: one session at a time in a folder (issue 33),
 // a stale record taken over with a note, a clean release leaving none. Two
 // processes and a killed holder: SessionCommandTest.
 
-#include "game/research/SessionLock.h"
+#include "game/research/session/SessionLock.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "game/research/SessionError.h"
+#include "game/research/session/SessionError.h"
 #include "tests/support/ErrorMessage.h"
 #include "tests/support/TempDirectory.h"
 

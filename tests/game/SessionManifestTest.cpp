@@ -1,7 +1,7 @@
-// game/research/SessionManifest: session.json both ways, and a broken one
+// game/research/session/SessionManifest: session.json both ways, and a broken one
 // refused with the file's name.
 
-#include "game/research/SessionManifest.h"
+#include "game/research/session/SessionManifest.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

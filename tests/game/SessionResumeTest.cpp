@@ -1,15 +1,15 @@
-// game/research/SessionResume: where an interrupted session goes on, and
+// game/research/session/SessionResume: where an interrupted session goes on, and
 // the interrupted trial's files moved aside, never deleted.
 
-#include "game/research/SessionResume.h"
+#include "game/research/session/SessionResume.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include "engine/record/DurableFile.h"
 #include "engine/record/RecordingSession.h"
-#include "game/research/SessionError.h"
-#include "game/research/SessionFolder.h"
+#include "game/research/session/SessionError.h"
+#include "game/research/session/SessionFolder.h"
 #include "tests/support/TempDirectory.h"
 
 namespace hemiroll::game {

@@ -1,10 +1,10 @@
-// game/analysis SimCsvReader: `hemiroll sim` CSVs read back, errors naming file:line.
+// game/research/analysis SimCsvReader: `hemiroll sim` CSVs read back, errors naming file:line.
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "game/analysis/AnalysisInputError.h"
-#include "game/analysis/SimCsvReader.h"
+#include "game/research/analysis/AnalysisInputError.h"
+#include "game/research/analysis/SimCsvReader.h"
 #include "tests/support/TempDirectory.h"
 
 namespace hemiroll::game {

@@ -1,8 +1,8 @@
-// game/sweep/SlurmJob: the job files `hemiroll sweep --slurm N` writes. That
+// game/research/sweep/SlurmJob: the job files `hemiroll sweep --slurm N` writes. That
 // they run on a real cluster and merge to the one-machine bytes is
 // tools/slurm-sweep-check.sh (ctest -L heavy: tools.SlurmSweepMatchesOneMachine).
 
-#include "game/sweep/SlurmJob.h"
+#include "game/research/sweep/SlurmJob.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -11,7 +11,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "game/sweep/SweepError.h"
+#include "game/research/sweep/SweepError.h"
 #include "tests/support/TempDirectory.h"
 
 namespace hemiroll::game {

@@ -1,10 +1,10 @@
-// game/sweep/StaticTilt: the hemisphere's static tilt for the mass point
+// game/research/sweep/StaticTilt: the hemisphere's static tilt for the mass point
 // held at distance d. Checked against the equation it solves, the value
 // levels/scenarios/rose_paper_equilibrium.lua types in (5 decimals), and
 // the physics: held there, the hemisphere stays at rest; tilted the other
 // way it falls.
 
-#include "game/sweep/StaticTilt.h"
+#include "game/research/sweep/StaticTilt.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// game/report SvgDocument: well-formed output, escaped text, no NaN ever.
+// game/research/report SvgDocument: well-formed output, escaped text, no NaN ever.
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -6,7 +6,7 @@
 #include <limits>
 #include <vector>
 
-#include "game/report/SvgDocument.h"
+#include "game/research/report/SvgDocument.h"
 #include "tests/support/XmlCheck.h"
 
 namespace hemiroll::report {

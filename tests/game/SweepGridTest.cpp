@@ -1,15 +1,15 @@
-// game/sweep/SweepGrid: point i of a sweep - the last axis fastest, the
+// game/research/sweep/SweepGrid: point i of a sweep - the last axis fastest, the
 // axis values applied to the base, the start tilt computed per point - and
 // the scenario it runs.
 
-#include "game/sweep/SweepGrid.h"
+#include "game/research/sweep/SweepGrid.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include "engine/physics/StateLayout.h"
 #include "engine/script/SweepLoader.h"
-#include "game/sweep/StaticTilt.h"
+#include "game/research/sweep/StaticTilt.h"
 
 namespace hemiroll::game {
 namespace {

@@ -1,13 +1,13 @@
-// game/sweep/SweepManifest: the manifest both ways, and refused when it is
+// game/research/sweep/SweepManifest: the manifest both ways, and refused when it is
 // not one or its spec no longer matches its hash.
 
-#include "game/sweep/SweepManifest.h"
+#include "game/research/sweep/SweepManifest.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "game/sweep/SweepError.h"
-#include "game/sweep/SweepSpecJson.h"
+#include "game/research/sweep/SweepError.h"
+#include "game/research/sweep/SweepSpecJson.h"
 #include "tests/game/support/TinySweep.h"
 
 namespace hemiroll::game {

@@ -1,17 +1,17 @@
-// game/sweep/SweepMaps: heatmaps of a finished sweep - the cells in the
+// game/research/sweep/SweepMaps: heatmaps of a finished sweep - the cells in the
 // axes' order, tipped-over cells grey and marked, the aggregate over further
 // axes named in the title; the sheets are well-formed SVG without NaN.
 
-#include "game/sweep/SweepMaps.h"
+#include "game/research/sweep/SweepMaps.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "game/report/Heatmap.h"
-#include "game/sweep/SweepError.h"
-#include "game/sweep/SweepTable.h"
+#include "game/research/report/Heatmap.h"
+#include "game/research/sweep/SweepError.h"
+#include "game/research/sweep/SweepTable.h"
 #include "tests/game/support/TinySweep.h"
 #include "tests/support/TempDirectory.h"
 #include "tests/support/XmlCheck.h"

@@ -1,16 +1,16 @@
-// game/sweep/SweepMerge: shards joined into the byte-identical CSV of the
+// game/research/sweep/SweepMerge: shards joined into the byte-identical CSV of the
 // unsharded run, from one folder or several; refused, with one sentence,
 // when a shard is missing, given twice, incomplete, or of another spec or
 // program.
 
-#include "game/sweep/SweepMerge.h"
+#include "game/research/sweep/SweepMerge.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
 
-#include "game/sweep/SweepError.h"
+#include "game/research/sweep/SweepError.h"
 #include "tests/game/support/TinySweep.h"
 #include "tests/support/TempDirectory.h"
 

@@ -1,7 +1,7 @@
-// game/sweep/SweepMetrics: every map metric is a sweep column (or
+// game/research/sweep/SweepMetrics: every map metric is a sweep column (or
 // "stopped"), and the aggregates over a cell's points.
 
-#include "game/sweep/SweepMetrics.h"
+#include "game/research/sweep/SweepMetrics.h"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include <limits>
 #include <string_view>
 
-#include "game/sweep/SweepTable.h"
+#include "game/research/sweep/SweepTable.h"
 
 namespace hemiroll::game {
 namespace {

@@ -1,9 +1,9 @@
-// game/sweep/SweepPartRun: a shard into a folder - the CSV and a complete
+// game/research/sweep/SweepPartRun: a shard into a folder - the CSV and a complete
 // manifest; the same bytes for any thread count; a rerun after a crash keeps
 // the whole rows already written and gives the same bytes; a complete shard
 // is left alone; a folder holding another spec's shard is refused.
 
-#include "game/sweep/SweepPartRun.h"
+#include "game/research/sweep/SweepPartRun.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -12,9 +12,9 @@
 #include <functional>
 
 #include "engine/physics/BatchedRk4.h"
-#include "game/sweep/SweepError.h"
-#include "game/sweep/SweepManifest.h"
-#include "game/sweep/SweepTable.h"
+#include "game/research/sweep/SweepError.h"
+#include "game/research/sweep/SweepManifest.h"
+#include "game/research/sweep/SweepTable.h"
 #include "tests/game/support/TinySweep.h"
 #include "tests/support/TempDirectory.h"
 

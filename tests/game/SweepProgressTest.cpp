@@ -1,7 +1,7 @@
-// game/sweep/SweepProgress: the bar's text, and nothing drawn when stderr
+// game/research/sweep/SweepProgress: the bar's text, and nothing drawn when stderr
 // is not a terminal.
 
-#include "game/sweep/SweepProgress.h"
+#include "game/research/sweep/SweepProgress.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
-// game/sweep/SweepShard: "i/N" read strictly; the shards of a split hold
+// game/research/sweep/SweepShard: "i/N" read strictly; the shards of a split hold
 // every point exactly once; file stems.
 
-#include "game/sweep/SweepShard.h"
+#include "game/research/sweep/SweepShard.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

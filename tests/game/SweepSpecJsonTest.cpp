@@ -1,13 +1,13 @@
-// game/sweep/SweepSpecJson: the canonical spec and its hash - the same text
+// game/research/sweep/SweepSpecJson: the canonical spec and its hash - the same text
 // back after a round trip, a new hash for any change that decides a row, the
 // same hash for a new description.
 
-#include "game/sweep/SweepSpecJson.h"
+#include "game/research/sweep/SweepSpecJson.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "game/sweep/SweepError.h"
+#include "game/research/sweep/SweepError.h"
 #include "tests/game/support/TinySweep.h"
 
 namespace hemiroll::game {

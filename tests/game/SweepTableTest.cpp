@@ -1,8 +1,8 @@
-// game/sweep/SweepTable: the CSV's columns (SI suffixes, unique), rows of
+// game/research/sweep/SweepTable: the CSV's columns (SI suffixes, unique), rows of
 // the header's length with empty cells for what was not found and never
 // NaN, and the reader that refuses other files.
 
-#include "game/sweep/SweepTable.h"
+#include "game/research/sweep/SweepTable.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -10,7 +10,7 @@
 #include <set>
 
 #include "engine/record/CsvRowFormat.h"
-#include "game/sweep/SweepError.h"
+#include "game/research/sweep/SweepError.h"
 #include "tests/game/support/TinySweep.h"
 #include "tests/support/TempDirectory.h"
 

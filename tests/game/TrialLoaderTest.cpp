@@ -1,4 +1,4 @@
-// game/analysis TrialLoader: recordings, session folders and sim CSVs as
+// game/research/analysis TrialLoader: recordings, session folders and sim CSVs as
 // trials; interrupted recordings with a note; broken input named.
 
 #include <gmock/gmock.h>
@@ -7,8 +7,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "game/analysis/AnalysisInputError.h"
-#include "game/analysis/TrialLoader.h"
+#include "game/research/analysis/AnalysisInputError.h"
+#include "game/research/analysis/TrialLoader.h"
 #include "tests/analysis/support/Synthetic.h"
 #include "tests/game/support/RoseRecording.h"
 #include "tests/support/TempDirectory.h"

@@ -1,4 +1,4 @@
-// game/analysis TrialPlots: the trial's SVGs are well-formed, hold no NaN
+// game/research/analysis TrialPlots: the trial's SVGs are well-formed, hold no NaN
 // even when the data do, and show what was found.
 
 #include <gmock/gmock.h>
@@ -6,8 +6,8 @@
 
 #include <limits>
 
-#include "game/analysis/TrialPlots.h"
-#include "game/report/LinePlot.h"
+#include "game/research/analysis/TrialPlots.h"
+#include "game/research/report/LinePlot.h"
 #include "tests/analysis/support/Synthetic.h"
 #include "tests/support/XmlCheck.h"
 

@@ -13,12 +13,12 @@
 #include <filesystem>
 
 #include "engine/platform/KeyNames.h"
-#include "game/app/App.h"
-#include "game/screens/LevelSelectScreen.h"
-#include "game/screens/PauseScreen.h"
-#include "game/screens/PlayScreen.h"
-#include "game/screens/ResultsScreen.h"
-#include "game/screens/ScreenStack.h"
+#include "game/ui/app/App.h"
+#include "game/ui/screens/LevelSelectScreen.h"
+#include "game/ui/screens/PauseScreen.h"
+#include "game/ui/screens/PlayScreen.h"
+#include "game/ui/screens/ResultsScreen.h"
+#include "game/ui/screens/ScreenStack.h"
 #include "tests/screens/support/HiddenApp.h"
 #include "tests/support/ProcessRunner.h"
 #include "tests/support/TempDirectory.h"

@@ -1,4 +1,4 @@
-#include "game/audio/Audio.h"
+#include "game/ui/audio/Audio.h"
 
 #include <gtest/gtest.h>
 

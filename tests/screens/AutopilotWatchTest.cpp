@@ -10,9 +10,9 @@
 #include <thread>
 
 #include "engine/platform/KeyNames.h"
-#include "game/app/App.h"
-#include "game/screens/FreePlay.h"
-#include "game/screens/PlayScreen.h"
+#include "game/ui/app/App.h"
+#include "game/ui/screens/FreePlay.h"
+#include "game/ui/screens/PlayScreen.h"
 #include "tests/screens/support/HiddenApp.h"
 #include "tests/support/TempDirectory.h"
 

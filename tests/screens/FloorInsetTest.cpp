@@ -1,6 +1,6 @@
-// game/hud/FloorInset's scale: round spans that fit the targets and nearby
+// game/ui/hud/FloorInset's scale: round spans that fit the targets and nearby
 // zones, changed with hysteresis so that the map does not breathe.
-#include "game/hud/FloorInset.h"
+#include "game/ui/hud/FloorInset.h"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
-// game/hud/HintCompass: the hint's move in screen directions is the inverse
+// game/ui/hud/HintCompass: the hint's move in screen directions is the inverse
 // of how the mouse's strokes move the proxy (PointerMapping), whatever the
 // camera's heading: following the compass's arrow with the mouse moves the
 // proxy where the autopilot wants it.
-#include "game/hud/HintCompass.h"
+#include "game/ui/hud/HintCompass.h"
 
 #include <gtest/gtest.h>
 

@@ -12,9 +12,9 @@
 #include <string>
 
 #include "engine/platform/KeyNames.h"
-#include "game/app/App.h"
-#include "game/screens/PlayScreen.h"
-#include "game/screens/ResultsScreen.h"
+#include "game/ui/app/App.h"
+#include "game/ui/screens/PlayScreen.h"
+#include "game/ui/screens/ResultsScreen.h"
 #include "tests/screens/support/HiddenApp.h"
 #include "tests/support/TempDirectory.h"
 

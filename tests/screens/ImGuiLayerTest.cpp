@@ -1,10 +1,10 @@
-#include "game/hud/ImGuiLayer.h"
+#include "game/ui/hud/ImGuiLayer.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 
-#include "game/app/App.h"
+#include "game/ui/app/App.h"
 #include "tests/support/TempDirectory.h"
 
 namespace hemiroll::game {

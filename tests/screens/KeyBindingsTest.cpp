@@ -1,6 +1,6 @@
-// game/app/KeyBindings: the play keys a player may change. No key does two
+// game/ui/app/KeyBindings: the play keys a player may change. No key does two
 // things, no action is left without a key, Escape stays the way out.
-#include "game/app/KeyBindings.h"
+#include "game/ui/settings/KeyBindings.h"
 
 #include <gtest/gtest.h>
 

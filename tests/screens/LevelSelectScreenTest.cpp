@@ -1,4 +1,4 @@
-#include "game/screens/LevelSelectScreen.h"
+#include "game/ui/screens/LevelSelectScreen.h"
 
 #include <gtest/gtest.h>
 

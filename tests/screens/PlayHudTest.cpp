@@ -1,4 +1,4 @@
-#include "game/hud/PlayHud.h"
+#include "game/ui/hud/PlayHud.h"
 
 #include <gtest/gtest.h>
 

@@ -9,9 +9,9 @@
 
 #include "engine/physics/StateKinematics.h"
 #include "engine/platform/KeyNames.h"
-#include "game/app/App.h"
-#include "game/screens/PlayScreen.h"
-#include "game/screens/SettingsScreen.h"
+#include "game/ui/app/App.h"
+#include "game/ui/screens/PlayScreen.h"
+#include "game/ui/screens/SettingsScreen.h"
 #include "tests/screens/support/HiddenApp.h"
 #include "tests/support/TempDirectory.h"
 

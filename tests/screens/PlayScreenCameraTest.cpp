@@ -7,8 +7,8 @@
 
 #include "engine/platform/KeyNames.h"
 #include "engine/render/Camera.h"
-#include "game/app/App.h"
-#include "game/screens/PlayScreen.h"
+#include "game/ui/app/App.h"
+#include "game/ui/screens/PlayScreen.h"
 #include "tests/support/TempDirectory.h"
 
 namespace hemiroll::game {

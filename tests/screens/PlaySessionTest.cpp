@@ -20,7 +20,7 @@
 #include "engine/script/DeviceProfileLoader.h"
 #include "engine/script/LevelLoader.h"
 #include "game/trial/ReplayCapture.h"
-#include "game/view/RenderSceneBuilder.h"
+#include "game/ui/view/RenderSceneBuilder.h"
 #include "game/trial/TrialSetup.h"
 #include "tests/screens/support/StrokedTrial.h"
 #include "tests/support/ChildProcess.h"

@@ -1,6 +1,6 @@
-// game/hud/PlayerWords, WrappedText and HudLayout: what the HUD says and
+// game/ui/hud/PlayerWords, WrappedText and HudLayout: what the HUD says and
 // where it goes, without a window (issue 27's rough edges 2, 3, 4, 10).
-#include "game/hud/PlayerWords.h"
+#include "game/ui/hud/PlayerWords.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "engine/render/Camera.h"
-#include "game/hud/HudLayout.h"
-#include "game/hud/WrappedText.h"
+#include "game/ui/hud/HudLayout.h"
+#include "game/ui/hud/WrappedText.h"
 
 namespace hemiroll::game {
 namespace {

@@ -18,12 +18,12 @@
 #include "engine/record/DurableFile.h"
 #include "engine/record/RecordingReader.h"
 #include "engine/record/ResultsFile.h"
-#include "game/app/App.h"
-#include "game/app/ScriptedMouse.h"
-#include "game/research/SessionManifest.h"
-#include "game/screens/PlayScreen.h"
-#include "game/screens/ResearchScreen.h"
-#include "game/screens/SessionScreen.h"
+#include "game/ui/app/App.h"
+#include "game/ui/app/ScriptedMouse.h"
+#include "game/research/session/SessionManifest.h"
+#include "game/ui/screens/PlayScreen.h"
+#include "game/ui/screens/ResearchScreen.h"
+#include "game/ui/screens/SessionScreen.h"
 #include "tests/support/TempDirectory.h"
 
 namespace hemiroll::game {

@@ -1,4 +1,4 @@
-#include "game/scores/ScoreStore.h"
+#include "game/ui/scores/ScoreStore.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "game/screens/ScreenStack.h"
+#include "game/ui/screens/ScreenStack.h"
 
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "engine/platform/KeyNames.h"
-#include "game/app/App.h"
+#include "game/ui/app/App.h"
 #include "tests/support/TempDirectory.h"
 
 namespace hemiroll::game {

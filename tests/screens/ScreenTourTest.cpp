@@ -1,4 +1,4 @@
-#include "game/app/ScreenTour.h"
+#include "game/ui/app/ScreenTour.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -10,10 +10,10 @@
 #include <sstream>
 
 #include "engine/platform/KeyNames.h"
-#include "game/app/App.h"
-#include "game/screens/LevelSelectScreen.h"
-#include "game/screens/PlayScreen.h"
-#include "game/screens/ReplayScreen.h"
+#include "game/ui/app/App.h"
+#include "game/ui/screens/LevelSelectScreen.h"
+#include "game/ui/screens/PlayScreen.h"
+#include "game/ui/screens/ReplayScreen.h"
 #include "tests/support/TempDirectory.h"
 
 namespace hemiroll::game {

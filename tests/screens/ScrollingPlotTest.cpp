@@ -1,4 +1,4 @@
-#include "game/hud/ScrollingPlot.h"
+#include "game/ui/hud/ScrollingPlot.h"
 
 #include <gtest/gtest.h>
 

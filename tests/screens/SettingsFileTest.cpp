@@ -1,4 +1,4 @@
-#include "game/app/SettingsFile.h"
+#include "game/ui/settings/SettingsFile.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
-// game/app/Settings: the player's override of the force method and gains,
+// game/ui/app/Settings: the player's override of the force method and gains,
 // applied as a protocol's overrides are (script::overriddenCoupling).
 
-#include "game/app/Settings.h"
+#include "game/ui/settings/Settings.h"
 
 #include <gtest/gtest.h>
 

@@ -1,15 +1,15 @@
-// game/view/ShippedDirectories: the game finds its levels from any folder,
+// game/ui/view/ShippedDirectories: the game finds its levels from any folder,
 // as it finds its assets (issue 27: started elsewhere it found assets/ but
 // not levels/, and still offered Play).
-#include "game/view/ShippedDirectories.h"
+#include "game/ui/view/ShippedDirectories.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <filesystem>
 
-#include "game/scores/ScoreStore.h"
-#include "game/screens/LevelSelectScreen.h"
+#include "game/ui/scores/ScoreStore.h"
+#include "game/ui/screens/LevelSelectScreen.h"
 #include "tests/support/TempDirectory.h"
 
 namespace hemiroll::game {

@@ -1,6 +1,6 @@
-// game/screens/TrialEnding: what decided a trial's time, in the player's
+// game/ui/screens/TrialEnding: what decided a trial's time, in the player's
 // words, and the medal thresholds, from crafted results.
-#include "game/screens/TrialEnding.h"
+#include "game/ui/screens/TrialEnding.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

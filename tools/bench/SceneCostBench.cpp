@@ -45,7 +45,7 @@ ForceDrivenState playStart() {
   return x;
 }
 
-// Everything a trajectory row holds (game/sim/ScenarioRun.cpp's observe).
+// Everything a trajectory row holds (game/research/sim/ScenarioRun.cpp's observe).
 double fullRow(const ForceDrivenSystem& system, double t, const ForceDrivenState& x) {
   using namespace force_slot;
   const double energy = mechanicalEnergy(system.dynamics(), x).total();

@@ -27,10 +27,10 @@
 #include "engine/physics/BatchedRk4.h"
 #include "engine/physics/StateLayout.h"
 #include "engine/script/SweepLoader.h"
-#include "game/sim/ScenarioRun.h"
-#include "game/sweep/PointMeasurement.h"
-#include "game/sweep/SweepGrid.h"
-#include "game/sweep/SweepPartRun.h"
+#include "game/research/sim/ScenarioRun.h"
+#include "game/research/sweep/PointMeasurement.h"
+#include "game/research/sweep/SweepGrid.h"
+#include "game/research/sweep/SweepPartRun.h"
 #include "tools/bench/NaiveRk4Anchor.h"
 
 namespace {

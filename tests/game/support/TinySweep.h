@@ -6,7 +6,7 @@
 #include <string>
 
 #include "engine/script/SweepDef.h"
-#include "game/sweep/SweepPartRun.h"
+#include "game/research/sweep/SweepPartRun.h"
 
 namespace hemiroll::test {
 

@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "game/app/App.h"
+#include "game/ui/app/App.h"
 
 namespace hemiroll::test {
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "game/hud/WindowRects.h"
+#include "game/ui/hud/WindowRects.h"
 
 namespace hemiroll::test {
 

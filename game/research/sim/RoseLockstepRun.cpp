@@ -1,0 +1,104 @@
+#include "game/research/sim/RoseLockstepRun.h"
+
+#include <deque>
+#include <stdexcept>
+
+#include "engine/physics/BatchedRk4.h"
+#include "engine/physics/Integrator.h"
+#include "engine/physics/RoseDrive.h"
+#include "engine/physics/Stepper.h"
+
+namespace hemiroll::game {
+
+bool RoseLockstepRun::eligible(const script::ScenarioDef& scenario, const RunSettings& settings) {
+  return scenario.drive.kind == script::DriveKind::Rose && settings.integrator == "rk4" &&
+         settings.orientation == physics::OrientationForm::ContactAngles;
+}
+
+RoseLockstepRun::RoseLockstepRun(std::vector<script::ScenarioDef> scenarios, const RunSettings& settings, int width,
+                                 RowContent content)
+    : scenarios_(std::move(scenarios)), settings_(settings), width_(width), content_(content) {
+  for (const script::ScenarioDef& s : scenarios_)
+    if (!eligible(s, settings_))
+      throw std::invalid_argument("a lockstep run takes rose drives with rk4 on the contact angles only");
+  if (!physics::laneWidthSupported(width_))
+    throw std::invalid_argument("lane width " + std::to_string(width_) + " is not run by this CPU");
+}
+
+// The loop of ScenarioRun's integrate(), lane by lane: the same clock (each
+// step from the grid time (i - 1) dt, the last one shortened), the same
+// domain check at the step's end, the same rows.
+std::vector<RunSummary> RoseLockstepRun::run(const LaneRowCallback& onRow) const {
+  const std::size_t lanes = scenarios_.size();
+  std::deque<physics::RoseDrive> roses;  // a deque: the systems keep references to them
+  std::deque<physics::PrescribedDriveSystem> systems;
+  physics::RoseBatch batch(width_);
+  physics::RungeKutta4<8> rk4;
+  std::vector<RunSummary> summaries(lanes);
+  auto emit = [&](std::size_t lane, double t, const physics::BodyState& x) {
+    TrajectoryRow row;
+    if (content_ == RowContent::Full) {
+      row = roseRow(systems[lane], t, x);
+    } else {
+      row.time = t;
+      row.state = systems[lane].fullState(t, x);
+    }
+    summaries[lane].endTime = row.time;
+    summaries[lane].finalEnergy = row.energy;
+    onRow(lane, row);
+  };
+
+  for (std::size_t lane = 0; lane < lanes; ++lane) {
+    const script::ScenarioDef& s = scenarios_[lane];
+    roses.emplace_back(s.drive.rose);
+    systems.emplace_back(s.params, roses.back());
+    const physics::BodyState x0 = s.initial.tail<8>();
+    batch.add(s.params, s.drive.rose, x0);
+    emit(lane, 0.0, x0);
+    summaries[lane].event = systems[lane].domainEvent(0.0, x0);  // as the Stepper classifies its start
+    if (summaries[lane].event != physics::DomainEvent::None) batch.retire(static_cast<int>(lane));
+  }
+
+  const long long steps = ScenarioRun::stepCount(settings_);
+  const double lastStep = settings_.duration - static_cast<double>(steps - 1) * settings_.timeStep;
+  double start = 0.0;  // the grid time the step begins at
+  for (long long i = 1; i <= steps && batch.activeCount() > 0; ++i) {
+    const double h = i == steps ? lastStep : settings_.timeStep;
+    const double target = i == steps ? settings_.duration : static_cast<double>(i) * settings_.timeStep;
+    batch.step(start, h, target);
+    for (std::size_t lane = 0; lane < lanes; ++lane) {
+      const int index = static_cast<int>(lane);
+      if (!batch.active(index)) continue;
+      RunSummary& summary = summaries[lane];
+      summary.steps = i;
+      const physics::BodyState x = batch.state(index);
+      if (systems[lane].domainEventWith(start + h, x, batch.drivePosition(index)) == physics::DomainEvent::None) {
+        if (i % settings_.every == 0 || i == steps) emit(lane, target, x);
+        // ScenarioRun puts the clock on the grid (Stepper::reset), which
+        // classifies the state again at the grid time; where that differs
+        // from start + h in the last bit, so may the verdict, and its next
+        // step then reports the event without stepping.
+        if (i < steps && target != start + h) {
+          const physics::DomainEvent atGrid = systems[lane].domainEventWith(target, x, batch.gridDrivePosition(index));
+          if (atGrid != physics::DomainEvent::None) {
+            summary.steps = i + 1;
+            summary.event = atGrid;
+            emit(lane, target, x);
+            batch.retire(index);
+          }
+        }
+        continue;
+      }
+      // The scalar Stepper takes the step again from the same state and
+      // locates the event by bisection, exactly as ScenarioRun's would.
+      physics::Stepper<8> stepper(systems[lane], rk4, batch.previousState(index), start);
+      summary.event = stepper.advance(h).event;
+      emit(lane, stepper.time(), stepper.state());
+      batch.retire(index);
+    }
+    start = target;
+  }
+  return summaries;
+}
+
+}  // namespace hemiroll::game

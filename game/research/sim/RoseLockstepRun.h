@@ -1,0 +1,47 @@
+#pragma once
+// Runs several rose-drive scenarios at once, with RK4 in SIMD lanes
+// (physics::RoseBatch), each giving exactly the rows and summary that
+// ScenarioRun gives it alone: the lanes have the scalar bits, the same
+// domain check runs after each step, and a lane whose step leaves the domain
+// is handed to the scalar Stepper, which takes that step again (the same
+// bits) and locates the event, while the other lanes go on.
+//
+// Eligible: the rose drive, the fixed-step "rk4" integrator and the contact
+// angles (the sweep's runs); anything else runs through ScenarioRun.
+
+#include <cstddef>
+#include <functional>
+#include <vector>
+
+#include "engine/script/ScenarioDef.h"
+#include "game/research/sim/ScenarioRun.h"
+
+namespace hemiroll::game {
+
+class RoseLockstepRun {
+ public:
+  using LaneRowCallback = std::function<void(std::size_t lane, const TrajectoryRow&)>;
+
+  static bool eligible(const script::ScenarioDef& scenario, const RunSettings& settings);
+
+  // What a row holds: everything ScenarioRun's has, or only the time and
+  // the state (energy and face force left 0, and so the summary's final
+  // energy): a sweep measures neither, and they cost it ~8 % (issue 32).
+  enum class RowContent { Full, StateOnly };
+
+  // Every scenario eligible; width is a lane width this CPU runs
+  // (physics::laneWidthSupported). Throws std::invalid_argument otherwise.
+  RoseLockstepRun(std::vector<script::ScenarioDef> scenarios, const RunSettings& settings, int width,
+                  RowContent content = RowContent::Full);
+
+  // Rows of lane i in the order ScenarioRun::run gives them (lanes interleaved).
+  std::vector<RunSummary> run(const LaneRowCallback& onRow) const;
+
+ private:
+  std::vector<script::ScenarioDef> scenarios_;
+  RunSettings settings_;
+  int width_;
+  RowContent content_;
+};
+
+}  // namespace hemiroll::game
