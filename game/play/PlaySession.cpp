@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "engine/haptics/devices/DeviceFactory.h"
 #include "engine/physics/StateKinematics.h"
 #include "game/trial/DeviceProfiles.h"
 
@@ -63,7 +64,7 @@ PlaySession::PlaySession(script::LoadedLevel& level, const PlaySessionDef& def)
 std::unique_ptr<haptics::HapticDevice> PlaySession::makeDevice(const PlaySessionDef& def,
                                                                const haptics::ServoLoopDef& loop) {
   std::unique_ptr<haptics::HapticDevice> player;
-  if (def.device == "mouse") {
+  if (def.device == haptics::kMouseDevice) {
     auto mouse = std::make_unique<haptics::MouseDevice>(def.deviceOptions.mouse);
     mouse_ = mouse.get();
     player = std::move(mouse);

@@ -6,11 +6,11 @@
 namespace hemiroll::haptics {
 
 DeviceFactory::DeviceFactory() {
-  add("mouse", "the pointer on a horizontal plane, wheel for height; forces shown, not felt",
+  add(kMouseDevice, "the pointer on a horizontal plane, wheel for height; forces shown, not felt",
       [](const DeviceOptions& o) { return std::make_unique<MouseDevice>(o.mouse); });
-  add("joystick", "a force-feedback joystick through SDL_Haptic (constant-force effect)",
+  add(kJoystickDevice, "a force-feedback joystick through SDL_Haptic (constant-force effect)",
       [](const DeviceOptions& o) { return std::make_unique<SdlJoystickDevice>(o.joystick); });
-  add("udp", "a real haptic device driven by an external program over the UDP bridge",
+  add(kUdpDevice, "a real haptic device driven by an external program over the UDP bridge",
       [](const DeviceOptions& o) { return std::make_unique<UdpBridgeDevice>(o.udp); });
   add("scripted", "the pose is a function of time (bots, headless runs)", [](const DeviceOptions& o) {
     ScriptedDevice::PoseFunction pose = o.scriptedPose ? o.scriptedPose : [](double) { return DeviceReading{}; };

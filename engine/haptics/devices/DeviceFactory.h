@@ -24,6 +24,14 @@
 
 namespace hemiroll::haptics {
 
+// The devices a person plays with, by their factory names, in the order the
+// settings offer them: the one list the settings, the screens and the play
+// session use (a level's per_device mappings also take "bot").
+inline constexpr const char* kMouseDevice = "mouse";
+inline constexpr const char* kJoystickDevice = "joystick";
+inline constexpr const char* kUdpDevice = "udp";
+inline constexpr const char* kPlayerDevices[] = {kMouseDevice, kJoystickDevice, kUdpDevice};
+
 // Settings for every kind; each maker reads only its own.
 struct DeviceOptions {
   MouseDeviceDef mouse;

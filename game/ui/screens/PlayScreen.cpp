@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "engine/haptics/devices/DeviceFactory.h"
 #include "engine/physics/StateLayout.h"
 #include "engine/platform/Window.h"
 #include "engine/record/DataDirectory.h"
@@ -42,7 +43,7 @@ void PlayScreen::begin() {
     def.device = host_.settings().device;
     def.deviceOptions.joystick.index = host_.settings().joystickIndex;
     def.deviceOptions.udp.port = static_cast<std::uint16_t>(host_.settings().udpPort);
-    if (def.device == "udp" && !host_.settings().deviceProfile.empty())
+    if (def.device == haptics::kUdpDevice && !host_.settings().deviceProfile.empty())
       useDeviceProfile(def, loadDeviceProfile(host_.settings().deviceProfile));
     def.pointer.metresPerPixel =
         std::clamp(host_.settings().mouseMmPerPixel, kMouseMmPerPixel[0], kMouseMmPerPixel[1]) * 1e-3;
@@ -55,7 +56,7 @@ void PlayScreen::begin() {
     session_.reset();
     return;
   }
-  const bool mouse = host_.settings().device == "mouse";
+  const bool mouse = host_.settings().device == haptics::kMouseDevice;
   hud_.reset();
   goalStage_ = -2;
   const physics::CouplingDef coupling = mode_->coupling(level_.def);
@@ -95,7 +96,7 @@ void PlayScreen::enter() {
     begin();
   }
   // The menus above this screen (pause, results) need the system cursor back.
-  if (session_ && session_->deviceName() == "mouse") host_.window().capturePointer(true);
+  if (session_ && session_->deviceName() == haptics::kMouseDevice) host_.window().capturePointer(true);
 }
 
 void PlayScreen::leave() { host_.window().capturePointer(false); }
@@ -334,7 +335,7 @@ void PlayScreen::showGoal() {
 std::string PlayScreen::prompt() const {
   if (session_->autopilotHolds() || session_->finished() || !session_->waitingFor().empty()) return "";
   const std::string key = host_.settings().keys.keyName(KeyAction::TakeHold);
-  const std::string how = session_->deviceName() == "mouse" ? "Click or press " + key : "Press " + key;
+  const std::string how = session_->deviceName() == haptics::kMouseDevice ? "Click or press " + key : "Press " + key;
   if (session_->awaitingTakeHold()) return how + " to take hold\nthe clock starts then";
   const bool armed = session_->snapshot().engagement == haptics::Engagement::Armed;
   switch (session_->frozen()) {
@@ -404,7 +405,7 @@ bool PlayScreen::safetyStop() {
       host_, *this,
       std::string("Safety stop: ") + haptics::safetyFaultName(session_->fault()) +
           ". The force is off and the hemisphere waits where it is. Continue, then take hold again (" +
-          (session_->deviceName() == "mouse" ? "click or " + key : key) + ") to play on."));
+          (session_->deviceName() == haptics::kMouseDevice ? "click or " + key : key) + ") to play on."));
   return true;
 }
 
@@ -450,7 +451,7 @@ void PlayScreen::paint() {
     beginCentredPanel("waiting for the device", 640);
     ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1), "Waiting for the %s", session_->deviceName().c_str());
     wrappedText(session_->waitingFor());
-    if (session_->deviceName() == "udp")
+    if (session_->deviceName() == haptics::kUdpDevice)
       wrappedTextf("Start the device's bridge program, or the reference client: "
                    "hemiroll-haptic-client --port %d (docs/UDP_BRIDGE.md). The trial starts with its first state.",
                    host_.settings().udpPort);

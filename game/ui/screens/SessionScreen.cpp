@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "engine/haptics/MouseDevice.h"
+#include "engine/haptics/devices/DeviceFactory.h"
 #include "game/ui/screens/PlayScreen.h"
 #include "game/ui/hud/WrappedText.h"
 #include "game/ui/screens/ScreenHost.h"
@@ -32,7 +33,7 @@ void SessionScreen::open() {
     session_ = std::make_unique<ResearchSession>(request_);
     if (const std::string problem = session_->couplingProblem(haptics::MouseDeviceDef{}.spec); !problem.empty())
       throw SessionError(SessionError::Kind::BadInput, problem);
-    session_->begin("mouse");
+    session_->begin(haptics::kMouseDevice);
   } catch (const std::exception& e) {
     error_ = e.what();
     session_.reset();

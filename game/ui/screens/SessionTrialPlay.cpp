@@ -50,7 +50,7 @@ std::unique_ptr<PlaySession> SessionTrialPlay::begin(script::LoadedLevel& level,
   // and the device pulls towards its plan (felt on a device with force output).
   def.guidance = trial.guidance;
   // The study's device (its protocol's, or the session's --device-profile) holds a device behind the bridge.
-  if (def.device == "udp" && research_.deviceProfile()) useDeviceProfile(def, *research_.deviceProfile());
+  if (def.device == haptics::kUdpDevice && research_.deviceProfile()) useDeviceProfile(def, *research_.deviceProfile());
   const std::optional<haptics::DeviceSpec> spec = haptics::DeviceFactory().specOf(def.device, def.deviceOptions);
   if (!spec) throw std::runtime_error("unknown device '" + def.device + "'");
   auto session = std::make_unique<PlaySession>(level, def);

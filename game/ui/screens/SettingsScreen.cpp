@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "engine/haptics/devices/DeviceFactory.h"
 #include "engine/physics/ForceCoupling.h"
 #include "game/ui/settings/Settings.h"
 #include "game/ui/audio/Audio.h"
@@ -91,12 +92,13 @@ void SettingsScreen::paint() {
 
   ImGui::Separator();
   ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1), "Device");
-  static constexpr const char* kDevices[] = {"mouse", "joystick", "udp"};
-  for (int i = 0; i < 3; ++i) {
-    if (i > 0) ImGui::SameLine();
-    if (ImGui::RadioButton(kDevices[i], s.device == kDevices[i])) s.device = kDevices[i];
+  bool first = true;
+  for (const char* device : haptics::kPlayerDevices) {
+    if (!first) ImGui::SameLine();
+    first = false;
+    if (ImGui::RadioButton(device, s.device == device)) s.device = device;
   }
-  if (s.device == "mouse") {
+  if (s.device == haptics::kMouseDevice) {
     wrappedTextDisabled("no force feedback: the coupling force is drawn as an arrow");
     float mm = static_cast<float>(s.mouseMmPerPixel);
     if (ImGui::SliderFloat("mouse: mm per pixel", &mm, static_cast<float>(kMouseMmPerPixel[0]),
@@ -104,7 +106,7 @@ void SettingsScreen::paint() {
       s.mouseMmPerPixel = std::clamp(static_cast<double>(mm), kMouseMmPerPixel[0], kMouseMmPerPixel[1]);
     wrappedTextDisabled("how far the proxy moves per pixel of mouse motion: lower is finer, higher reaches further "
                         "(0.25 spans a desk device's 20 cm in 800 pixels)");
-  } else if (s.device == "joystick") {
+  } else if (s.device == haptics::kJoystickDevice) {
     ImGui::InputInt("joystick index", &s.joystickIndex);
     s.joystickIndex = std::clamp(s.joystickIndex, 0, 63);
     wrappedTextDisabled("an SDL force-feedback joystick or wheel (constant-force effect)");

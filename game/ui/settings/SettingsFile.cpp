@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <ctime>
 
+#include "engine/haptics/devices/DeviceFactory.h"
 #include "engine/platform/KeyNames.h"
 #include "engine/record/DurableFile.h"
 #include "engine/script/ProtocolDef.h"
@@ -19,7 +20,6 @@ using Json = nlohmann::json;
 
 constexpr const char* kMethods[] = {"M1", "M2", "M3", "visual"};
 constexpr const char* kCameras[] = {"follow", "orbit", "top"};
-constexpr const char* kDevices[] = {"mouse", "joystick", "udp"};
 
 template <std::size_t N>
 int indexOf(const char* const (&names)[N], const std::string& name) {
@@ -171,9 +171,9 @@ LoadedSettings loadSettings(const std::filesystem::path& file) {
   }
   Settings& s = out.settings;
   Reader r(json, file, out.notes);
-  int device = indexOf(kDevices, s.device);
-  r.choice("device", kDevices, device);
-  s.device = kDevices[device];
+  int device = indexOf(haptics::kPlayerDevices, s.device);
+  r.choice("device", haptics::kPlayerDevices, device);
+  s.device = haptics::kPlayerDevices[device];
   r.integer("udp_port", s.udpPort, 1, 65535, "a port in 1..65535");
   r.identifier("device_profile", s.deviceProfile, /*allowEmpty=*/true);
   r.integer("joystick_index", s.joystickIndex, 0, 63, "a joystick index in 0..63");
