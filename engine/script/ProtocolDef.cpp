@@ -60,7 +60,8 @@ std::string shortest(double v) {
   return std::string(text, end);
 }
 
-// `own`'s values where it has them, `base`'s elsewhere.
+}  // namespace
+
 TrialOverrides mergedOver(const TrialOverrides& base, const TrialOverrides& own) {
   TrialOverrides o = base;
   if (own.method) o.method = own.method;
@@ -71,8 +72,6 @@ TrialOverrides mergedOver(const TrialOverrides& base, const TrialOverrides& own)
   if (own.guidance) o.guidance = own.guidance;
   return o;
 }
-
-}  // namespace
 
 std::string defaultConditionLabel(const TrialOverrides& o, const std::string& level) {
   std::string label;

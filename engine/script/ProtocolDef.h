@@ -108,6 +108,9 @@ enum class Assignment {
   ParticipantsFile,  // the participants file's `group` (and `order`) columns
 };
 
+// `own`'s values where it has them, `base`'s elsewhere: a condition's over
+// its block's, a group's change over the condition's.
+TrialOverrides mergedOver(const TrialOverrides& base, const TrialOverrides& own);
 // The condition `condition` of `block` as `group` plays it (nullptr: no
 // group): the group's changes to that block merged over it, and the
 // default label rebuilt from the merged overrides unless the file gave one.

@@ -141,17 +141,6 @@ TrialOverrides readOverrides(const LuaTableReader& table) {
   return o;
 }
 
-// The condition's values where it has them, the block's elsewhere.
-TrialOverrides merged(const TrialOverrides& block, const TrialOverrides& own) {
-  TrialOverrides o = block;
-  if (own.method) o.method = own.method;
-  if (own.stiffness) o.stiffness = own.stiffness;
-  if (own.damping) o.damping = own.damping;
-  if (own.alpha) o.alpha = own.alpha;
-  if (own.timeLimit) o.timeLimit = own.timeLimit;
-  if (own.guidance) o.guidance = own.guidance;
-  return o;
-}
 
 // A list of tables under `key` (positions 1..n, nothing else), at least one.
 int listLength(const LuaTableReader& list, const char* what) {
@@ -174,7 +163,7 @@ ConditionDef readCondition(const LuaTableReader& table, const TrialOverrides& bl
                            const LevelFolders& folders) {
   rejectUnknownLevelKeys(table, {"label", "level", "method", "kr", "kv", "alpha", "time_limit", "guidance"});
   ConditionDef c;
-  c.overrides = merged(blockOverrides, readOverrides(table));
+  c.overrides = mergedOver(blockOverrides, readOverrides(table));  // the condition's over its block's
   const auto own = table.string("level");
   if (own) {
     c.level = *own;
