@@ -1,4 +1,4 @@
-// Fuzz target: settings.json (game/ui/app/SettingsFile): whatever the file
+// Fuzz target: settings.json (game/ui/settings/SettingsFile): whatever the file
 // holds, loading gives settings and notes, never an exception.
 #include "game/ui/settings/SettingsFile.h"
 #include "tests/fuzz/FuzzInput.h"

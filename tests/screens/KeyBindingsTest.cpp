@@ -1,4 +1,4 @@
-// game/ui/app/KeyBindings: the play keys a player may change. No key does two
+// game/ui/settings/KeyBindings: the play keys a player may change. No key does two
 // things, no action is left without a key, Escape stays the way out.
 #include "game/ui/settings/KeyBindings.h"
 

@@ -1,4 +1,4 @@
-// game/ui/app/Settings: the player's override of the force method and gains,
+// game/ui/settings/Settings: the player's override of the force method and gains,
 // applied as a protocol's overrides are (script::overriddenCoupling).
 
 #include "game/ui/settings/Settings.h"
