@@ -248,9 +248,6 @@ int runSessionCommand(const std::vector<std::string>& args) {
                 "people play sessions in the game window: run `hemiroll play`, open Research session (R), pick "
                 "the protocol, enter the participant and start; here a bot plays every trial (--bot BOT.lua), or a "
                 "participant at a device behind the UDP bridge (--device udp)");
-  if (atDevice && o.participants > 0)
-    return fail(kExitUsage, "--participants runs simulated participants (--bot); a person at a device sits one "
-                            "session at a time (--participant ID --device udp)");
   try {
     // A broken bot is refused before anything is written.
     if (o.botPath && !isBuiltinBot(*o.botPath)) script::BotScript{*o.botPath};
