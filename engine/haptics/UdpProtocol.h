@@ -85,4 +85,21 @@ inline bool sequenceAfter(std::uint32_t a, std::uint32_t b) {
   return a != b && static_cast<std::uint32_t>(a - b) < 0x80000000u;
 }
 
+// A receiver's books on the sender's sequence: a datagram is taken when it
+// is after the last one taken (the gap skipped counted into `lost`), else
+// it is out of order. The clients' side; the bridge keeps its own, with a
+// window that un-counts a skipped state arriving late (UdpBridgeDevice).
+struct SequenceBook {
+  bool have = false;
+  std::uint32_t last = 0;
+
+  bool take(std::uint32_t sequence, std::uint64_t& lost) {
+    if (have && !sequenceAfter(sequence, last)) return false;
+    if (have) lost += sequence - last - 1;
+    have = true;
+    last = sequence;
+    return true;
+  }
+};
+
 }  // namespace hemiroll::haptics::udp

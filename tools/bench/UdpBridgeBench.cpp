@@ -34,6 +34,18 @@ double benchSeconds() {
   return s > 0.0 ? s : 2.0;
 }
 
+// What both benchmarks' clients share: the bridge's port, the run's length
+// and rate, real-time priority as a real device's client would run (the
+// hand starts on the mass point at rest by default, so the coupling engages).
+hapticclient::ClientOptions clientOptions(std::uint16_t port, double rate) {
+  hapticclient::ClientOptions options;
+  options.port = port;
+  options.duration = benchSeconds();
+  options.rate = rate;
+  options.realtimePriority = 70;
+  return options;
+}
+
 void BM_UdpBridgeRoundTrip(benchmark::State& state) {
   const double clientRate = static_cast<double>(state.range(0));
   for (auto _ : state) {
@@ -44,14 +56,9 @@ void BM_UdpBridgeRoundTrip(benchmark::State& state) {
       state.SkipWithError(bridge.error());
       return;
     }
-    hapticclient::ClientOptions options;
-    options.port = bridge.port();
-    options.duration = benchSeconds();
-    options.rate = clientRate;
-    options.centre = {0.0, 0.0, 0.04};  // on the mass point at rest, so the coupling engages
+    hapticclient::ClientOptions options = clientOptions(bridge.port(), clientRate);
     options.circleRadius = 0.005;
     options.circleFrequency = 1.0;
-    options.realtimePriority = 70;  // as a real device's client would run
     std::atomic<bool> stopClient{false};
     hapticclient::ClientSummary summary;
     std::thread client([&] { summary = hapticclient::runClient(options, stopClient); });
@@ -102,18 +109,13 @@ void BM_UdpBridgeStepResponse(benchmark::State& state) {
       state.SkipWithError(bridge.error());
       return;
     }
-    hapticclient::ClientOptions options;
-    options.port = bridge.port();
-    options.duration = benchSeconds();
-    options.rate = clientRate;
-    options.centre = {0.0, 0.0, 0.04};  // on the mass point at rest, so the coupling engages
+    hapticclient::ClientOptions options = clientOptions(bridge.port(), clientRate);
     options.peakForce = 3.3;
     options.handleMass = 0.05;
     options.friction = 0.02;
     options.resolution = 0.000055;
     options.step = 0.002;
     options.stepPeriod = 0.094;
-    options.realtimePriority = 70;
     std::atomic<bool> stopClient{false};
     hapticclient::ClientSummary summary;
     std::thread client([&] { summary = hapticclient::runClient(options, stopClient); });

@@ -50,13 +50,10 @@ class ForceInbox {
 
   void take(const udp::ForceMessage& m, std::int64_t now, DeviceModel& hand, StepWatch& steps, ClientSummary& s) {
     ++s.forcesReceived;
-    if (haveSequence_ && !udp::sequenceAfter(m.sequence, lastSequence_)) {
+    if (!sequence_.take(m.sequence, s.forcesLost)) {
       ++s.forcesOutOfOrder;
       return;
     }
-    if (haveSequence_) s.forcesLost += m.sequence - lastSequence_ - 1;
-    haveSequence_ = true;
-    lastSequence_ = m.sequence;
     if (!haveAnswer_ || udp::sequenceAfter(m.answers, lastAnswer_)) {
       ++s.statesAnswered;
       rtts_.push_back(static_cast<double>(now - static_cast<std::int64_t>(m.echoTimestampNs)) * 1e-9);
@@ -84,8 +81,9 @@ class ForceInbox {
 
  private:
   std::vector<double> rtts_;
-  bool haveSequence_ = false, haveAnswer_ = false;
-  std::uint32_t lastSequence_ = 0, lastAnswer_ = 0;
+  udp::SequenceBook sequence_;  // the bridge's force datagrams
+  bool haveAnswer_ = false;
+  std::uint32_t lastAnswer_ = 0;
 };
 
 DeviceModelDef deviceModelOf(const ClientOptions& o) {

@@ -19,13 +19,10 @@ std::string BridgeLink::open() {
 
 void BridgeLink::take(const udp::ForceMessage& m, std::int64_t nowNs) {
   ++counters_.forcesReceived;
-  if (haveSequence_ && !udp::sequenceAfter(m.sequence, lastSequence_)) {
+  if (!sequence_.take(m.sequence, counters_.forcesLost)) {
     ++counters_.forcesOutOfOrder;
     return;
   }
-  if (haveSequence_) counters_.forcesLost += m.sequence - lastSequence_ - 1;
-  haveSequence_ = true;
-  lastSequence_ = m.sequence;
   counters_.lastStatus = m.status;
   counters_.lastSafetyFault = m.status == udp::BridgeStatus::SafetyStop ? m.safetyFault : 0;
   if (m.status == udp::BridgeStatus::Closing) counters_.bridgeClosing = true;

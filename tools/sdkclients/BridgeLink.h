@@ -65,8 +65,7 @@ class BridgeLink {
   haptics::UdpEndpoint bridge_;
   LinkCounters counters_;
   std::uint32_t nextSequence_ = 1;
-  bool haveSequence_ = false;
-  std::uint32_t lastSequence_ = 0;
+  haptics::udp::SequenceBook sequence_;  // the bridge's force datagrams
   Vec3 heldForce_{};            // bridge frame [N], the last ok force
   std::int64_t heldSinceNs_ = 0;
   bool holding_ = false;

@@ -35,10 +35,7 @@ class LinkTick final : public ServoTick {
 
 ClientRunResult runDeviceClient(DeviceDriver& driver, ClientRunDef def, const std::atomic<bool>& stop) {
   ClientRunResult result;
-  const BridgeLinkDef defaults;
-  if (def.link.axes.source == defaults.axes.source && def.link.axes.sign == defaults.axes.sign &&
-      def.link.axes.metresPerUnit == defaults.axes.metresPerUnit)
-    def.link.axes = driver.axes();
+  def.link.axes = driver.axes();  // the SDK's frame is the driver's to know
   if (std::string why = driver.open(); !why.empty()) {
     result.error = std::string(driver.name()) + ": " + why;
     return result;

@@ -19,7 +19,7 @@
 namespace hemiroll::sdkclients {
 
 struct ClientRunDef {
-  BridgeLinkDef link;          // its axes and force limit are filled from the driver when left default
+  BridgeLinkDef link;          // its axes come from the driver; its force limit is lowered to the SDK's
   double duration = 0.0;       // [s]; 0 runs until stop or the bridge closes
   std::int64_t pollNs = 10'000'000;  // how often the supervising thread looks
 };

@@ -21,9 +21,8 @@ constexpr std::int64_t kMs = 1'000'000;
 
 // Exchanges until the bridge has answered (loopback: well under 100 ms).
 Vec3 exchangeUntilAnswered(BridgeLink& link, const DeviceSample& s, std::int64_t now) {
-  Vec3 f{};
   for (int i = 0; i < 200 && link.counters().forcesReceived == 0; ++i) {
-    f = link.exchange(s, now);
+    link.exchange(s, now);
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
   return link.exchange(s, now);  // the answer to the last state is taken now at the latest
