@@ -9,7 +9,7 @@
 #include <string>
 #include <string_view>
 
-#include "engine/script/DeviceProfileDef.h"
+#include "engine/task/DeviceProfileDef.h"
 #include "engine/script/SandboxLimits.h"
 
 namespace hemiroll::script {

@@ -3,6 +3,7 @@
 #include <lua.hpp>
 
 #include <cmath>
+#include <iterator>
 
 #include "engine/script/DataFileLoader.h"
 #include "engine/script/LevelFieldChecks.h"
@@ -87,7 +88,8 @@ void readDevice(const LuaTableReader& top, LevelDef& def) {
   readMapping(*device, def.mapping);
   const auto perDevice = device->table("per_device");
   if (!perDevice) return;
-  rejectUnknownLevelKeys(*perDevice, {"mouse", "joystick", "udp", "bot"});  // kMappedDevices
+  static_assert(std::size(kMappedDevices) == 4, "per_device's keys are kMappedDevices, each named below");
+  rejectUnknownLevelKeys(*perDevice, {kMappedDevices[0], kMappedDevices[1], kMappedDevices[2], kMappedDevices[3]});
   for (const char* name : kMappedDevices) {
     const auto one = perDevice->table(name);
     if (!one) continue;

@@ -16,7 +16,7 @@
 #include <string_view>
 #include <utility>
 
-#include "engine/script/LevelDef.h"
+#include "engine/task/LevelDef.h"
 #include "engine/script/LevelScript.h"
 #include "engine/script/SandboxLimits.h"
 

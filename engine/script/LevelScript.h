@@ -31,10 +31,10 @@
 #include <vector>
 
 #include "engine/physics/StateLayout.h"
-#include "engine/script/LevelDef.h"
+#include "engine/task/LevelDef.h"
 #include "engine/script/LuaSandbox.h"
-#include "engine/script/TaskJudge.h"
-#include "engine/script/TrialSummary.h"
+#include "engine/task/TaskJudge.h"
+#include "engine/task/TrialSummary.h"
 #include "engine/script/TrialTiming.h"
 
 namespace hemiroll::script {

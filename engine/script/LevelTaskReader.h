@@ -5,7 +5,7 @@
 // forbidden zones. Failures throw through LuaTableReader::fail.
 
 #include "engine/script/LuaTableReader.h"
-#include "engine/script/TaskDef.h"
+#include "engine/task/TaskDef.h"
 
 namespace hemiroll::script {
 

@@ -15,7 +15,7 @@
 #include <string>
 #include <string_view>
 
-#include "engine/script/ProtocolDef.h"
+#include "engine/task/ProtocolDef.h"
 #include "engine/script/SandboxLimits.h"
 
 namespace hemiroll::script {

@@ -5,7 +5,7 @@
 
 #include "engine/physics/IntegratorRegistry.h"
 #include "engine/physics/RotationDrivenSystem.h"
-#include "engine/script/ConstantProxyTrajectory.h"
+#include "engine/task/ConstantProxyTrajectory.h"
 #include "engine/script/DataFileLoader.h"
 #include "engine/script/LuaProxyTrajectory.h"
 #include "engine/script/LuaTableReader.h"

@@ -13,7 +13,7 @@
 #include <string_view>
 
 #include "engine/script/SandboxLimits.h"
-#include "engine/script/ScenarioDef.h"
+#include "engine/task/ScenarioDef.h"
 
 namespace hemiroll::script {
 

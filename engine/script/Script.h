@@ -12,18 +12,15 @@
 // plain C++ definitions (ScenarioLoader -> ScenarioDef), including proxy
 // trajectories written in Lua (LuaProxyTrajectory). Levels
 // (docs/LEVELS.md): loading level files (LevelLoader -> LevelDef +
-// LevelScript, every error "file:line:"), judging
-// a declared task natively every tick (TaskJudge, Lua-free, allocation-free),
-// trial summaries (TrialSummaryAccumulator), level callbacks and scoring
+// LevelScript, every error "file:line:"), level callbacks and scoring
 // (LevelScript), and the engine services `require` (scripts/ modules only)
-// and the seeded `hemiroll.random` (ScriptModules, EngineRandom). Bots
+// and the seeded `hemiroll.random` (ScriptModules). Bots
 // (docs/RUN.md): loading a bot module in its own sandbox and calling its
 // init/act with a read-only observation view that allocates nothing per tick
 // (BotScript, BotObservation); the trial loop that feeds it is the game's.
 // Research protocols (docs/PROTOCOLS.md): loading a protocol file
 // (ProtocolLoader -> ProtocolDef, errors "file:line:" as for levels, level
-// files checked to exist) and expanding it into a deterministic trial plan
-// (ProtocolPlan); running a session is the game's. Parameter sweeps
+// files checked to exist); running a session is the game's. Parameter sweeps
 // (docs/SWEEP.md): loading a sweep spec (SweepLoader -> SweepDef, errors
 // "file:line:" as for levels); running one is the game's.
 //
@@ -39,35 +36,26 @@
 // level declares), the game, commands, command-line flags, files other than
 // the script it is asked to load, modules under the scripts/ directory it is
 // given and (only whether they exist) the level files a protocol names,
-// threads, clocks, devices, rendering. Depends on engine/physics (for
-// the definitions it fills) and Lua.
+// threads, clocks, devices, rendering. Depends on engine/task (the model
+// it fills: LevelDef, TaskJudge, ProtocolDef and ProtocolPlan, SweepDef,
+// ScenarioDef, DeviceProfileDef; Task.h), engine/physics and Lua.
 //
 // Known limit: the quota counts Lua VM instructions, so a single long call
 // into a C library function (a pathological string.find pattern) is not
 // interrupted; the memory cap still bounds what it can allocate.
 
+#include "engine/task/Task.h"
 #include "engine/script/BotObservation.h"
 #include "engine/script/BotScript.h"
-#include "engine/script/ConstantProxyTrajectory.h"
 #include "engine/script/DataFileLoader.h"
-#include "engine/script/DriveDef.h"
-#include "engine/script/EngineRandom.h"
-#include "engine/script/LevelDef.h"
 #include "engine/script/LevelLoader.h"
 #include "engine/script/LevelScript.h"
 #include "engine/script/LuaProxyTrajectory.h"
 #include "engine/script/LuaSandbox.h"
-#include "engine/script/ProtocolDef.h"
 #include "engine/script/ProtocolLoader.h"
-#include "engine/script/ProtocolPlan.h"
 #include "engine/script/LuaTableReader.h"
 #include "engine/script/SandboxLimits.h"
-#include "engine/script/ScenarioDef.h"
 #include "engine/script/ScenarioLoader.h"
 #include "engine/script/ScriptError.h"
 #include "engine/script/ScriptModules.h"
 #include "engine/script/ScriptSourceFile.h"
-#include "engine/script/TaskDef.h"
-#include "engine/script/TaskJudge.h"
-#include "engine/script/TrialSummary.h"
-#include "engine/script/TrialSummaryAccumulator.h"

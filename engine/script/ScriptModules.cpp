@@ -10,7 +10,7 @@
 #include <type_traits>
 
 #include "engine/files/CheckedFile.h"
-#include "engine/script/EngineRandom.h"
+#include "engine/task/EngineRandom.h"
 
 namespace hemiroll::script {
 

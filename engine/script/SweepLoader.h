@@ -14,7 +14,7 @@
 #include <string_view>
 
 #include "engine/script/SandboxLimits.h"
-#include "engine/script/SweepDef.h"
+#include "engine/task/SweepDef.h"
 
 namespace hemiroll::script {
 

@@ -17,7 +17,7 @@
 #include "engine/physics/StateKinematics.h"
 #include "engine/script/LevelLoader.h"
 #include "engine/script/ProtocolLoader.h"
-#include "engine/script/ProtocolPlan.h"
+#include "engine/task/ProtocolPlan.h"
 #include "engine/script/ScenarioLoader.h"
 #include "engine/script/ScriptError.h"
 #include "engine/script/SweepLoader.h"

@@ -9,6 +9,7 @@
 
 #include "engine/record/ContentHash.h"
 #include "engine/record/FileNames.h"
+#include "engine/haptics/devices/DeviceNames.h"
 #include "engine/script/BotScript.h"
 #include "engine/script/LevelLoader.h"
 #include "engine/script/ScriptError.h"
@@ -42,7 +43,7 @@ TrialRecordingDef recordingDef(const RunOptions& o, const TrialSettings& setting
   TrialRecordingDef def;
   def.dir = *o.recordDir;
   def.ids = {"bot", "run"};
-  const std::string player = o.device == "udp" ? std::string("udp") : safeName(stem(o.botPath));
+  const std::string player = o.device == haptics::kUdpDevice ? std::string(haptics::kUdpDevice) : safeName(stem(o.botPath));
   def.trialId = safeName(stem(o.levelPath)) + "_" + player + "_seed" + std::to_string(o.seed);
   def.renameIfTaken = true;
   def.taskName = "hemiroll run";
@@ -87,7 +88,7 @@ std::string resultLine(const RunOptions& o, const std::string& levelName, const 
   line.add("ticks", r.ticks).add("wall_time", r.wallTime, 6).add("cpu_time", cpuTime, 6);
   if (device) {  // a person at a device: how the device fared (RUN.md)
     const haptics::UdpBridgeCounters c = device->counters();
-    line.add("device", "udp").add("device_profile", o.deviceProfile.value_or("")).add("stop", device->stopWords());
+    line.add("device", haptics::kUdpDevice).add("device_profile", o.deviceProfile.value_or("")).add("stop", device->stopWords());
     line.add("packets_received", static_cast<long long>(c.accepted)).add("packets_lost", static_cast<long long>(c.lost));
     line.add("packets_out_of_order", static_cast<long long>(c.outOfOrder)).add("packets_late", static_cast<long long>(c.late));
     line.add("packets_malformed", static_cast<long long>(c.malformed));
@@ -195,7 +196,7 @@ int runRunCommand(const std::vector<std::string>& args) {
     settings.device = deviceSpecOf(*profile);
     settings.safety = safetyOf(*profile);
   }
-  if (options.device == "udp") return runAtDevice(options, level, settings, profile);
+  if (options.device == haptics::kUdpDevice) return runAtDevice(options, level, settings, profile);
   if (const std::string problem = haptics::guidanceProblem(settings.guidance, settings.device); !problem.empty())
     return badInput("--guidance-" + problem);
   std::unique_ptr<TrialRecording> recording;

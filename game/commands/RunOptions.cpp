@@ -3,6 +3,7 @@
 #include <string>
 
 #include "engine/physics/ForceCoupling.h"
+#include "engine/haptics/devices/DeviceNames.h"
 
 #include "game/cli/ArgumentReader.h"
 #include "game/commands/HumanFlags.h"
@@ -80,13 +81,13 @@ RunOptionsResult parseRunOptions(const std::vector<std::string>& args) {
   result.error = reader.read(args);
   if (!result.error.empty() || o.help) return result;
   if (o.levelPath.empty()) result.error = "missing the level file";
-  else if (o.device != "bot" && o.device != "udp")
+  else if (o.device != "bot" && o.device != haptics::kUdpDevice)
     result.error = "--device needs bot or udp, not '" + o.device + "'";
-  else if (o.device == "udp" && !o.realtime)
+  else if (o.device == haptics::kUdpDevice && !o.realtime)
     result.error = "--device udp needs --realtime: a person at a device plays on the wall clock";
-  else if (o.device == "udp" && !o.botPath.empty())
+  else if (o.device == haptics::kUdpDevice && !o.botPath.empty())
     result.error = "--device udp and --bot exclude each other: the person at the device plays";
-  else if (o.device == "udp" && o.guidance != "none")
+  else if (o.device == haptics::kUdpDevice && o.guidance != "none")
     result.error = "--guidance needs a bot (the autopilot plans beside it); not with --device udp";
   else if (o.device == "bot" && o.botPath.empty()) result.error = "missing --bot BOT.lua";
   else if (o.autopilotBudget < 0.25 || o.autopilotBudget > 4.0)

@@ -10,6 +10,7 @@
 
 #include "engine/script/BotScript.h"
 #include "engine/script/ScriptError.h"
+#include "engine/haptics/devices/DeviceNames.h"
 #include "game/commands/CommandUsage.h"
 #include "game/commands/ExitCode.h"
 #include "game/commands/SessionOptions.h"
@@ -160,7 +161,7 @@ TrialResult playAtDevice(ResearchSession& session, const SessionOptions& o, cons
     throw SessionError(SessionError::Kind::Environment, e.what());
   }
   const std::unique_ptr<TrialRecording> recording =
-      session.recordNext(level.def, playing->rig().loopDef(), "udp", def.bridge.spec);
+      session.recordNext(level.def, playing->rig().loopDef(), haptics::kUdpDevice, def.bridge.spec);
   playing->rig().record(recording->tap());
   const TrialResult result = playing->run();
   // No device, no trial: nothing was played, so nothing is data. The trial
@@ -184,14 +185,14 @@ int runParticipant(const SessionOptions& o, const SessionRequest& request) {
   Tally tally;
   try {
     ResearchSession session(request);
-    const bool atDevice = o.device == "udp";
+    const bool atDevice = o.device == haptics::kUdpDevice;
     haptics::DeviceSpec device = atDevice ? haptics::UdpBridgeDef{}.spec : botDeviceSpec();
     if (session.deviceProfile()) device = deviceSpecOf(*session.deviceProfile());
     if (const std::string problem = session.couplingProblem(device); !problem.empty())
       return fail(kExitUsage, problem);
     std::string memoryNote;
     script::BotMemory memory = restoreBotMemory(session.folder(), session.done(), memoryNote);
-    session.begin(atDevice ? std::string("udp") : *o.botPath);
+    session.begin(atDevice ? std::string(haptics::kUdpDevice) : *o.botPath);
     if (!session.lockNote().empty()) std::cerr << "hemiroll session: " << session.lockNote() << "\n";
     if (!memoryNote.empty()) std::cerr << "hemiroll session: " << memoryNote << "\n";
     for (const auto& [trialId, reason] : session.interrupted())
@@ -242,7 +243,7 @@ int runSessionCommand(const std::vector<std::string>& args) {
   const SessionOptionsResult parsed = parseSessionOptions(args);
   if (const std::optional<int> exit = exitBeforeRunning("hemiroll session: ", parsed, sessionUsage())) return *exit;
   const SessionOptions& o = parsed.options;
-  const bool atDevice = o.device == "udp";
+  const bool atDevice = o.device == haptics::kUdpDevice;
   if (!o.botPath && !atDevice)
     return fail(kExitUsage,
                 "people play sessions in the game window: run `hemiroll play`, open Research session (R), pick "

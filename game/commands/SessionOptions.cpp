@@ -2,6 +2,7 @@
 
 #include "game/cli/ArgumentReader.h"
 #include "game/commands/HumanFlags.h"
+#include "engine/haptics/devices/DeviceNames.h"
 
 #include <string>
 
@@ -79,8 +80,8 @@ SessionOptionsResult parseSessionOptions(const std::vector<std::string>& args) {
   else if (o.participants > 0 && !o.botPath) result.error = "--participants needs --bot: a cohort is simulated participants";
   else if (o.participants > 0 && o.participant.empty()) o.participant = "sim";
   else if (o.participant.empty()) result.error = "missing --participant ID";
-  else if (o.device != "bot" && o.device != "udp") result.error = "--device needs bot or udp, not '" + o.device + "'";
-  else if (o.device == "udp" && o.botPath) result.error = "--device udp and --bot exclude each other: the participant plays";
+  else if (o.device != "bot" && o.device != haptics::kUdpDevice) result.error = "--device needs bot or udp, not '" + o.device + "'";
+  else if (o.device == haptics::kUdpDevice && o.botPath) result.error = "--device udp and --bot exclude each other: the participant plays";
   return result;
 }
 

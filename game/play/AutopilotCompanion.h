@@ -23,8 +23,8 @@
 
 #include "engine/haptics/Guidance.h"
 #include "engine/haptics/ServoLoop.h"
-#include "engine/script/LevelDef.h"
-#include "engine/script/TaskJudge.h"
+#include "engine/task/LevelDef.h"
+#include "engine/task/TaskJudge.h"
 #include "game/trial/AutopilotBot.h"
 #include "game/trial/HandoffBotDevice.h"
 #include "game/trial/HintSmoother.h"

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "engine/haptics/devices/DeviceFactory.h"
+#include "engine/haptics/devices/sdl/DeviceFactory.h"
 #include "engine/physics/StateKinematics.h"
 #include "game/trial/DeviceProfiles.h"
 

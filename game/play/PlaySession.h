@@ -51,13 +51,13 @@
 #include <optional>
 #include <vector>
 
-#include "engine/haptics/MouseDevice.h"
-#include "engine/haptics/devices/DeviceFactory.h"
+#include "engine/haptics/devices/MouseDevice.h"
+#include "engine/haptics/devices/sdl/DeviceFactory.h"
 #include "engine/haptics/PointerMapping.h"
 #include "engine/haptics/ServoLoop.h"
 #include "game/play/AutopilotCompanion.h"
 #include "game/play/TakeoverDevice.h"
-#include "engine/script/DeviceProfileDef.h"
+#include "engine/task/DeviceProfileDef.h"
 #include "game/trial/TrialJudge.h"
 #include "game/trial/TrialRig.h"
 
@@ -77,7 +77,7 @@ struct SafetyStop {
 };
 
 struct PlaySessionDef {
-  std::string device = "mouse";        // "mouse", "joystick" or "udp" (DeviceFactory names)
+  std::string device = haptics::kMouseDevice;        // "mouse", "joystick" or "udp" (DeviceFactory names)
   haptics::DeviceOptions deviceOptions;  // the joystick's index, the bridge's port, ...
   haptics::PointerMappingDef pointer;
   bool requestRealtime = true;         // SCHED_FIFO for the servo thread when permitted

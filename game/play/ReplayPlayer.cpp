@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-#include "engine/haptics/devices/DeviceFactory.h"
+#include "engine/haptics/devices/sdl/DeviceFactory.h"
 #include "engine/record/ContentHash.h"
 #include "game/trial/ReplayCapture.h"
 #include "game/trial/TrialSetup.h"

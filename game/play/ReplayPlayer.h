@@ -13,11 +13,11 @@
 #include <memory>
 #include <string>
 
-#include "engine/haptics/ReplayDevice.h"
+#include "engine/haptics/devices/ReplayDevice.h"
 #include "engine/haptics/ServoLoop.h"
 #include "engine/record/ReplayReader.h"
 #include "engine/record/ReplayRunner.h"
-#include "engine/script/LevelDef.h"
+#include "engine/task/LevelDef.h"
 
 namespace hemiroll::game {
 

@@ -14,7 +14,7 @@
 #include "engine/haptics/DeviceSpec.h"
 #include "engine/haptics/ForceSafety.h"
 #include "engine/physics/ForceCoupling.h"
-#include "engine/script/DeviceProfileDef.h"
+#include "engine/task/DeviceProfileDef.h"
 
 namespace hemiroll::game {
 

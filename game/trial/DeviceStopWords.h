@@ -8,7 +8,7 @@
 #include <string>
 
 #include "engine/haptics/ForceSafety.h"
-#include "engine/haptics/UdpBridgeDevice.h"
+#include "engine/haptics/devices/UdpBridgeDevice.h"
 
 namespace hemiroll::game {
 

@@ -5,13 +5,14 @@
 #include <stdexcept>
 #include <thread>
 
+#include "engine/haptics/devices/DeviceNames.h"
 namespace hemiroll::game {
 
 namespace {
 
 TrialRigDef rigDefOf(const DeviceTrialDef& def) {
   TrialRigDef rig;
-  rig.device = "udp";  // the level's mapping for a device behind the bridge
+  rig.device = haptics::kUdpDevice;  // the level's mapping for a device behind the bridge
   rig.coupling = def.coupling;
   rig.safety = def.safety;
   rig.threaded = true;
@@ -129,7 +130,7 @@ record::Fields deviceResultFields(const std::string& device, const std::string& 
 record::Fields deviceResultFields(const DeviceTrial* trial, const std::string& device) {
   if (trial == nullptr) return deviceResultFields(device, "", nullptr);
   const haptics::UdpBridgeCounters c = trial->counters();
-  return deviceResultFields("udp", trial->stopWords(), &c);
+  return deviceResultFields(haptics::kUdpDevice, trial->stopWords(), &c);
 }
 
 record::Fields deviceOutcomeFields(const DeviceTrial& trial) {

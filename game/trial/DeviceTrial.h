@@ -20,7 +20,7 @@
 #include <string>
 
 #include "engine/haptics/ServoClock.h"
-#include "engine/haptics/UdpBridgeDevice.h"
+#include "engine/haptics/devices/UdpBridgeDevice.h"
 #include "engine/record/TrialMeta.h"
 #include "engine/script/LevelLoader.h"
 #include "game/trial/DeviceStopWords.h"

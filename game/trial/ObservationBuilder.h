@@ -10,7 +10,7 @@
 #include "engine/physics/HemisphereParams.h"
 #include "engine/physics/StateLayout.h"
 #include "engine/script/BotObservation.h"
-#include "engine/script/TaskJudge.h"
+#include "engine/task/TaskJudge.h"
 
 namespace hemiroll::game {
 

@@ -10,6 +10,7 @@
 #include <string>
 #include <string_view>
 
+#include "engine/haptics/devices/DeviceNames.h"
 #include "engine/haptics/RecordRow.h"
 #include "engine/haptics/ServoLoop.h"
 
@@ -24,7 +25,7 @@ class ReplayCapture {
   // Creates the log file (an existing one is replaced). Throws
   // record::RecordError naming the file.
   ReplayCapture(const std::filesystem::path& file, const std::string& levelHash, double dt,
-                const std::string& deviceKind = "mouse");
+                const std::string& deviceKind = haptics::kMouseDevice);
   ~ReplayCapture();
 
   // Points the loop's input and command rings here (before constructing it).

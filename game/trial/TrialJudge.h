@@ -18,8 +18,8 @@
 
 #include "engine/haptics/RecordRow.h"
 #include "engine/script/LevelLoader.h"
-#include "engine/script/TaskJudge.h"
-#include "engine/script/TrialSummaryAccumulator.h"
+#include "engine/task/TaskJudge.h"
+#include "engine/task/TrialSummaryAccumulator.h"
 
 namespace hemiroll::game {
 

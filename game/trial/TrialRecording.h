@@ -14,7 +14,7 @@
 
 #include "engine/haptics/RecordRow.h"
 #include "engine/record/RecordingSession.h"
-#include "engine/script/LevelDef.h"
+#include "engine/task/LevelDef.h"
 #include "game/trial/TrialRig.h"
 #include "game/trial/TrialSetup.h"
 

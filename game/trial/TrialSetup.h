@@ -10,7 +10,7 @@
 #include "engine/haptics/DeviceSpec.h"
 #include "engine/haptics/ServoLoop.h"
 #include "engine/script/BotObservation.h"
-#include "engine/script/LevelDef.h"
+#include "engine/task/LevelDef.h"
 
 namespace hemiroll::game {
 

@@ -10,7 +10,7 @@
 #include <cmath>
 #include <random>
 
-#include "engine/haptics/ScriptedDevice.h"
+#include "engine/haptics/devices/ScriptedDevice.h"
 #include "engine/haptics/ServoLoop.h"
 
 namespace hemiroll::haptics {

@@ -10,7 +10,7 @@
 #include <memory>
 #include <thread>
 
-#include "engine/haptics/ScriptedDevice.h"
+#include "engine/haptics/devices/ScriptedDevice.h"
 #include "tests/support/AllocationCounter.h"
 
 

@@ -8,9 +8,9 @@
 #include <memory>
 #include <thread>
 
-#include "engine/haptics/ReplayDevice.h"
+#include "engine/haptics/devices/ReplayDevice.h"
 #include "engine/haptics/ServoLoop.h"
-#include "engine/haptics/SimulatedHandDevice.h"
+#include "engine/haptics/devices/SimulatedHandDevice.h"
 #include "engine/record/RecordError.h"
 #include "engine/record/RecordingReader.h"
 #include "engine/record/ReplayReader.h"

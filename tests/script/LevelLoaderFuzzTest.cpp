@@ -13,10 +13,10 @@
 #include <regex>
 #include <sstream>
 
-#include "engine/script/EngineRandom.h"
+#include "engine/task/EngineRandom.h"
 #include "engine/script/LevelLoader.h"
 #include "engine/script/ScriptError.h"
-#include "engine/script/TrialSummaryAccumulator.h"
+#include "engine/task/TrialSummaryAccumulator.h"
 
 namespace hemiroll::script {
 namespace {

@@ -9,7 +9,7 @@
 
 #include "engine/script/LevelLoader.h"
 #include "engine/script/ScriptError.h"
-#include "engine/script/TrialSummaryAccumulator.h"
+#include "engine/task/TrialSummaryAccumulator.h"
 
 namespace hemiroll::script {
 namespace {

@@ -18,6 +18,7 @@
 #include <thread>
 
 #include "engine/haptics/Haptics.h"
+#include "engine/haptics/devices/ScriptedDevice.h"
 
 namespace {
 

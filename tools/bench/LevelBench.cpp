@@ -7,8 +7,8 @@
 #include <string>
 
 #include "engine/script/LevelLoader.h"
-#include "engine/script/TaskJudge.h"
-#include "engine/script/TrialSummaryAccumulator.h"
+#include "engine/task/TaskJudge.h"
+#include "engine/task/TrialSummaryAccumulator.h"
 
 namespace {
 

@@ -15,6 +15,7 @@
 #include <memory>
 
 #include "engine/haptics/Haptics.h"
+#include "engine/haptics/devices/ScriptedDevice.h"
 #include "engine/record/Record.h"
 
 namespace {

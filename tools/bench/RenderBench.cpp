@@ -20,7 +20,7 @@
 #include <cstdio>
 #include <memory>
 
-#include "engine/haptics/ScriptedDevice.h"
+#include "engine/haptics/devices/ScriptedDevice.h"
 #include "engine/haptics/ServoLoop.h"
 #include "engine/physics/Orientation.h"
 #include "engine/platform/PlatformError.h"

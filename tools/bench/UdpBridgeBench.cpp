@@ -20,7 +20,7 @@
 #include <thread>
 
 #include "engine/haptics/ServoLoop.h"
-#include "engine/haptics/UdpBridgeDevice.h"
+#include "engine/haptics/devices/UdpBridgeDevice.h"
 #include "tools/hapticclient/HapticClient.h"
 
 namespace {

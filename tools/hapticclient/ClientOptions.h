@@ -1,14 +1,14 @@
 #pragma once
 // Command-line options of hemiroll-haptic-client, the UDP bridge's reference
 // client: where the bridge is, how long and how fast to send, and the hand
-// model it emulates (engine/haptics/SimulatedHandDevice).
+// model it emulates (engine/haptics/devices/SimulatedHandDevice).
 
 #include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
 
-#include "engine/haptics/SimulatedHandDevice.h"
+#include "engine/haptics/devices/SimulatedHandDevice.h"
 
 namespace hemiroll::hapticclient {
 

@@ -7,7 +7,7 @@
 #include "engine/haptics/ForceSafety.h"
 #include "engine/haptics/RealtimeThread.h"
 #include "engine/haptics/ServoClock.h"
-#include "engine/haptics/SimulatedHandDevice.h"
+#include "engine/haptics/devices/SimulatedHandDevice.h"
 #include "engine/haptics/UdpProtocol.h"
 #include "engine/haptics/UdpSocket.h"
 #include "tools/hapticclient/SimulatedDevice.h"

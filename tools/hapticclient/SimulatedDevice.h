@@ -17,7 +17,7 @@
 #include <random>
 #include <vector>
 
-#include "engine/haptics/SimulatedHandDevice.h"
+#include "engine/haptics/devices/SimulatedHandDevice.h"
 #include "engine/haptics/UdpProtocol.h"
 
 namespace hemiroll::hapticclient {

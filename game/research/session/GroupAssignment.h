@@ -19,7 +19,7 @@
 #include <string>
 
 #include "engine/record/TrialMeta.h"
-#include "engine/script/ProtocolDef.h"
+#include "engine/task/ProtocolDef.h"
 
 namespace hemiroll::game {
 

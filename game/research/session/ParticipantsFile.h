@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "engine/record/TrialMeta.h"
-#include "engine/script/ProtocolDef.h"
+#include "engine/task/ProtocolDef.h"
 
 namespace hemiroll::game {
 

@@ -10,7 +10,7 @@
 #include "engine/record/RecordError.h"
 #include "engine/record/ResultsFile.h"
 #include "engine/script/ProtocolLoader.h"
-#include "engine/script/ProtocolPlan.h"
+#include "engine/task/ProtocolPlan.h"
 #include "engine/script/ScriptError.h"
 #include "game/research/session/GroupAssignment.h"
 #include "game/research/session/ParticipantsFile.h"

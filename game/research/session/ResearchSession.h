@@ -27,8 +27,8 @@
 
 #include "engine/haptics/ServoLoop.h"
 #include "engine/script/LevelLoader.h"
-#include "engine/script/DeviceProfileDef.h"
-#include "engine/script/ProtocolDef.h"
+#include "engine/task/DeviceProfileDef.h"
+#include "engine/task/ProtocolDef.h"
 #include "game/trial/TrialRecording.h"
 #include "game/research/session/SessionError.h"
 #include "game/research/session/SessionLock.h"

@@ -3,7 +3,7 @@
 #include <cstdio>
 
 #include "engine/record/DataDirectory.h"
-#include "engine/script/ProtocolDef.h"
+#include "engine/task/ProtocolDef.h"
 
 namespace hemiroll::game {
 

@@ -13,7 +13,7 @@
 #include <functional>
 #include <vector>
 
-#include "engine/script/ScenarioDef.h"
+#include "engine/task/ScenarioDef.h"
 #include "game/research/sim/ScenarioRun.h"
 
 namespace hemiroll::game {

@@ -14,7 +14,7 @@
 #include "engine/physics/ForceDrivenSystem.h"
 #include "engine/physics/PrescribedDriveSystem.h"
 #include "engine/physics/RotationDrivenSystem.h"
-#include "engine/script/ScenarioDef.h"
+#include "engine/task/ScenarioDef.h"
 #include "game/research/sim/TrajectoryRow.h"
 
 namespace hemiroll::game {

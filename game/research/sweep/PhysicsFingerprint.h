@@ -12,7 +12,7 @@
 
 #include <string>
 
-#include "engine/script/SweepDef.h"
+#include "engine/task/SweepDef.h"
 
 namespace hemiroll::game {
 

@@ -8,8 +8,8 @@
 
 #include "engine/physics/HemisphereParams.h"
 #include "engine/physics/RoseDrive.h"
-#include "engine/script/ScenarioDef.h"
-#include "engine/script/SweepDef.h"
+#include "engine/task/ScenarioDef.h"
+#include "engine/task/SweepDef.h"
 
 namespace hemiroll::game {
 

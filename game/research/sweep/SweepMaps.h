@@ -15,7 +15,7 @@
 #include <utility>
 #include <vector>
 
-#include "engine/script/SweepDef.h"
+#include "engine/task/SweepDef.h"
 #include "game/research/report/Heatmap.h"
 #include "game/research/sweep/SweepManifest.h"
 #include "game/research/sweep/SweepMetrics.h"

@@ -7,7 +7,7 @@
 #include "engine/record/CsvRowFormat.h"
 #include "engine/record/DurableFile.h"
 #include "engine/record/RecordError.h"
-#include "engine/script/SweepDef.h"
+#include "engine/task/SweepDef.h"
 #include "game/research/sweep/SweepError.h"
 #include "game/research/sweep/SweepTable.h"
 

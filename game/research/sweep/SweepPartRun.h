@@ -15,7 +15,7 @@
 #include <filesystem>
 #include <string>
 
-#include "engine/script/SweepDef.h"
+#include "engine/task/SweepDef.h"
 #include "game/research/sweep/SweepShard.h"
 
 namespace hemiroll::game {

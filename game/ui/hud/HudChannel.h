@@ -10,7 +10,7 @@
 
 #include "engine/haptics/ServoSnapshot.h"
 #include "engine/physics/RollingDynamics.h"
-#include "engine/script/TaskDef.h"
+#include "engine/task/TaskDef.h"
 
 namespace hemiroll::game {
 

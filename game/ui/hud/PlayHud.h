@@ -29,7 +29,7 @@
 #include "engine/haptics/ServoSnapshot.h"
 #include "engine/physics/HemisphereParams.h"
 #include "engine/physics/RollingDynamics.h"
-#include "engine/script/TaskJudge.h"
+#include "engine/task/TaskJudge.h"
 #include "game/ui/hud/HudChannel.h"
 #include "game/ui/hud/PlayerWords.h"
 #include "game/ui/hud/ScrollingPlot.h"

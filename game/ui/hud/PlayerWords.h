@@ -16,8 +16,8 @@
 #include <span>
 #include <string>
 
-#include "engine/script/TaskDef.h"
-#include "engine/script/TaskJudge.h"
+#include "engine/task/TaskDef.h"
+#include "engine/task/TaskJudge.h"
 
 namespace hemiroll::game {
 

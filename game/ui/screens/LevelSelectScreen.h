@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/script/LevelDef.h"
+#include "engine/task/LevelDef.h"
 #include "game/ui/scores/ScoreStore.h"
 #include "game/ui/screens/ListingBudget.h"
 #include "game/ui/screens/MedalTimes.h"

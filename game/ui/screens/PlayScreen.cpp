@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "engine/haptics/devices/DeviceFactory.h"
+#include "engine/haptics/devices/sdl/DeviceFactory.h"
 #include "engine/physics/StateLayout.h"
 #include "engine/platform/Window.h"
 #include "engine/record/DataDirectory.h"

@@ -16,7 +16,7 @@
 #include "engine/render/ContactTrace.h"
 #include "engine/render/RenderScene.h"
 #include "engine/script/LevelLoader.h"
-#include "engine/script/TaskJudge.h"
+#include "engine/task/TaskJudge.h"
 #include "game/ui/hud/FloorInset.h"
 #include "game/play/ReplayPlayer.h"
 #include "game/ui/screens/Screen.h"

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "engine/haptics/MouseDevice.h"
-#include "engine/haptics/devices/DeviceFactory.h"
+#include "engine/haptics/devices/MouseDevice.h"
+#include "engine/haptics/devices/sdl/DeviceFactory.h"
 #include "game/ui/screens/PlayScreen.h"
 #include "game/ui/hud/WrappedText.h"
 #include "game/ui/screens/ScreenHost.h"

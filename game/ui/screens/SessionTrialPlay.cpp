@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-#include "engine/haptics/devices/DeviceFactory.h"
+#include "engine/haptics/devices/sdl/DeviceFactory.h"
 #include "game/research/session/ResearchSession.h"
 #include "game/ui/screens/ScreenHost.h"
 #include "game/ui/screens/ScreenStack.h"

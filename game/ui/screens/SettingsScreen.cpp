@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "engine/haptics/devices/DeviceFactory.h"
+#include "engine/haptics/devices/sdl/DeviceFactory.h"
 #include "engine/physics/ForceCoupling.h"
 #include "game/ui/settings/Settings.h"
 #include "game/ui/audio/Audio.h"

@@ -11,7 +11,7 @@
 
 #include "engine/render/ContactTrace.h"
 #include "engine/render/RenderScene.h"
-#include "engine/script/LevelDef.h"
+#include "engine/task/LevelDef.h"
 #include "game/ui/screens/MedalTimes.h"
 #include "game/trial/TrialJudge.h"
 

@@ -1,6 +1,6 @@
 #include "game/ui/settings/Settings.h"
 
-#include "engine/script/ProtocolDef.h"
+#include "engine/task/ProtocolDef.h"
 
 namespace hemiroll::game {
 

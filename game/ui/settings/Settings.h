@@ -6,6 +6,7 @@
 #include <string>
 
 #include "engine/physics/ForceCoupling.h"
+#include "engine/haptics/devices/DeviceNames.h"
 #include "engine/render/RenderScene.h"
 #include "game/ui/settings/KeyBindings.h"
 
@@ -14,7 +15,7 @@ namespace hemiroll::game {
 struct Settings {
   // Input device: "mouse", "joystick" (SDL force feedback) or "udp" (a
   // haptic device behind the UDP bridge, docs/UDP_BRIDGE.md).
-  std::string device = "mouse";
+  std::string device = haptics::kMouseDevice;
   int joystickIndex = 0;       // SDL joystick index
   int udpPort = 47110;         // the bridge's port on 127.0.0.1
   // The device behind the bridge: its profile's name (devices/NAME.lua,

@@ -7,10 +7,10 @@
 #include <cstdlib>
 #include <ctime>
 
-#include "engine/haptics/devices/DeviceFactory.h"
+#include "engine/haptics/devices/sdl/DeviceFactory.h"
 #include "engine/platform/KeyNames.h"
 #include "engine/record/DurableFile.h"
-#include "engine/script/ProtocolDef.h"
+#include "engine/task/ProtocolDef.h"
 
 namespace hemiroll::game {
 

@@ -13,7 +13,7 @@
 #include "engine/physics/StateLayout.h"
 #include "engine/render/RenderScene.h"
 #include "engine/render/Renderer.h"
-#include "engine/script/LevelDef.h"
+#include "engine/task/LevelDef.h"
 
 namespace hemiroll::game {
 

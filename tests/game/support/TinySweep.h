@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <string>
 
-#include "engine/script/SweepDef.h"
+#include "engine/task/SweepDef.h"
 #include "game/research/sweep/SweepPartRun.h"
 
 namespace hemiroll::test {

@@ -2,7 +2,7 @@
 // A stand-in for hemiroll's UDP bridge in the SDK clients' tests: it answers
 // every state with one force (in the bridge's frame) and a status, and keeps
 // the last state it got. The real bridge against the reference client is
-// tests/haptics/UdpBridgeEndToEndTest.
+// tests/haptics/devices/UdpBridgeEndToEndTest.
 
 #include <atomic>
 #include <mutex>

@@ -1,0 +1,2 @@
+// The toy's SDL device: a header of a library research may not link.
+struct Joystick {};
