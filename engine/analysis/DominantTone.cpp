@@ -120,6 +120,75 @@ std::size_t blockLength(std::size_t n, double dt, const ToneSearch& search) {
   return std::max<std::size_t>(1, std::min(byWork, byBand));
 }
 
+// The signal less its mean under a Hann taper, with what the amplitude and
+// the share need: the taper's sum and the untapered variance.
+struct TaperedSignal {
+  std::vector<std::complex<double>> samples;
+  std::complex<double> mean;
+  double taperSum = 0.0, variance = 0.0;
+};
+
+TaperedSignal taperedSignal(std::span<const std::complex<double>> signal) {
+  const std::size_t n = signal.size();
+  TaperedSignal t;
+  std::complex<double> sumZ(0.0, 0.0);
+  for (const auto& z : signal) sumZ += z;
+  t.mean = sumZ / static_cast<double>(n);
+  t.samples.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double w = 0.5 - 0.5 * std::cos(2.0 * std::numbers::pi * (static_cast<double>(i) + 0.5) / static_cast<double>(n));
+    t.samples[i] = w * (signal[i] - t.mean);
+    t.taperSum += w;
+    t.variance += std::norm(signal[i] - t.mean);
+  }
+  return t;
+}
+
+// Grid: +fMin .. +fMax (steps + 1 frequencies df apart), and the same
+// negated when both signs are searched; sorted.
+std::vector<double> frequencyGrid(double fMin, double df, std::size_t steps, bool bothSigns) {
+  std::vector<double> freqs;
+  for (std::size_t k = 0; k <= steps; ++k) {
+    const double f = fMin + static_cast<double>(k) * df;
+    freqs.push_back(f);
+    if (bothSigns && f > 0.0) freqs.push_back(-f);
+  }
+  std::sort(freqs.begin(), freqs.end());
+  return freqs;
+}
+
+// By FFT (Periodogram.h): the grid is fMin + k df on each side, and
+// df = 1 / (oversampling T) makes it the bins of a transform of
+// oversampling x n points. Sorted, the negative side comes first,
+// highest |f| first.
+void fftPowers(std::span<const std::complex<double>> tapered, double dt, const ToneSearch& search, double fMin,
+               std::size_t steps, std::vector<double>& powers) {
+  const std::size_t fftLength = static_cast<std::size_t>(std::max(search.oversampling, 1)) * tapered.size();
+  std::vector<double> side(steps + 1);
+  fftGridPowers(tapered, dt, fftLength, fMin, +1, steps + 1, side);
+  const std::size_t negatives = powers.size() - (steps + 1);
+  for (std::size_t k = 0; k <= steps; ++k) powers[negatives + k] = side[k];
+  if (negatives > 0) {
+    fftGridPowers(tapered, dt, fftLength, fMin, -1, steps + 1, side);
+    const std::size_t first = fMin > 0.0 ? 0 : 1;  // f = 0 is on the positive side only
+    for (std::size_t k = first; k <= steps; ++k) powers[negatives - 1 - (k - first)] = side[k];
+  }
+}
+
+// The FFT's powers differ from the direct sum's in their last bits: where
+// maxima are that close to the best, the direct sum decides, as it always
+// did. Returns the strongest maximum then (freqs.size(): none).
+std::size_t settleNearTies(std::span<const std::complex<double>> tapered, double dt, double df,
+                           const std::vector<double>& freqs, std::vector<double>& powers, std::size_t best) {
+  const double top = powers[best];
+  std::vector<std::size_t> close;
+  for (std::size_t i = 1; i + 1 < freqs.size(); ++i)
+    if (powers[i] >= top * (1.0 - kNearTie)) close.push_back(i);
+  for (std::size_t i : close)
+    for (std::size_t j : {i - 1, i, i + 1}) powers[j] = power(tapered, freqs[j], dt);
+  return strongestInteriorMaximum(freqs, powers, df);
+}
+
 }  // namespace
 
 Tone dominantTone(std::span<const std::complex<double>> signal, double dt, const ToneSearch& search) {
@@ -137,62 +206,24 @@ Tone dominantTone(std::span<const std::complex<double>> signal, double dt, const
   const double df = 1.0 / (duration * std::max(search.oversampling, 1));
   if (!(fMax > fMin + 2.0 * df)) return tone;
 
-  std::complex<double> sumZ(0.0, 0.0);
-  for (const auto& z : signal) sumZ += z;
-  const std::complex<double> meanZ = sumZ / static_cast<double>(n);
-  std::vector<std::complex<double>> tapered(n);
-  double taperSum = 0.0, variance = 0.0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double w = 0.5 - 0.5 * std::cos(2.0 * std::numbers::pi * (static_cast<double>(i) + 0.5) / static_cast<double>(n));
-    tapered[i] = w * (signal[i] - meanZ);
-    taperSum += w;
-    variance += std::norm(signal[i] - meanZ);
-  }
+  const TaperedSignal t = taperedSignal(signal);
+  const std::vector<std::complex<double>>& tapered = t.samples;
   // A constant signal (a still point, a straight line's velocity) has no
   // tone: its variance is round-off of the mean.
-  const double roundOff = 1e-24 * (std::norm(meanZ) + 1e-300) * static_cast<double>(n);
-  if (!(variance > roundOff) || !std::isfinite(variance)) return tone;
+  const double roundOff = 1e-24 * (std::norm(t.mean) + 1e-300) * static_cast<double>(n);
+  if (!(t.variance > roundOff) || !std::isfinite(t.variance)) return tone;
 
-  // Grid: +fMin .. +fMax, and the same negated when both signs are searched.
-  std::vector<double> freqs, powers;
   const auto steps = static_cast<std::size_t>(std::floor((fMax - fMin) / df));
-  for (std::size_t k = 0; k <= steps; ++k) {
-    const double f = fMin + static_cast<double>(k) * df;
-    freqs.push_back(f);
-    if (search.bothSigns && f > 0.0) freqs.push_back(-f);
-  }
-  std::sort(freqs.begin(), freqs.end());
-  powers.resize(freqs.size());
-  if (search.directSum) {
+  const std::vector<double> freqs = frequencyGrid(fMin, df, steps, search.bothSigns);
+  std::vector<double> powers(freqs.size());
+  if (search.directSum)
     periodogramPowers(tapered, freqs, dt, powers);
-  } else {
-    // By FFT (Periodogram.h): the grid is fMin + k df on each side, and
-    // df = 1 / (oversampling T) makes it the bins of a transform of
-    // oversampling x n points. Sorted, the negative side comes first,
-    // highest |f| first.
-    const std::size_t fftLength = static_cast<std::size_t>(std::max(search.oversampling, 1)) * n;
-    std::vector<double> side(steps + 1);
-    fftGridPowers(tapered, dt, fftLength, fMin, +1, steps + 1, side);
-    const std::size_t negatives = freqs.size() - (steps + 1);
-    for (std::size_t k = 0; k <= steps; ++k) powers[negatives + k] = side[k];
-    if (negatives > 0) {
-      fftGridPowers(tapered, dt, fftLength, fMin, -1, steps + 1, side);
-      const std::size_t first = fMin > 0.0 ? 0 : 1;  // f = 0 is on the positive side only
-      for (std::size_t k = first; k <= steps; ++k) powers[negatives - 1 - (k - first)] = side[k];
-    }
-  }
+  else
+    fftPowers(tapered, dt, search, fMin, steps, powers);
   std::size_t best = strongestInteriorMaximum(freqs, powers, df);
   if (best == freqs.size()) return tone;
   if (!search.directSum) {
-    // The FFT's powers differ from the direct sum's in their last bits:
-    // where maxima are that close, the direct sum decides, as it always did.
-    const double top = powers[best];
-    std::vector<std::size_t> close;
-    for (std::size_t i = 1; i + 1 < freqs.size(); ++i)
-      if (powers[i] >= top * (1.0 - kNearTie)) close.push_back(i);
-    for (std::size_t i : close)
-      for (std::size_t j : {i - 1, i, i + 1}) powers[j] = power(tapered, freqs[j], dt);
-    best = strongestInteriorMaximum(freqs, powers, df);
+    best = settleNearTies(tapered, dt, df, freqs, powers, best);
     if (best == freqs.size()) return tone;
   }
   double f = freqs[best], peak = powers[best];
@@ -207,8 +238,8 @@ Tone dominantTone(std::span<const std::complex<double>> signal, double dt, const
   tone.frequency = f;
   // A real signal's cosine splits into +f and -f: its amplitude is twice the
   // exponential's and it holds a share of A^2 / 2 of the power.
-  const double exponential = std::sqrt(peak) / taperSum;
-  const double meanPower = variance / static_cast<double>(n);
+  const double exponential = std::sqrt(peak) / t.taperSum;
+  const double meanPower = t.variance / static_cast<double>(n);
   tone.amplitude = search.bothSigns ? exponential : 2.0 * exponential;
   tone.share = std::min(1.0, (search.bothSigns ? 1.0 : 2.0) * exponential * exponential / meanPower);
   return tone;

@@ -50,6 +50,57 @@ std::size_t skipLong(std::string_view s, std::size_t i, int level, int& line) {
   return i;
 }
 
+// The end of a short string whose text starts at i (after its opening
+// quote): the index of the closing quote, of a line break the string may not
+// hold, or s.size(). Escapes are skipped; line counts the lines they span.
+std::size_t shortStringEnd(std::string_view s, std::size_t i, char quote, int& line) {
+  while (i < s.size() && s[i] != quote && s[i] != '\n') {
+    if (s[i] == '\\' && i + 1 < s.size()) {
+      // "\z" skips the white space after it, line breaks included; a
+      // backslash before a line break continues the string on the next
+      // line. Both move the line count on (issue 33: after a "\z" every
+      // error pointed at line 1).
+      if (s[i + 1] == 'z') {
+        i += 2;
+        while (i < s.size() && std::isspace(static_cast<unsigned char>(s[i]))) line += s[i++] == '\n';
+        continue;
+      }
+      if (s[i + 1] == '\n' || s[i + 1] == '\r') {
+        ++line;
+        i += 2;
+        if (i < s.size() && (s[i] == '\n' || s[i] == '\r') && s[i] != s[i - 1]) ++i;  // \r\n or \n\r
+        continue;
+      }
+      i += 2;
+      continue;
+    }
+    ++i;
+  }
+  return i;
+}
+
+// The end of a numeral starting at i (hex, exponents with their signs).
+std::size_t numberEnd(std::string_view s, std::size_t i) {
+  std::size_t j = i;
+  while (j < s.size()) {
+    const char d = s[j];
+    const bool exponentSign = (d == '+' || d == '-') && j > i && std::strchr("eEpP", s[j - 1]) != nullptr;
+    if (!(std::isalnum(static_cast<unsigned char>(d)) || d == '.' || exponentSign)) break;
+    ++j;
+  }
+  return j;
+}
+
+// Operators: the two- and three-character ones matter only so that "=="
+// is never read as "=".
+std::size_t operatorLength(std::string_view s, std::size_t i) {
+  static const char* const kLong[] = {"...", "==", "~=", "<=", ">=", "//", "::", "<<", ">>", ".."};
+  std::size_t length = 1;
+  for (const char* candidate : kLong)
+    if (s.substr(i, std::strlen(candidate)) == candidate) { length = std::strlen(candidate); break; }
+  return length;
+}
+
 std::vector<Token> tokenize(std::string_view s) {
   std::vector<Token> out;
   int line = 1;
@@ -79,28 +130,7 @@ std::vector<Token> tokenize(std::string_view s) {
     if (c == '"' || c == '\'') {
       const int startLine = line;
       const std::size_t start = ++i;
-      while (i < s.size() && s[i] != c && s[i] != '\n') {
-        if (s[i] == '\\' && i + 1 < s.size()) {
-          // "\z" skips the white space after it, line breaks included; a
-          // backslash before a line break continues the string on the next
-          // line. Both move the line count on (issue 33: after a "\z" every
-          // error pointed at line 1).
-          if (s[i + 1] == 'z') {
-            i += 2;
-            while (i < s.size() && std::isspace(static_cast<unsigned char>(s[i]))) line += s[i++] == '\n';
-            continue;
-          }
-          if (s[i + 1] == '\n' || s[i + 1] == '\r') {
-            ++line;
-            i += 2;
-            if (i < s.size() && (s[i] == '\n' || s[i] == '\r') && s[i] != s[i - 1]) ++i;  // \r\n or \n\r
-            continue;
-          }
-          i += 2;
-          continue;
-        }
-        ++i;
-      }
+      i = shortStringEnd(s, i, c, line);
       out.push_back({Kind::String, s.substr(start, std::min(i, s.size()) - start), startLine});
       ++i;
       continue;
@@ -113,23 +143,12 @@ std::vector<Token> tokenize(std::string_view s) {
       continue;
     }
     if (std::isdigit(static_cast<unsigned char>(c)) || (c == '.' && i + 1 < s.size() && std::isdigit(static_cast<unsigned char>(s[i + 1])))) {
-      std::size_t j = i;
-      while (j < s.size()) {
-        const char d = s[j];
-        const bool exponentSign = (d == '+' || d == '-') && j > i && std::strchr("eEpP", s[j - 1]) != nullptr;
-        if (!(std::isalnum(static_cast<unsigned char>(d)) || d == '.' || exponentSign)) break;
-        ++j;
-      }
+      const std::size_t j = numberEnd(s, i);
       out.push_back({Kind::Number, s.substr(i, j - i), line});
       i = j;
       continue;
     }
-    // Operators: the two- and three-character ones matter only so that "=="
-    // is never read as "=".
-    static const char* const kLong[] = {"...", "==", "~=", "<=", ">=", "//", "::", "<<", ">>", ".."};
-    std::size_t length = 1;
-    for (const char* candidate : kLong)
-      if (s.substr(i, std::strlen(candidate)) == candidate) { length = std::strlen(candidate); break; }
+    const std::size_t length = operatorLength(s, i);
     out.push_back({Kind::Op, s.substr(i, length), line});
     i += length;
   }

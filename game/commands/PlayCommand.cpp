@@ -44,26 +44,76 @@ double processCpuSeconds() {
          static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec) * 1e-6;
 }
 
-int autoplay(App& app, const PlayOptions& o) {
-  app.screens().push(std::make_unique<PlayScreen>(app, std::make_unique<FreePlay>(app, o.level, o.watch)));
+// What an autoplay saw of the window and the trial, for its report.
+struct AutoplayRecord {
   std::vector<double> frameSeconds;
-  frameSeconds.reserve(static_cast<std::size_t>(o.autoplay * 2000) + 16);
-  const auto start = std::chrono::steady_clock::now();
-  const double cpuAtStart = processCpuSeconds();
-  auto last = start;
-  ScriptedMouse mouse;
   haptics::LoopTimingSummary timing;
   std::string engagement = "never engaged";
   std::string scheduling, stops = "none";
   std::uint64_t plans = 0, stopCount = 0;
   std::string autopilotNote, outcome = "the trial was still running";
-  double wall = 0.0;
+  double wall = 0.0, cpu = 0.0;
+};
+
+// How the trial ended, or where an unfinished one stands: how far from the
+// target, how many in.
+std::string trialStanding(PlaySession& session, PlayScreen& play) {
+  const script::TaskJudge& judge = session.judging().judge();
+  char line[160];
+  if (judge.finished()) {
+    std::snprintf(line, sizeof line, "%s at %.2f s (%.*s)", script::trialOutcomeName(judge.outcome()),
+                  judge.finishTime(), static_cast<int>(judge.reason().size()), judge.reason().data());
+    return line;
+  }
+  const HudReadout& r = play.hud().readout();
+  if (r.distanceToTarget >= 0.0)
+    std::snprintf(line, sizeof line, "the trial was still running at %.1f s (%.1f mm to the target, %d of %d in their bands)",
+                  r.time, r.distanceToTarget * 1e3, r.componentsInside, r.components);
+  else
+    std::snprintf(line, sizeof line, "the trial was still running at %.1f s (%d of %d in their bands)", r.time,
+                  r.componentsInside, r.components);
+  return line;
+}
+
+// The report's lines; frameSeconds sorted and not empty.
+void printAutoplay(App& app, const PlayOptions& o, const AutoplayRecord& a) {
+  const std::vector<double>& frameSeconds = a.frameSeconds;
+  const double median = frameSeconds[frameSeconds.size() / 2];
+  std::printf("%sautoplay %.1f s: %zu frames, median %.1f fps (p90 frame %.1f ms), %s, screen %s\n", kPrefix, a.wall,
+              frameSeconds.size(), 1.0 / median, frameSeconds[frameSeconds.size() * 9 / 10] * 1e3, a.engagement.c_str(),
+              app.topScreen());
+  std::printf("%scpu: %.1f s in %.1f s of wall time (%.0f %% of one core), frame cap %.0f fps\n", kPrefix, a.cpu, a.wall,
+              a.wall > 0.0 ? 100.0 * a.cpu / a.wall : 0.0, static_cast<double>(app.settings().frameCap));
+  const haptics::LoopTimingSummary& timing = a.timing;
+  std::printf("%sservo loop: %llu ticks, lateness p50 %.0f us, p99 %.0f us, p99.9 %.0f us, max %.0f us, "
+              "missed ticks %llu, stalls over the overrun limit %llu\n",
+              kPrefix, static_cast<unsigned long long>(timing.ticks), timing.latenessP50 * 1e6,
+              timing.latenessP99 * 1e6, timing.latenessP999 * 1e6, timing.latenessMax * 1e6,
+              static_cast<unsigned long long>(timing.missedTicks), static_cast<unsigned long long>(timing.stalls));
+  std::printf("%sservo thread: %s\n", kPrefix, a.scheduling.c_str());
+  std::printf("%ssafety stops: %llu (%s)\n", kPrefix, static_cast<unsigned long long>(a.stopCount), a.stops.c_str());
+  std::printf("%strial: %s\n", kPrefix, a.outcome.c_str());
+  if (o.watch)
+    std::printf("%sautopilot: %llu plans (%.0f per second)%s%s\n", kPrefix, static_cast<unsigned long long>(a.plans),
+                a.wall > 0.0 ? static_cast<double>(a.plans) / a.wall : 0.0, a.autopilotNote.empty() ? "" : "; ",
+                a.autopilotNote.c_str());
+}
+
+int autoplay(App& app, const PlayOptions& o) {
+  app.screens().push(std::make_unique<PlayScreen>(app, std::make_unique<FreePlay>(app, o.level, o.watch)));
+  AutoplayRecord a;
+  std::vector<double>& frameSeconds = a.frameSeconds;
+  frameSeconds.reserve(static_cast<std::size_t>(o.autoplay * 2000) + 16);
+  const auto start = std::chrono::steady_clock::now();
+  const double cpuAtStart = processCpuSeconds();
+  auto last = start;
+  ScriptedMouse mouse;
   std::vector<Screen*> visible;
   while (true) {
     const auto now = std::chrono::steady_clock::now();
-    wall = std::chrono::duration<double>(now - start).count();
-    if (wall >= o.autoplay) break;
-    if (!o.watch) mouse.step(app, wall);  // watching: the autopilot holds the proxy
+    a.wall = std::chrono::duration<double>(now - start).count();
+    if (a.wall >= o.autoplay) break;
+    if (!o.watch) mouse.step(app, a.wall);  // watching: the autopilot holds the proxy
     if (!app.frame()) break;
     // The play screen, also under a pause screen after a safety stop.
     PlayScreen* play = nullptr;
@@ -72,66 +122,32 @@ int autoplay(App& app, const PlayOptions& o) {
       if (auto* p = dynamic_cast<PlayScreen*>(s)) play = p;
     if (!play || !play->session()) break;  // the trial ended (the results screen replaced it)
     PlaySession& session = *play->session();
-    plans = session.autopilotPlans();
-    autopilotNote = session.autopilotNote();
-    const script::TaskJudge& judge = session.judging().judge();
-    if (judge.finished()) {
-      char line[160];
-      std::snprintf(line, sizeof line, "%s at %.2f s (%.*s)", script::trialOutcomeName(judge.outcome()),
-                    judge.finishTime(), static_cast<int>(judge.reason().size()), judge.reason().data());
-      outcome = line;
-    } else {
-      // Where an unfinished trial stands: how far from the target, how many in.
-      const HudReadout& r = play->hud().readout();
-      char line[160];
-      if (r.distanceToTarget >= 0.0)
-        std::snprintf(line, sizeof line, "the trial was still running at %.1f s (%.1f mm to the target, %d of %d in their bands)",
-                      r.time, r.distanceToTarget * 1e3, r.componentsInside, r.components);
-      else
-        std::snprintf(line, sizeof line, "the trial was still running at %.1f s (%d of %d in their bands)", r.time,
-                      r.componentsInside, r.components);
-      outcome = line;
-    }
-    if (session.snapshot().engagement == haptics::Engagement::Engaged) engagement = "engaged";
-    timing = session.timing();
-    scheduling = session.realtimeNote();
+    a.plans = session.autopilotPlans();
+    a.autopilotNote = session.autopilotNote();
+    a.outcome = trialStanding(session, *play);
+    if (session.snapshot().engagement == haptics::Engagement::Engaged) a.engagement = "engaged";
+    a.timing = session.timing();
+    a.scheduling = session.realtimeNote();
     if (!session.stops().empty()) {
-      stopCount = session.stops().size();
+      a.stopCount = session.stops().size();
       char line[160];
       std::snprintf(line, sizeof line, "%s at %.2f s", haptics::safetyFaultName(session.stops().back().fault),
                     session.stops().back().time);
-      stops = line;
-      outcome = std::string("stopped for safety (") + line + ")";
+      a.stops = line;
+      a.outcome = std::string("stopped for safety (") + line + ")";
       break;  // nobody is there to take hold again
     }
     const auto after = std::chrono::steady_clock::now();
     if (app.frames() > 1) frameSeconds.push_back(std::chrono::duration<double>(after - last).count());
     last = after;
   }
-  const double cpu = processCpuSeconds() - cpuAtStart;
+  a.cpu = processCpuSeconds() - cpuAtStart;
   if (frameSeconds.empty()) {
     std::cerr << kPrefix << "no frames were drawn\n";
     return kExitFailure;
   }
   std::sort(frameSeconds.begin(), frameSeconds.end());
-  const double median = frameSeconds[frameSeconds.size() / 2];
-  std::printf("%sautoplay %.1f s: %zu frames, median %.1f fps (p90 frame %.1f ms), %s, screen %s\n", kPrefix, wall,
-              frameSeconds.size(), 1.0 / median, frameSeconds[frameSeconds.size() * 9 / 10] * 1e3, engagement.c_str(),
-              app.topScreen());
-  std::printf("%scpu: %.1f s in %.1f s of wall time (%.0f %% of one core), frame cap %.0f fps\n", kPrefix, cpu, wall,
-              wall > 0.0 ? 100.0 * cpu / wall : 0.0, static_cast<double>(app.settings().frameCap));
-  std::printf("%sservo loop: %llu ticks, lateness p50 %.0f us, p99 %.0f us, p99.9 %.0f us, max %.0f us, "
-              "missed ticks %llu, stalls over the overrun limit %llu\n",
-              kPrefix, static_cast<unsigned long long>(timing.ticks), timing.latenessP50 * 1e6,
-              timing.latenessP99 * 1e6, timing.latenessP999 * 1e6, timing.latenessMax * 1e6,
-              static_cast<unsigned long long>(timing.missedTicks), static_cast<unsigned long long>(timing.stalls));
-  std::printf("%sservo thread: %s\n", kPrefix, scheduling.c_str());
-  std::printf("%ssafety stops: %llu (%s)\n", kPrefix, static_cast<unsigned long long>(stopCount), stops.c_str());
-  std::printf("%strial: %s\n", kPrefix, outcome.c_str());
-  if (o.watch)
-    std::printf("%sautopilot: %llu plans (%.0f per second)%s%s\n", kPrefix, static_cast<unsigned long long>(plans),
-                wall > 0.0 ? static_cast<double>(plans) / wall : 0.0, autopilotNote.empty() ? "" : "; ",
-                autopilotNote.c_str());
+  printAutoplay(app, o, a);
   return kExitOk;
 }
 

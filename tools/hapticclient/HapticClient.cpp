@@ -109,20 +109,39 @@ void finishSteps(const StepWatch& steps, ClientSummary& s) {
   s.stepMax = v.empty() ? 0.0 : *std::max_element(v.begin(), v.end());
 }
 
+// The bridge's address from --host and --port, and the socket bound to any
+// free port (on loopback when the bridge is there); "" or the error.
+std::string openSocket(const ClientOptions& o, haptics::UdpSocket& socket, UdpEndpoint& bridge) {
+  bridge.port = o.port;
+  if (!haptics::parseIpv4(o.host, bridge.address))
+    return "--host '" + o.host + "' is not an IPv4 address like 127.0.0.1";
+  UdpEndpoint local;  // any free port, on loopback when the bridge is there
+  local.address = haptics::isLoopback(bridge.address) ? 0x7F000001u : 0u;
+  return socket.bind(local);
+}
+
+// The k-th state sent (sequence k + 1) at wall time t: the hand's reading,
+// moved by the step's half (the --step square wave on x), and the device's
+// fault from --fault-at on.
+udp::StateMessage stateMessage(const ClientOptions& o, haptics::DeviceReading r, int half, double t, std::int64_t now,
+                               std::uint64_t k) {
+  r.position.x() += (half % 2 == 0 ? -0.5 : 0.5) * o.step;
+  udp::StateMessage m;
+  m.sequence = static_cast<std::uint32_t>(k + 1);
+  m.timestampNs = static_cast<std::uint64_t>(now);
+  m.position = {r.position.x(), r.position.y(), r.position.z()};
+  m.velocity = {r.velocity.x(), r.velocity.y(), r.velocity.z()};
+  m.deviceStatus = o.faultAt >= 0.0 && t >= o.faultAt ? 1 : 0;
+  return m;
+}
+
 }  // namespace
 
 ClientSummary runClient(const ClientOptions& o, const std::atomic<bool>& stop) {
   ClientSummary s;
   UdpEndpoint bridge;
-  bridge.port = o.port;
-  if (!haptics::parseIpv4(o.host, bridge.address)) {
-    s.error = "--host '" + o.host + "' is not an IPv4 address like 127.0.0.1";
-    return s;
-  }
   haptics::UdpSocket socket;
-  UdpEndpoint local;  // any free port, on loopback when the bridge is there
-  local.address = haptics::isLoopback(bridge.address) ? 0x7F000001u : 0u;
-  s.error = socket.bind(local);
+  s.error = openSocket(o, socket, bridge);
   if (!s.error.empty()) return s;
 
   if (o.realtimePriority > 0)
@@ -152,15 +171,8 @@ ClientSummary runClient(const ClientOptions& o, const std::atomic<bool>& stop) {
       }
       // The hand lives on wall time, as a real one does: a client that was
       // held up finds its hand where the intent has gone meanwhile.
-      haptics::DeviceReading r = hand.read(t);
       const int half = o.step > 0.0 ? static_cast<int>(std::floor(2.0 * t / o.stepPeriod)) : 0;
-      r.position.x() += (half % 2 == 0 ? -0.5 : 0.5) * o.step;
-      udp::StateMessage m;
-      m.sequence = static_cast<std::uint32_t>(k + 1);
-      m.timestampNs = static_cast<std::uint64_t>(now);
-      m.position = {r.position.x(), r.position.y(), r.position.z()};
-      m.velocity = {r.velocity.x(), r.velocity.y(), r.velocity.z()};
-      m.deviceStatus = o.faultAt >= 0.0 && t >= o.faultAt ? 1 : 0;
+      const udp::StateMessage m = stateMessage(o, hand.read(t), half, t, now, k);
       if (!within(t, o.pauseAt, o.pauseFor)) {
         OutgoingLink::Datagram d{};
         udp::encodeState(m, d.data());

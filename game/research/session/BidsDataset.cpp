@@ -210,6 +210,88 @@ std::vector<fs::path> sessionFolders(const fs::path& input) {
   return found;
 }
 
+namespace {
+
+// A trial read and named, to be written once every trial is.
+struct PlannedTrial {
+  record::Recording recording;
+  fs::path csv;
+  std::string stem;
+  Entities entities;
+  ParticipantFacts facts;
+  std::string stageTimes;
+};
+
+// The participant's group, block order and lab columns from the session's
+// manifest; without a readable manifest the participant's row says n/a.
+ParticipantFacts sessionFactsOf(const fs::path& session) {
+  ParticipantFacts sessionFacts;
+  try {
+    const SessionManifest m = SessionManifest::fromJson(
+        record::readWholeFile(session / "session.json", files::kSessionManifest), (session / "session.json").string());
+    sessionFacts = {m.group, m.blockOrder, m.participantInfo};
+  } catch (const std::exception&) {
+    // Without a readable manifest the participant's row says n/a.
+  }
+  return sessionFacts;
+}
+
+// The session's trial files (samples), sorted; a sidecar whose samples are
+// missing is left out, and said so in the report.
+std::vector<fs::path> trialFilesOf(const fs::path& session, BidsDatasetReport& report) {
+  std::error_code ec;
+  std::vector<fs::path> trials;
+  for (const auto& entry : fs::directory_iterator(session, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind("trial-", 0) != 0) continue;
+    if (entry.path().extension() == ".csv") {
+      trials.push_back(entry.path());
+    } else if (entry.path().extension() == ".json") {
+      fs::path csv = entry.path();
+      csv.replace_extension(".csv");
+      if (!fs::exists(csv, ec)) report.leftOut.push_back(entry.path().string() + ": its samples (" +
+                                                         csv.filename().string() + ") are missing");
+    }
+  }
+  std::sort(trials.begin(), trials.end());
+  return trials;
+}
+
+// Every finished trial of one session read and named into `planned`; one
+// that would land on the files of another (`taken`: stem -> its trial) is
+// refused, one that cannot be read or did not finish left out.
+void planSession(const fs::path& session, BidsDatasetReport& report, std::vector<PlannedTrial>& planned,
+                 std::map<std::string, fs::path>& taken) {
+  const ParticipantFacts sessionFacts = sessionFactsOf(session);
+  const std::map<std::string, std::string> stageTimes = stageTimesOf(session);
+  for (const fs::path& csv : trialFilesOf(session, report)) {
+    PlannedTrial p;
+    p.csv = csv;
+    try {
+      p.recording = record::RecordingReader::load(csv);
+      if (!p.recording.status.complete || !p.recording.status.end || p.recording.truncatedTail) {
+        report.leftOut.push_back(csv.string() + ": the trial did not finish (no outcome in its sidecar)");
+        continue;
+      }
+      p.stem = record::BidsExport::stem(p.recording);
+    } catch (const std::exception& e) {
+      report.leftOut.push_back(csv.string() + ": " + e.what());
+      continue;
+    }
+    p.entities = entitiesOf(p.stem);
+    p.facts = sessionFacts;
+    if (const auto found = stageTimes.find(csv.stem().string()); found != stageTimes.end()) p.stageTimes = found->second;
+    const auto [at, fresh] = taken.emplace(p.stem, csv);
+    if (!fresh)
+      throw BidsInputError(csv.string() + " and " + at->second.string() + " would both be " + p.stem +
+                           " (BIDS labels keep letters and digits only): export them to separate datasets, or "
+                           "give the participants or sessions ids that differ in letters or digits");
+    planned.push_back(std::move(p));
+  }
+}
+
+}  // namespace
+
 BidsDatasetReport writeBidsDataset(const std::vector<fs::path>& sessions, const fs::path& out,
                                    const std::string& datasetName) {
   BidsDatasetReport report;
@@ -221,73 +303,19 @@ BidsDatasetReport writeBidsDataset(const std::vector<fs::path>& sessions, const 
   // Every trial read and named first, so that two that would land on the
   // same files (ids that differ only in characters BIDS labels drop, the
   // same session given twice) are refused before anything is written.
-  struct Planned {
-    record::Recording recording;
-    fs::path csv;
-    std::string stem;
-    Entities entities;
-    ParticipantFacts facts;
-    std::string stageTimes;
-  };
-  std::vector<Planned> planned;
+  std::vector<PlannedTrial> planned;
   std::map<std::string, fs::path> taken;  // stem -> the trial it came from
   std::set<fs::path> seen;
   for (const fs::path& session : sessions) {
     const fs::path canonical = fs::weakly_canonical(session, ec);
     if (!seen.insert(ec ? session : canonical).second) continue;  // the same folder given twice
-    ParticipantFacts sessionFacts;
-    try {
-      const SessionManifest m = SessionManifest::fromJson(
-          record::readWholeFile(session / "session.json", files::kSessionManifest), (session / "session.json").string());
-      sessionFacts = {m.group, m.blockOrder, m.participantInfo};
-    } catch (const std::exception&) {
-      // Without a readable manifest the participant's row says n/a.
-    }
-    const std::map<std::string, std::string> stageTimes = stageTimesOf(session);
-    std::vector<fs::path> trials;
-    for (const auto& entry : fs::directory_iterator(session, ec)) {
-      const std::string name = entry.path().filename().string();
-      if (name.rfind("trial-", 0) != 0) continue;
-      if (entry.path().extension() == ".csv") {
-        trials.push_back(entry.path());
-      } else if (entry.path().extension() == ".json") {
-        fs::path csv = entry.path();
-        csv.replace_extension(".csv");
-        if (!fs::exists(csv, ec)) report.leftOut.push_back(entry.path().string() + ": its samples (" +
-                                                           csv.filename().string() + ") are missing");
-      }
-    }
-    std::sort(trials.begin(), trials.end());
-    for (const fs::path& csv : trials) {
-      Planned p;
-      p.csv = csv;
-      try {
-        p.recording = record::RecordingReader::load(csv);
-        if (!p.recording.status.complete || !p.recording.status.end || p.recording.truncatedTail) {
-          report.leftOut.push_back(csv.string() + ": the trial did not finish (no outcome in its sidecar)");
-          continue;
-        }
-        p.stem = record::BidsExport::stem(p.recording);
-      } catch (const std::exception& e) {
-        report.leftOut.push_back(csv.string() + ": " + e.what());
-        continue;
-      }
-      p.entities = entitiesOf(p.stem);
-      p.facts = sessionFacts;
-      if (const auto found = stageTimes.find(csv.stem().string()); found != stageTimes.end()) p.stageTimes = found->second;
-      const auto [at, fresh] = taken.emplace(p.stem, csv);
-      if (!fresh)
-        throw BidsInputError(csv.string() + " and " + at->second.string() + " would both be " + p.stem +
-                             " (BIDS labels keep letters and digits only): export them to separate datasets, or "
-                             "give the participants or sessions ids that differ in letters or digits");
-      planned.push_back(std::move(p));
-    }
+    planSession(session, report, planned, taken);
   }
   fs::create_directories(out, ec);
   if (ec) throw record::RecordError(out.string() + ": cannot create: " + ec.message());
   std::set<std::string> participants;
   std::map<std::string, ParticipantFacts> facts;
-  for (const Planned& p : planned) {
+  for (const PlannedTrial& p : planned) {
     const fs::path dir = out / p.entities.subject / p.entities.session / "motion";
     record::BidsExport::write(p.recording, dir);
     record::writeFileAtomically(dir / (p.entities.eventsStem + "_events.tsv"), eventsTsv(p.recording, p.stageTimes));

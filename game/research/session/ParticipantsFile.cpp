@@ -42,9 +42,11 @@ const ParticipantRow* ParticipantsTable::find(const std::string& id) const {
   return nullptr;
 }
 
-ParticipantsTable readParticipantsFile(const std::string& path, const script::ProtocolDef& protocol) {
-  ParticipantsTable table;
-  table.source = path;
+namespace {
+
+// The file's lines without their line ends ('\n' or "\r\n"), the trailing
+// empty lines dropped.
+std::vector<std::string> participantsFileLines(const std::string& path) {
   std::string text;
   try {
     text = record::readWholeFile(path, files::kParticipants);
@@ -62,22 +64,35 @@ ParticipantsTable readParticipantsFile(const std::string& path, const script::Pr
   }
   while (!lines.empty() && lines.back().empty()) lines.pop_back();
   if (lines.empty()) badInput(path + ": empty; the first line names the columns, starting with participant_id");
+  return lines;
+}
+
+std::string columnAt(const std::string& path, int line, const std::string& column) {
+  return path + ":" + std::to_string(line) + ": column '" + column + "': ";
+}
+
+// Where the header puts the columns hemiroll reads (-1: absent).
+struct KnownColumns {
+  int group = -1, order = -1;
+};
+
+// The header's columns into table.header, each name checked; the group and
+// order columns held to the protocol's way of assigning.
+KnownColumns readHeader(const std::string& firstLine, const script::ProtocolDef& protocol, ParticipantsTable& table) {
+  const std::string& path = table.source;
   const bool fromFile = protocol.assignment == script::Assignment::ParticipantsFile;
-  table.header = splitTabs(lines[0]);
-  const auto where = [&](int line, const std::string& column) {
-    return path + ":" + std::to_string(line) + ": column '" + column + "': ";
-  };
+  table.header = splitTabs(firstLine);
   // A file saved by a spreadsheet may start with a byte-order mark: not part
   // of the first column's name.
   if (table.header[0].rfind("\xEF\xBB\xBF", 0) == 0) table.header[0].erase(0, 3);
   if (table.header[0] != "participant_id")
-    badInput(where(1, table.header[0]) + "the first column must be participant_id (tab-separated columns)");
-  int groupColumn = -1, orderColumn = -1;
+    badInput(columnAt(path, 1, table.header[0]) + "the first column must be participant_id (tab-separated columns)");
+  KnownColumns known;
   for (std::size_t c = 0; c < table.header.size(); ++c) {
     const std::string& name = table.header[c];
     if (name.empty()) badInput(path + ":1: column " + std::to_string(c + 1) + " has no name");
     if (std::count(table.header.begin(), table.header.end(), name) > 1)
-      badInput(where(1, name) + "named twice");
+      badInput(columnAt(path, 1, name) + "named twice");
     // The names hemiroll writes beside the lab's columns (BIDS participants,
     // analyze's trials.csv): a lab column so named would clash with them.
     static const char* const kReserved[] = {"participant", "session", "block_order", "assigned_by", "trial",
@@ -85,63 +100,80 @@ ParticipantsTable readParticipantsFile(const std::string& path, const script::Pr
                                             "condition", "condition_label", "outcome", "success", "time_s",
                                             "score", "level", "level_file", "seed", "guidance"};
     if (std::find(std::begin(kReserved), std::end(kReserved), name) != std::end(kReserved))
-      badInput(where(1, name) + "a name hemiroll writes itself (in BIDS participants.tsv and analyze's trials.csv); "
+      badInput(columnAt(path, 1, name) + "a name hemiroll writes itself (in BIDS participants.tsv and analyze's trials.csv); "
                "rename the column (e.g. 'lab_" + name + "')");
-    if (name == "group") groupColumn = static_cast<int>(c);
-    if (name == "order") orderColumn = static_cast<int>(c);
+    if (name == "group") known.group = static_cast<int>(c);
+    if (name == "order") known.order = static_cast<int>(c);
   }
-  if (fromFile && groupColumn < 0)
+  if (fromFile && known.group < 0)
     badInput(path + ":1: no 'group' column; the protocol assigns groups from this file (assignment = "
                     "\"participants_file\"): add a group column with one of " + groupNames(protocol));
-  if (!fromFile && (groupColumn >= 0 || orderColumn >= 0))
-    badInput(where(1, groupColumn >= 0 ? "group" : "order") +
+  if (!fromFile && (known.group >= 0 || known.order >= 0))
+    badInput(columnAt(path, 1, known.group >= 0 ? "group" : "order") +
              "the protocol assigns groups and orders by arrival (assignment = \"balanced\"): remove the column, or "
              "give the protocol assignment = \"participants_file\"");
-  std::vector<int> perGroup(protocol.groups.size() + 1, 0);
-  for (std::size_t i = 1; i < lines.size(); ++i) {
-    const int lineNo = static_cast<int>(i) + 1;
-    if (lines[i].empty()) badInput(path + ":" + std::to_string(lineNo) + ": an empty line (remove it)");
-    const std::vector<std::string> cells = splitTabs(lines[i]);
-    if (cells.size() != table.header.size())
-      badInput(path + ":" + std::to_string(lineNo) + ": " + std::to_string(cells.size()) + " columns, the header has " +
-               std::to_string(table.header.size()) + " (columns are separated by tabs)");
-    ParticipantRow row;
-    row.line = lineNo;
-    row.id = cells[0];
-    if (!script::isFolderName(row.id))
-      badInput(where(lineNo, "participant_id") + "'" + row.id +
-               "' is not a participant id: use 1 to 64 letters, digits, '-' or '_' (the id given to --participant)");
-    if (const ParticipantRow* other = table.find(row.id))
-      badInput(where(lineNo, "participant_id") + "'" + row.id + "' is listed twice (also on line " +
-               std::to_string(other->line) + ")");
-    std::size_t groupIndex = protocol.groups.size();
-    if (groupColumn >= 0) {
-      row.group = cells[static_cast<std::size_t>(groupColumn)];
-      if (missing(row.group)) badInput(where(lineNo, "group") + "missing; one of " + groupNames(protocol));
-      const auto found = std::find_if(protocol.groups.begin(), protocol.groups.end(),
-                                      [&](const script::GroupDef& g) { return g.name == row.group; });
-      if (found == protocol.groups.end())
-        badInput(where(lineNo, "group") + "no group '" + row.group + "' in the protocol (its groups: " +
-                 groupNames(protocol) + ")");
-      groupIndex = static_cast<std::size_t>(found - protocol.groups.begin());
-    }
-    if (orderColumn >= 0) {
-      const std::string& text = cells[static_cast<std::size_t>(orderColumn)];
-      if (!missing(text)) {
-        int value = 0;
-        const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-        if (error != std::errc() || end != text.data() + text.size() || value < 1 || value > protocol.orderCount())
-          badInput(where(lineNo, "order") + "'" + text + "' is not a block order: a whole number from 1 to " +
-                   std::to_string(protocol.orderCount()) + " (the protocol's counterbalanced orders)");
-        row.order = value;
-      }
-    }
-    row.rankInGroup = ++perGroup[groupIndex];
-    for (std::size_t c = 1; c < cells.size(); ++c)
-      if (static_cast<int>(c) != groupColumn && static_cast<int>(c) != orderColumn)
-        row.columns.emplace_back(table.header[c], missing(cells[c]) ? std::string() : cells[c]);
-    table.rows.push_back(std::move(row));
+  return known;
+}
+
+// One participant's line (lineNo counts from 1), checked against the
+// protocol and the rows before it; perGroup counts the rows per group so far
+// (the last entry: no group column).
+ParticipantRow readRow(const std::string& line, int lineNo, KnownColumns known, const script::ProtocolDef& protocol,
+                       const ParticipantsTable& table, std::vector<int>& perGroup) {
+  const std::string& path = table.source;
+  if (line.empty()) badInput(path + ":" + std::to_string(lineNo) + ": an empty line (remove it)");
+  const std::vector<std::string> cells = splitTabs(line);
+  if (cells.size() != table.header.size())
+    badInput(path + ":" + std::to_string(lineNo) + ": " + std::to_string(cells.size()) + " columns, the header has " +
+             std::to_string(table.header.size()) + " (columns are separated by tabs)");
+  ParticipantRow row;
+  row.line = lineNo;
+  row.id = cells[0];
+  if (!script::isFolderName(row.id))
+    badInput(columnAt(path, lineNo, "participant_id") + "'" + row.id +
+             "' is not a participant id: use 1 to 64 letters, digits, '-' or '_' (the id given to --participant)");
+  if (const ParticipantRow* other = table.find(row.id))
+    badInput(columnAt(path, lineNo, "participant_id") + "'" + row.id + "' is listed twice (also on line " +
+             std::to_string(other->line) + ")");
+  std::size_t groupIndex = protocol.groups.size();
+  if (known.group >= 0) {
+    row.group = cells[static_cast<std::size_t>(known.group)];
+    if (missing(row.group)) badInput(columnAt(path, lineNo, "group") + "missing; one of " + groupNames(protocol));
+    const auto found = std::find_if(protocol.groups.begin(), protocol.groups.end(),
+                                    [&](const script::GroupDef& g) { return g.name == row.group; });
+    if (found == protocol.groups.end())
+      badInput(columnAt(path, lineNo, "group") + "no group '" + row.group + "' in the protocol (its groups: " +
+               groupNames(protocol) + ")");
+    groupIndex = static_cast<std::size_t>(found - protocol.groups.begin());
   }
+  if (known.order >= 0) {
+    const std::string& text = cells[static_cast<std::size_t>(known.order)];
+    if (!missing(text)) {
+      int value = 0;
+      const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+      if (error != std::errc() || end != text.data() + text.size() || value < 1 || value > protocol.orderCount())
+        badInput(columnAt(path, lineNo, "order") + "'" + text + "' is not a block order: a whole number from 1 to " +
+                 std::to_string(protocol.orderCount()) + " (the protocol's counterbalanced orders)");
+      row.order = value;
+    }
+  }
+  row.rankInGroup = ++perGroup[groupIndex];
+  for (std::size_t c = 1; c < cells.size(); ++c)
+    if (static_cast<int>(c) != known.group && static_cast<int>(c) != known.order)
+      row.columns.emplace_back(table.header[c], missing(cells[c]) ? std::string() : cells[c]);
+  return row;
+}
+
+}  // namespace
+
+ParticipantsTable readParticipantsFile(const std::string& path, const script::ProtocolDef& protocol) {
+  ParticipantsTable table;
+  table.source = path;
+  const std::vector<std::string> lines = participantsFileLines(path);
+  const KnownColumns known = readHeader(lines[0], protocol, table);
+  std::vector<int> perGroup(protocol.groups.size() + 1, 0);
+  for (std::size_t i = 1; i < lines.size(); ++i)
+    table.rows.push_back(readRow(lines[i], static_cast<int>(i) + 1, known, protocol, table, perGroup));
   return table;
 }
 

@@ -29,10 +29,21 @@ void frameFor(App& app, double seconds) {
   while (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < seconds) app.frame();
 }
 
-}  // namespace
+// A fresh scripted mouse stroking for that long (from its own start), a
+// frame after each step.
+void strokeFor(App& app, double seconds) {
+  ScriptedMouse mouse;
+  const auto start = std::chrono::steady_clock::now();
+  for (;;) {
+    const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (t >= seconds) break;
+    mouse.step(app, t);
+    app.frame();
+  }
+}
 
-std::vector<ScreenTourStop> runScreenTour(App& app, const ScreenTourDef& def) {
-  std::vector<ScreenTourStop> stops;
+// Title, settings and the level select, then def.level started.
+void tourMenus(App& app, const ScreenTourDef& def, std::vector<ScreenTourStop>& stops) {
   settle(app);
   stop(app, stops);  // title
 
@@ -56,15 +67,12 @@ std::vector<ScreenTourStop> runScreenTour(App& app, const ScreenTourDef& def) {
   }
   app.inject(platform::keyDownEvent("Return"));
   settle(app, 2);
+}
 
-  ScriptedMouse mouse;
-  const auto start = std::chrono::steady_clock::now();
-  for (;;) {
-    const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (t >= def.playSeconds) break;
-    mouse.step(app, t);
-    app.frame();
-  }
+// The trial played by the mouse, paused, quit to its results, and its
+// replay; back on the results screen.
+void tourTrial(App& app, const ScreenTourDef& def, std::vector<ScreenTourStop>& stops) {
+  strokeFor(app, def.playSeconds);
   stop(app, stops);  // play
 
   app.inject(platform::keyDownEvent("Escape"));
@@ -83,10 +91,12 @@ std::vector<ScreenTourStop> runScreenTour(App& app, const ScreenTourDef& def) {
   stop(app, stops);  // replay
   app.inject(platform::keyDownEvent("Escape"));
   settle(app);
-  if (!def.autopilot) return stops;
+}
 
-  // The autopilot: watched from the level select, then taken over with the
-  // hint shown (the green arrow: where it would put the proxy now).
+// The autopilot: watched from the level select, then taken over with the
+// hint shown (the green arrow: where it would put the proxy now); then the
+// level played again, and let go.
+void tourAutopilot(App& app, const ScreenTourDef& def, std::vector<ScreenTourStop>& stops) {
   app.inject(platform::keyDownEvent("Escape"));
   settle(app);
   app.inject(platform::keyDownEvent("A"));
@@ -95,14 +105,7 @@ std::vector<ScreenTourStop> runScreenTour(App& app, const ScreenTourDef& def) {
   stop(app, stops, "watch");
   app.inject(platform::keyDownEvent("Space"));  // take over
   app.inject(platform::keyDownEvent("H"));      // the hint
-  ScriptedMouse after;
-  const auto handed = std::chrono::steady_clock::now();
-  for (;;) {
-    const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - handed).count();
-    if (t >= 2.5) break;  // long enough for the mouse's circle to part from the autopilot's plan
-    after.step(app, t);
-    app.frame();
-  }
+  strokeFor(app, 2.5);  // long enough for the mouse's circle to part from the autopilot's plan
   stop(app, stops, "hint");
 
   // Playing again: the trial waits for the take-hold, and says so.
@@ -115,17 +118,19 @@ std::vector<ScreenTourStop> runScreenTour(App& app, const ScreenTourDef& def) {
   stop(app, stops, "start");
 
   // Letting go: the physics waits, and the screen says how to go on.
-  ScriptedMouse again;
-  const auto held = std::chrono::steady_clock::now();
-  for (;;) {
-    const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - held).count();
-    if (t >= 1.5) break;
-    again.step(app, t);
-    app.frame();
-  }
+  strokeFor(app, 1.5);
   app.inject(platform::keyDownEvent("Backspace"));
   settle(app, 4);
   stop(app, stops, "letgo");
+}
+
+}  // namespace
+
+std::vector<ScreenTourStop> runScreenTour(App& app, const ScreenTourDef& def) {
+  std::vector<ScreenTourStop> stops;
+  tourMenus(app, def, stops);
+  tourTrial(app, def, stops);
+  if (def.autopilot) tourAutopilot(app, def, stops);
   return stops;
 }
 
