@@ -27,7 +27,7 @@ int editDistance(std::string_view a, std::string_view b) {
   return row[b.size()];
 }
 
-std::string listOf(std::initializer_list<const char*> names) {
+std::string listOf(std::span<const char* const> names) {
   std::string out;
   for (const char* n : names) out += (out.empty() ? "" : ", ") + std::string(n);
   return out;
@@ -44,6 +44,10 @@ std::string bracketed(const std::string& inner) {
 std::string positionKey(long long position) { return bracketed(std::to_string(position)); }
 
 const char* nearestName(std::string_view name, std::initializer_list<const char*> allowed) {
+  return nearestName(name, std::span<const char* const>(allowed.begin(), allowed.size()));
+}
+
+const char* nearestName(std::string_view name, std::span<const char* const> allowed) {
   const char* best = nullptr;
   int bestDistance = 3;
   for (const char* candidate : allowed) {
@@ -57,6 +61,10 @@ const char* nearestName(std::string_view name, std::initializer_list<const char*
 }
 
 void rejectUnknownLevelKeys(const LuaTableReader& table, std::initializer_list<const char*> allowed) {
+  rejectUnknownLevelKeys(table, std::span<const char* const>(allowed.begin(), allowed.size()));
+}
+
+void rejectUnknownLevelKeys(const LuaTableReader& table, std::span<const char* const> allowed) {
   lua_State* L = table.state();
   std::vector<std::string> unknownNames;
   std::vector<std::string> unknownOthers;

@@ -10,6 +10,7 @@
 #include <array>
 #include <initializer_list>
 #include <optional>
+#include <span>
 #include <string>
 
 #include "engine/script/LuaTableReader.h"
@@ -18,6 +19,8 @@ namespace hemiroll::script {
 
 // Throws at the first unknown key in sorted order (path = that key).
 void rejectUnknownLevelKeys(const LuaTableReader& table, std::initializer_list<const char*> allowed);
+// The same for a list built at run time (ProtocolLoader's keys with the overrides).
+void rejectUnknownLevelKeys(const LuaTableReader& table, std::span<const char* const> allowed);
 
 std::optional<bool> readBool(const LuaTableReader& table, const char* key);
 // An integer-valued number in [lo, hi].
@@ -36,5 +39,6 @@ std::string bracketed(const std::string& inner);
 
 // The closest name in `allowed` within edit distance 2, or nullptr.
 const char* nearestName(std::string_view name, std::initializer_list<const char*> allowed);
+const char* nearestName(std::string_view name, std::span<const char* const> allowed);
 
 }  // namespace hemiroll::script

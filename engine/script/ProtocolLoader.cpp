@@ -8,6 +8,9 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <initializer_list>
+#include <iterator>
+#include <string>
 #include <optional>
 #include <vector>
 
@@ -121,6 +124,28 @@ GuidanceSpec readGuidance(const LuaTableReader& table) {
   return g;
 }
 
+// The keys of a trial override, the ones readOverrides reads: the one list
+// of them (a block's, a condition's and a group's change accept them all).
+constexpr const char* kOverrideKeys[] = {"method", "kr", "kv", "alpha", "time_limit", "guidance"};
+
+// A table's own keys, then the override keys, then `after`: the order a
+// refusal lists them in.
+std::vector<const char*> keysWithOverrides(std::initializer_list<const char*> own,
+                                           std::initializer_list<const char*> after = {}) {
+  std::vector<const char*> keys(own);
+  keys.insert(keys.end(), std::begin(kOverrideKeys), std::end(kOverrideKeys));
+  keys.insert(keys.end(), after);
+  return keys;
+}
+
+// "method, kr, kv, alpha, time_limit or guidance"
+std::string overrideKeysInWords() {
+  std::string words;
+  const std::size_t n = std::size(kOverrideKeys);
+  for (std::size_t i = 0; i < n; ++i) words += (i == 0 ? "" : i + 1 == n ? " or " : ", ") + std::string(kOverrideKeys[i]);
+  return words;
+}
+
 // method, kr, kv, alpha, time_limit, guidance of a block or a condition.
 TrialOverrides readOverrides(const LuaTableReader& table) {
   TrialOverrides o;
@@ -161,7 +186,7 @@ LuaTableReader entry(const LuaTableReader& list, int i) {
 ConditionDef readCondition(const LuaTableReader& table, const TrialOverrides& blockOverrides,
                            const std::optional<std::string>& blockLevel, const LuaTableReader& block,
                            const LevelFolders& folders) {
-  rejectUnknownLevelKeys(table, {"label", "level", "method", "kr", "kv", "alpha", "time_limit", "guidance"});
+  rejectUnknownLevelKeys(table, keysWithOverrides({"label", "level"}));
   ConditionDef c;
   c.overrides = mergedOver(blockOverrides, readOverrides(table));  // the condition's over its block's
   const auto own = table.string("level");
@@ -190,8 +215,8 @@ BreakDef readBreak(const LuaTableReader& table) {
 }
 
 BlockDef readBlock(const LuaTableReader& block, int index, const LevelFolders& folders) {
-  rejectUnknownLevelKeys(block, {"name", "instructions", "label", "level", "conditions", "method", "kr", "kv", "alpha",
-                                 "time_limit", "guidance", "repetitions", "randomise", "break_after"});
+  rejectUnknownLevelKeys(block, keysWithOverrides({"name", "instructions", "label", "level", "conditions"},
+                                                  {"repetitions", "randomise", "break_after"}));
   BlockDef b;
   b.name = block.string("name").value_or("block " + std::to_string(index));
   if (b.name.empty()) block.fail("name", "must not be empty");
@@ -258,7 +283,7 @@ std::vector<GroupDef> readGroups(const LuaTableReader& list, const ProtocolDef& 
       const int n = listLength(*changes, "change");
       for (int k = 1; k <= n; ++k) {
         const LuaTableReader change = entry(*changes, k);
-        rejectUnknownLevelKeys(change, {"block", "method", "kr", "kv", "alpha", "time_limit", "guidance"});
+        rejectUnknownLevelKeys(change, keysWithOverrides({"block"}));
         const auto block = change.string("block");
         if (!block) change.fail("block", "missing; the name of the block this change applies to");
         GroupChange c;
@@ -268,7 +293,7 @@ std::vector<GroupDef> readGroups(const LuaTableReader& list, const ProtocolDef& 
             change.fail("block", "'" + *block + "' is changed twice in group '" + g.name +
                                      "'; put everything the group changes in that block into one change");
         c.overrides = readOverrides(change);
-        if (c.overrides.empty()) change.fail("", "changes nothing; give method, kr, kv, alpha, time_limit or guidance");
+        if (c.overrides.empty()) change.fail("", "changes nothing; give " + overrideKeysInWords());
         g.changes.push_back(std::move(c));
       }
     }

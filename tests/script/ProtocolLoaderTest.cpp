@@ -369,6 +369,22 @@ TEST_F(ProtocolLoaderTest, ReadsGroupsTheirChangesAndTheCounterbalancedBlocks) {
   EXPECT_EQ(def.orderCount(), 2);
 }
 
+// A key far from every name lists the keys the table takes: a block's, a
+// condition's and a group change's own keys with every trial override key
+// (one list in the loader), in the same order everywhere.
+TEST_F(ProtocolLoaderTest, UnknownKeysListTheTablesKeysWithTheOverrides) {
+  EXPECT_EQ(errorOf("return { experiment = 'e', blocks = { { level = 'mine.lua', zzzzzz = 1 } } }"),
+            "p.lua:1: blocks[1].zzzzzz: unknown key 'zzzzzz' (expected one of: name, instructions, label, level, "
+            "conditions, method, kr, kv, alpha, time_limit, guidance, repetitions, randomise, break_after)");
+  EXPECT_EQ(errorOf("return { experiment = 'e', blocks = { { level = 'mine.lua', conditions = { { zzzzzz = 1 } } } } }"),
+            "p.lua:1: blocks[1].conditions[1].zzzzzz: unknown key 'zzzzzz' (expected one of: label, level, method, kr, "
+            "kv, alpha, time_limit, guidance)");
+  EXPECT_EQ(errorOf("return { experiment = 'g', groups = { { name = 'x', changes = { { block = 'a', zzzzzz = 1 } } } },"
+                    " blocks = { { name = 'a', level = 'mine.lua' } } }"),
+            "p.lua:1: groups[1].changes[1].zzzzzz: unknown key 'zzzzzz' (expected one of: block, method, kr, kv, alpha, "
+            "time_limit, guidance)");
+}
+
 TEST_F(ProtocolLoaderTest, GroupAndCounterbalanceMistakesAreNamed) {
   const std::string blocks = " blocks = { { name = 'a', level = 'mine.lua' }, { name = 'b', level = 'mine.lua' } } }";
   EXPECT_EQ(errorOf("return { experiment = 'g', groups = { { name = 'x', changes = { { block = 'c', kr = 1 } } } }," + blocks),
