@@ -4,7 +4,7 @@
 // wherever they are read as geometry: what a bot observes
 // (script::BotObservation, which crosses threads as plain bytes, so the
 // fields are plain numbers) and what the autopilot plans around
-// (autopilot::Goal). A level declares its zones as script::ZoneDef (with a
+// (autopilot::Goal). A level declares its zones as task::ZoneDef (with a
 // name for messages); the judge's view of them is filled into this.
 
 #include <array>

@@ -3,7 +3,7 @@
 // be called. One rule set, so that a name accepted in one place is not
 // refused (or spelled differently) in another. (An experiment's or a
 // participant's id, which names a session folder, is checked where the
-// protocol is read: script::isFolderName.)
+// protocol is read: task::isFolderName.)
 
 #include <string>
 #include <string_view>

@@ -10,6 +10,7 @@
 #include <string_view>
 
 #include "engine/task/DeviceProfileDef.h"
+#include "engine/script/TaskNames.h"
 #include "engine/script/SandboxLimits.h"
 
 namespace hemiroll::script {

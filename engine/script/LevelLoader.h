@@ -17,6 +17,7 @@
 #include <utility>
 
 #include "engine/task/LevelDef.h"
+#include "engine/script/TaskNames.h"
 #include "engine/script/LevelScript.h"
 #include "engine/script/SandboxLimits.h"
 

@@ -35,6 +35,7 @@
 #include "engine/script/LuaSandbox.h"
 #include "engine/task/TaskJudge.h"
 #include "engine/task/TrialSummary.h"
+#include "engine/script/TaskNames.h"
 #include "engine/script/TrialTiming.h"
 
 namespace hemiroll::script {

@@ -6,6 +6,7 @@
 
 #include "engine/script/LuaTableReader.h"
 #include "engine/task/TaskDef.h"
+#include "engine/script/TaskNames.h"
 
 namespace hemiroll::script {
 

@@ -16,6 +16,7 @@
 #include <string_view>
 
 #include "engine/task/ProtocolDef.h"
+#include "engine/script/TaskNames.h"
 #include "engine/script/SandboxLimits.h"
 
 namespace hemiroll::script {

@@ -6,6 +6,7 @@
 #include "engine/physics/IntegratorRegistry.h"
 #include "engine/physics/RotationDrivenSystem.h"
 #include "engine/task/ConstantProxyTrajectory.h"
+#include "engine/script/TaskNames.h"
 #include "engine/script/DataFileLoader.h"
 #include "engine/script/LuaProxyTrajectory.h"
 #include "engine/script/LuaTableReader.h"

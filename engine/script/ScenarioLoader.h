@@ -14,6 +14,7 @@
 
 #include "engine/script/SandboxLimits.h"
 #include "engine/task/ScenarioDef.h"
+#include "engine/script/TaskNames.h"
 
 namespace hemiroll::script {
 

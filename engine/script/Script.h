@@ -45,6 +45,7 @@
 // interrupted; the memory cap still bounds what it can allocate.
 
 #include "engine/task/Task.h"
+#include "engine/script/TaskNames.h"
 #include "engine/script/BotObservation.h"
 #include "engine/script/BotScript.h"
 #include "engine/script/DataFileLoader.h"

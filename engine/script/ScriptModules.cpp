@@ -11,6 +11,7 @@
 
 #include "engine/files/CheckedFile.h"
 #include "engine/task/EngineRandom.h"
+#include "engine/script/TaskNames.h"
 
 namespace hemiroll::script {
 

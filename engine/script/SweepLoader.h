@@ -15,6 +15,7 @@
 
 #include "engine/script/SandboxLimits.h"
 #include "engine/task/SweepDef.h"
+#include "engine/script/TaskNames.h"
 
 namespace hemiroll::script {
 

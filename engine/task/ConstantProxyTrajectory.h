@@ -4,7 +4,7 @@
 
 #include "engine/physics/ForceDrivenSystem.h"
 
-namespace hemiroll::script {
+namespace hemiroll::task {
 
 class ConstantProxyTrajectory final : public physics::ProxyTrajectory {
  public:
@@ -15,4 +15,4 @@ class ConstantProxyTrajectory final : public physics::ProxyTrajectory {
   physics::ProxyPose pose_;  // velocity stays zero
 };
 
-}  // namespace hemiroll::script
+}  // namespace hemiroll::task

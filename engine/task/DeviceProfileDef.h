@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-namespace hemiroll::script {
+namespace hemiroll::task {
 
 struct DeviceProfileDef {
   std::string source;   // the file as named by the caller, for messages
@@ -30,4 +30,4 @@ struct DeviceProfileDef {
   double workspaceMarginM = 0.01;        // how far outside the box a position may be before a stop [m]
 };
 
-}  // namespace hemiroll::script
+}  // namespace hemiroll::task

@@ -7,7 +7,7 @@
 #include "engine/physics/ForceDrivenSystem.h"
 #include "engine/physics/RoseDrive.h"
 
-namespace hemiroll::script {
+namespace hemiroll::task {
 
 enum class DriveKind {
   Free,   // no external force: the 12-state model, mass point free on the face
@@ -34,4 +34,4 @@ inline const char* driveKindName(DriveKind kind) {
   return "?";
 }
 
-}  // namespace hemiroll::script
+}  // namespace hemiroll::task

@@ -1,6 +1,6 @@
 #include "engine/task/EngineRandom.h"
 
-namespace hemiroll::script {
+namespace hemiroll::task {
 
 namespace {
 
@@ -53,4 +53,4 @@ std::int64_t EngineRandom::integer(std::int64_t lo, std::int64_t hi) {
   return static_cast<std::int64_t>(static_cast<std::uint64_t>(lo) + r);
 }
 
-}  // namespace hemiroll::script
+}  // namespace hemiroll::task

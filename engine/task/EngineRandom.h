@@ -12,7 +12,7 @@
 
 #include <cstdint>
 
-namespace hemiroll::script {
+namespace hemiroll::task {
 
 class EngineRandom {
  public:
@@ -28,4 +28,4 @@ class EngineRandom {
   std::uint64_t s_[4] = {};
 };
 
-}  // namespace hemiroll::script
+}  // namespace hemiroll::task

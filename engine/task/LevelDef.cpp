@@ -1,6 +1,6 @@
 #include "engine/task/LevelDef.h"
 
-namespace hemiroll::script {
+namespace hemiroll::task {
 
 const char* medalName(Medal medal) {
   switch (medal) {
@@ -12,4 +12,4 @@ const char* medalName(Medal medal) {
   return "none";
 }
 
-}  // namespace hemiroll::script
+}  // namespace hemiroll::task

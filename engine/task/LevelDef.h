@@ -16,7 +16,7 @@
 #include "engine/physics/StateLayout.h"
 #include "engine/task/TaskDef.h"
 
-namespace hemiroll::script {
+namespace hemiroll::task {
 
 // Device -> scene, as haptics::WorkspaceMapping (which engine/script must not
 // know): p_scene = scale * p_device + offset.
@@ -102,4 +102,4 @@ struct LevelDef {
   std::string demoBot;
 };
 
-}  // namespace hemiroll::script
+}  // namespace hemiroll::task

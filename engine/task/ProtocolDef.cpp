@@ -4,7 +4,7 @@
 #include <charconv>
 #include <filesystem>
 
-namespace hemiroll::script {
+namespace hemiroll::task {
 
 physics::CouplingDef overriddenCoupling(const TrialOverrides& o, const physics::CouplingDef& level) {
   physics::CouplingDef c = level;
@@ -38,9 +38,9 @@ std::string couplingMethodName(const physics::CouplingDef& coupling) {
   return coupling.visualOnly ? "visual" : physics::forceMethodName(coupling.method);
 }
 
-}  // namespace hemiroll::script
+}  // namespace hemiroll::task
 
-namespace hemiroll::script {
+namespace hemiroll::task {
 
 double GuidanceSpec::fadeAt(int trialInBlock) const {
   if (fade.overTrials <= 1 || trialInBlock >= fade.overTrials) return fade.to;
@@ -48,9 +48,9 @@ double GuidanceSpec::fadeAt(int trialInBlock) const {
   return fade.from + (fade.to - fade.from) * progress;
 }
 
-}  // namespace hemiroll::script
+}  // namespace hemiroll::task
 
-namespace hemiroll::script {
+namespace hemiroll::task {
 
 namespace {
 
@@ -136,4 +136,4 @@ const GroupDef* ProtocolDef::group(const std::string& name) const {
   return nullptr;
 }
 
-}  // namespace hemiroll::script
+}  // namespace hemiroll::task

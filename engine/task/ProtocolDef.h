@@ -12,7 +12,7 @@
 
 #include "engine/task/LevelDef.h"
 
-namespace hemiroll::script {
+namespace hemiroll::task {
 
 // Haptic guidance of a condition (docs/PROTOCOLS.md "Guidance"): the kind
 // and its gains as the protocol writes them, and how it fades over the
@@ -151,4 +151,4 @@ struct ProtocolDef {
   const GroupDef* group(const std::string& name) const;
 };
 
-}  // namespace hemiroll::script
+}  // namespace hemiroll::task

@@ -4,7 +4,7 @@
 
 #include "engine/task/EngineRandom.h"
 
-namespace hemiroll::script {
+namespace hemiroll::task {
 
 const BlockDef& ProtocolPlan::blockOf(const ProtocolDef& protocol, const PlannedTrial& trial) {
   return protocol.blocks.at(static_cast<std::size_t>(trial.definedBlock - 1));
@@ -55,4 +55,4 @@ ProtocolPlan expandProtocol(const ProtocolDef& protocol, std::uint64_t seed, int
   return plan;
 }
 
-}  // namespace hemiroll::script
+}  // namespace hemiroll::task

@@ -18,7 +18,7 @@
 
 #include "engine/task/ProtocolDef.h"
 
-namespace hemiroll::script {
+namespace hemiroll::task {
 
 struct PlannedTrial {
   int index = 0;          // 1-based position in the session
@@ -48,4 +48,4 @@ struct ProtocolPlan {
 // generator is drawn in the file's block order.
 ProtocolPlan expandProtocol(const ProtocolDef& protocol, std::uint64_t seed, int order = 1);
 
-}  // namespace hemiroll::script
+}  // namespace hemiroll::task

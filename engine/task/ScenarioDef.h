@@ -9,7 +9,7 @@
 #include "engine/physics/StateLayout.h"
 #include "engine/task/DriveDef.h"
 
-namespace hemiroll::script {
+namespace hemiroll::task {
 
 struct ScenarioDef {
   std::string source;                // the file as named by the caller, for messages
@@ -27,4 +27,4 @@ struct ScenarioDef {
   std::optional<std::string> orientation; // "angles" or "quaternion" (physics::OrientationForm)
 };
 
-}  // namespace hemiroll::script
+}  // namespace hemiroll::task

@@ -1,6 +1,6 @@
 #include "engine/task/SweepDef.h"
 
-namespace hemiroll::script {
+namespace hemiroll::task {
 
 const std::array<SweepParamInfo, 8>& sweepParams() {
   static const std::array<SweepParamInfo, 8> kParams = {{
@@ -60,4 +60,4 @@ long long SweepDef::pointCount() const {
   return count;
 }
 
-}  // namespace hemiroll::script
+}  // namespace hemiroll::task

@@ -15,7 +15,7 @@
 #include "engine/physics/HemisphereParams.h"
 #include "engine/physics/RoseDrive.h"
 
-namespace hemiroll::script {
+namespace hemiroll::task {
 
 // The parameters an axis may vary: the hemisphere's and the rose's.
 enum class SweepParam { R, m_s, m_p, g, r1, r2, k, Omega };
@@ -80,4 +80,4 @@ struct SweepDef {
 // Largest grid a spec may describe: a larger one is a typo (a count of 1e6).
 inline constexpr long long kMaxSweepPoints = 1'000'000;
 
-}  // namespace hemiroll::script
+}  // namespace hemiroll::task

@@ -20,9 +20,8 @@
 // The build checks it (hemiroll_task links and includes no Lua and no
 // engine/script: cmake/HemirollLayers.cmake).
 //
-// Its names stay in namespace hemiroll::script, where they were before the
-// folder was split from engine/script (issue 29): renaming them would touch
-// some 500 qualified names in files other branches are changing.
+// Its names are in namespace hemiroll::task; the loaders of engine/script
+// see them unqualified (engine/script/TaskNames.h).
 
 #include "engine/task/ConstantProxyTrajectory.h"
 #include "engine/task/DeviceProfileDef.h"

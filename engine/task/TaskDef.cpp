@@ -1,6 +1,6 @@
 #include "engine/task/TaskDef.h"
 
-namespace hemiroll::script {
+namespace hemiroll::task {
 
 namespace {
 
@@ -46,4 +46,4 @@ std::optional<TaskVariableGroup> taskVariableGroup(std::string_view name) {
   return std::nullopt;
 }
 
-}  // namespace hemiroll::script
+}  // namespace hemiroll::task

@@ -13,7 +13,7 @@
 #include <string_view>
 #include <vector>
 
-namespace hemiroll::script {
+namespace hemiroll::task {
 
 // A judged quantity: the twelve slots of the 12-state (physics/StateLayout.h,
 // same order and names) and |omega|. psi is compared modulo 2 pi (the same
@@ -95,4 +95,4 @@ struct TaskDef {
   bool watchOnly() const { return stages.empty(); }
 };
 
-}  // namespace hemiroll::script
+}  // namespace hemiroll::task

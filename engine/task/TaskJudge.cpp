@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-namespace hemiroll::script {
+namespace hemiroll::task {
 
 namespace {
 
@@ -271,4 +271,4 @@ void TaskJudge::finish(TrialOutcome outcome, std::string reason, double time) {
   finishTime_ = time;
 }
 
-}  // namespace hemiroll::script
+}  // namespace hemiroll::task

@@ -36,7 +36,7 @@
 #include "engine/physics/StateLayout.h"
 #include "engine/task/TaskDef.h"
 
-namespace hemiroll::script {
+namespace hemiroll::task {
 
 enum class TrialOutcome : std::uint8_t { Running, Success, Failure };
 const char* trialOutcomeName(TrialOutcome outcome);  // "running", "success", "failure"
@@ -170,4 +170,4 @@ class TaskJudge {
   HoldBreak holdBreak_;
 };
 
-}  // namespace hemiroll::script
+}  // namespace hemiroll::task

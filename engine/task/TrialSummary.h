@@ -9,7 +9,7 @@
 
 #include "engine/task/TaskJudge.h"
 
-namespace hemiroll::script {
+namespace hemiroll::task {
 
 struct TrialSummary {
   TrialOutcome outcome = TrialOutcome::Running;  // `success` (boolean) in Lua
@@ -39,4 +39,4 @@ struct TrialSummary {
   std::vector<ComponentStatus> finalComponents;
 };
 
-}  // namespace hemiroll::script
+}  // namespace hemiroll::task

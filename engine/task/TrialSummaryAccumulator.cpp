@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-namespace hemiroll::script {
+namespace hemiroll::task {
 
 void TrialSummaryAccumulator::reset() { *this = TrialSummaryAccumulator(); }
 
@@ -70,4 +70,4 @@ TrialSummary TrialSummaryAccumulator::summary(const TaskJudge& judge) const {
   return s;
 }
 
-}  // namespace hemiroll::script
+}  // namespace hemiroll::task

@@ -7,7 +7,7 @@
 #include "engine/task/TaskJudge.h"
 #include "engine/task/TrialSummary.h"
 
-namespace hemiroll::script {
+namespace hemiroll::task {
 
 // The per-tick inputs beyond the judge's.
 struct EffortInput {
@@ -36,4 +36,4 @@ class TrialSummaryAccumulator {
   double bestMargin_ = -1e300;
 };
 
-}  // namespace hemiroll::script
+}  // namespace hemiroll::task

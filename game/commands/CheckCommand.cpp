@@ -101,10 +101,10 @@ CheckOptionsResult parseCheckOptions(const std::vector<std::string>& args) {
 }
 
 // The task's stage as the autopilot's goal: the same bands, by state slot.
-autopilot::Goal goalOf(const script::StageDef& stage) {
+autopilot::Goal goalOf(const task::StageDef& stage) {
   autopilot::Goal goal;
-  for (const script::TargetDef& t : stage.targets) {
-    if (t.variable == script::TaskVariable::omega_norm) {
+  for (const task::TargetDef& t : stage.targets) {
+    if (t.variable == task::TaskVariable::omega_norm) {
       goal.omegaNormSet = true;
       goal.omegaNormTarget = t.value;
       goal.omegaNormTolerance = t.tolerance;
@@ -119,7 +119,7 @@ autopilot::Goal goalOf(const script::StageDef& stage) {
   return goal;
 }
 
-std::string stageName(const script::StageDef& stage, std::size_t index) {
+std::string stageName(const task::StageDef& stage, std::size_t index) {
   return stage.name.empty() ? "stage " + std::to_string(index + 1)
                             : "stage " + std::to_string(index + 1) + " (\"" + stage.name + "\")";
 }
@@ -129,7 +129,7 @@ std::string stageName(const script::StageDef& stage, std::size_t index) {
 // desk device where no profile names one); nullptr: checked elsewhere.
 void checkLoadedLevel(script::LoadedLevel& level, const std::string& where, std::vector<std::string>& problems,
                       const haptics::DeviceSpec* device) {
-  const script::LevelDef& def = level.def;
+  const task::LevelDef& def = level.def;
   // A coupling stiffer than the device renders stably (the servo loop
   // refuses it when the trial starts).
   if (device != nullptr)
@@ -140,7 +140,7 @@ void checkLoadedLevel(script::LoadedLevel& level, const std::string& where, std:
   workspace.centre = physics::vec3Of(info.workspaceCentre);
   workspace.radius = info.workspaceRadius;
   for (std::size_t i = 0; i < def.task.stages.size(); ++i) {
-    const script::StageDef& stage = def.task.stages[i];
+    const task::StageDef& stage = def.task.stages[i];
     const std::string name = stageName(stage, i);
     if (stage.hold >= def.task.timeLimit) {
       char line[160];
@@ -158,8 +158,8 @@ void checkLoadedLevel(script::LoadedLevel& level, const std::string& where, std:
     for (const bool won : {true, false}) {
       // A summary a trial could end with: the last stage's components at
       // half their bands, paths and effort of a plausible trial.
-      script::TrialSummary s;
-      s.outcome = won ? script::TrialOutcome::Success : script::TrialOutcome::Failure;
+      task::TrialSummary s;
+      s.outcome = won ? task::TrialOutcome::Success : task::TrialOutcome::Failure;
       s.reason = won ? "target held" : "time limit reached";
       s.time = won ? 0.5 * def.task.timeLimit : def.task.timeLimit;
       s.ticks = static_cast<long long>(std::llround(s.time * 1000.0));
@@ -171,8 +171,8 @@ void checkLoadedLevel(script::LoadedLevel& level, const std::string& where, std:
       s.smoothness = 1.0;
       s.bestMargin = s.finalMargin = won ? 0.5 : -0.5;
       if (!def.task.stages.empty())
-        for (const script::TargetDef& t : def.task.stages.back().targets) {
-          script::ComponentStatus c;
+        for (const task::TargetDef& t : def.task.stages.back().targets) {
+          task::ComponentStatus c;
           c.variable = t.variable;
           c.target = t.value;
           c.tolerance = t.tolerance;
@@ -202,10 +202,10 @@ std::vector<std::string> checkProtocol(const std::string& path, const std::strin
   std::vector<std::string> problems;
   script::ProtocolLoadOptions loadOptions;
   loadOptions.levelsDir = levelsDir;
-  const script::ProtocolDef protocol = script::ProtocolLoader(loadOptions).loadFile(path);
-  (void)script::expandProtocol(protocol, protocol.seed);
+  const task::ProtocolDef protocol = script::ProtocolLoader(loadOptions).loadFile(path);
+  (void)task::expandProtocol(protocol, protocol.seed);
   // The study's device: every condition's coupling must be one it renders.
-  std::optional<script::DeviceProfileDef> device;
+  std::optional<task::DeviceProfileDef> device;
   if (!protocol.deviceProfile.empty()) {
     try {
       device = loadProtocolDeviceProfile(protocol.deviceProfile, path);
@@ -215,23 +215,23 @@ std::vector<std::string> checkProtocol(const std::string& path, const std::strin
   }
   // Every condition as written, and again as each group that changes its
   // block plays it.
-  std::vector<const script::GroupDef*> groups = {nullptr};
-  for (const script::GroupDef& g : protocol.groups) groups.push_back(&g);
-  for (const script::GroupDef* group : groups)
+  std::vector<const task::GroupDef*> groups = {nullptr};
+  for (const task::GroupDef& g : protocol.groups) groups.push_back(&g);
+  for (const task::GroupDef* group : groups)
     for (std::size_t b = 0; b < protocol.blocks.size(); ++b) {
-      const script::BlockDef& block = protocol.blocks[b];
-      if (group != nullptr && std::none_of(group->changes.begin(), group->changes.end(), [&](const script::GroupChange& c) {
+      const task::BlockDef& block = protocol.blocks[b];
+      if (group != nullptr && std::none_of(group->changes.begin(), group->changes.end(), [&](const task::GroupChange& c) {
             return c.block == static_cast<int>(b);
           }))
         continue;
       for (std::size_t c = 0; c < block.conditions.size(); ++c) {
-        const script::ConditionDef condition = script::conditionInGroup(block.conditions[c], static_cast<int>(b), group);
+        const task::ConditionDef condition = task::conditionInGroup(block.conditions[c], static_cast<int>(b), group);
         const std::string where = path + ": " + (group ? "group \"" + group->name + "\", " : std::string()) +
                                   "block " + std::to_string(b + 1) + " (\"" + block.name + "\"), condition " +
                                   std::to_string(c + 1) + " (\"" + condition.label + "\", " + condition.levelPath + ")";
         try {
           script::LevelLoadOptions options;
-          options.adjust = [&](script::LevelDef& level) { script::applyTrialOverrides(condition.overrides, level); };
+          options.adjust = [&](task::LevelDef& level) { task::applyTrialOverrides(condition.overrides, level); };
           script::LoadedLevel level = script::LevelLoader(options).loadFile(condition.levelPath);
           const haptics::DeviceSpec played = device ? deviceSpecOf(*device) : botDeviceSpec();
           // With a profile its refusal below says it in one sentence.

@@ -75,7 +75,7 @@ int runFiguresCommand(const std::vector<std::string>& args) {
     return kExitOk;
   }
 
-  script::ScenarioDef scenario;
+  task::ScenarioDef scenario;
   const std::string path = scenarioPath.value_or(defaultScenario());
   try {
     scenario = script::ScenarioLoader().loadFile(path);
@@ -83,8 +83,8 @@ int runFiguresCommand(const std::vector<std::string>& args) {
     std::cerr << "hemiroll figures: " << e.what() << "\n";
     return kExitUsage;
   }
-  if (scenario.drive.kind != script::DriveKind::Rose) {
-    std::cerr << "hemiroll figures: " << path << ": drive.kind is '" << script::driveKindName(scenario.drive.kind)
+  if (scenario.drive.kind != task::DriveKind::Rose) {
+    std::cerr << "hemiroll figures: " << path << ": drive.kind is '" << task::driveKindName(scenario.drive.kind)
               << "'; the paper's figures come from the rose drive\n";
     return kExitUsage;
   }

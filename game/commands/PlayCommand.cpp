@@ -58,10 +58,10 @@ struct AutoplayRecord {
 // How the trial ended, or where an unfinished one stands: how far from the
 // target, how many in.
 std::string trialStanding(PlaySession& session, PlayScreen& play) {
-  const script::TaskJudge& judge = session.judging().judge();
+  const task::TaskJudge& judge = session.judging().judge();
   char line[160];
   if (judge.finished()) {
-    std::snprintf(line, sizeof line, "%s at %.2f s (%.*s)", script::trialOutcomeName(judge.outcome()),
+    std::snprintf(line, sizeof line, "%s at %.2f s (%.*s)", task::trialOutcomeName(judge.outcome()),
                   judge.finishTime(), static_cast<int>(judge.reason().size()), judge.reason().data());
     return line;
   }

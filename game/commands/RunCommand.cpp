@@ -78,13 +78,13 @@ std::string resultLine(const RunOptions& o, const std::string& levelName, const 
                        const DeviceTrial* device = nullptr) {
   JsonLine line;
   line.add("level", o.levelPath).add("level_name", levelName).add("bot", device ? std::string() : o.botPath);
-  line.add("outcome", script::trialOutcomeName(r.outcome)).add("reason", r.reason);
+  line.add("outcome", task::trialOutcomeName(r.outcome)).add("reason", r.reason);
   line.add("time", r.time, 6);  // the tick's time to the microsecond, not the sum's rounding
   if (r.score)
     line.add("score", *r.score);  // a non-finite score is written as null too
   else
     line.addNull("score");
-  line.add("medal", script::medalName(r.medal));
+  line.add("medal", task::medalName(r.medal));
   line.add("ticks", r.ticks).add("wall_time", r.wallTime, 6).add("cpu_time", cpuTime, 6);
   if (device) {  // a person at a device: how the device fared (RUN.md)
     const haptics::UdpBridgeCounters c = device->counters();
@@ -119,13 +119,13 @@ int report(const RunOptions& o, const std::string& levelName, TrialRecording* re
   }
   std::printf("%s\n", line.c_str());
   std::fflush(stdout);
-  return result.outcome == script::TrialOutcome::Success ? kExitOk : kExitFailure;
+  return result.outcome == task::TrialOutcome::Success ? kExitOk : kExitFailure;
 }
 
 // `--realtime --device udp`: a person at a device behind the bridge, on the
 // trial rig the window uses (DeviceTrial).
 int runAtDevice(const RunOptions& o, script::LoadedLevel& level, const TrialSettings& settings,
-                const std::optional<script::DeviceProfileDef>& profile) {
+                const std::optional<task::DeviceProfileDef>& profile) {
   DeviceTrialDef def;
   def.bridge.port = static_cast<std::uint16_t>(o.port);
   if (profile) {
@@ -184,7 +184,7 @@ int runRunCommand(const std::vector<std::string>& args) {
   haptics::parseGuidanceKind(options.guidance, settings.guidance.kind);  // checked by parseRunOptions
   settings.guidance.stiffness = options.guidanceStiffness;
   settings.guidance.damping = options.guidanceDamping.value_or(10.0);
-  std::optional<script::DeviceProfileDef> profile;
+  std::optional<task::DeviceProfileDef> profile;
   if (options.deviceProfile) {
     try {
       profile = loadDeviceProfile(*options.deviceProfile);

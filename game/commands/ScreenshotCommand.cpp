@@ -31,7 +31,7 @@ constexpr const char* kPrefix = "hemiroll screenshot: ";
 
 // The proxy, the spring and the level's coupling force for a proxy held at
 // rest at `proxy` (the hand force of ForceCoupling with zero relative velocity).
-void addProxy(const script::LevelDef& level, const physics::ForceDrivenState& x, const std::array<double, 3>& proxy,
+void addProxy(const task::LevelDef& level, const physics::ForceDrivenState& x, const std::array<double, 3>& proxy,
               render::RenderScene& scene) {
   namespace slot = physics::force_slot;
   const physics::Vec3 p = physics::massPointPosition(x, level.params.radius);

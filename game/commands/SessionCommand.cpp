@@ -43,12 +43,12 @@ std::string trialLine(const std::string& participant, const std::string& group, 
   line.add("repetition", static_cast<long long>(t.repetition)).add("condition", t.conditionLabel);
   line.add("level", t.levelFile).add("method", t.method);
   line.add("kr_N_per_m", t.stiffness).add("kv_N_s_per_m", t.damping).add("alpha", t.alpha);
-  line.add("outcome", script::trialOutcomeName(r.outcome)).add("reason", r.reason).add("time_s", r.time, 6);
+  line.add("outcome", task::trialOutcomeName(r.outcome)).add("reason", r.reason).add("time_s", r.time, 6);
   if (r.score)
     line.add("score", *r.score);  // non-finite: null
   else
     line.addNull("score");
-  line.add("medal", script::medalName(r.medal)).add("ticks", r.ticks).add("wall_time_s", r.wallTime, 6);
+  line.add("medal", task::medalName(r.medal)).add("ticks", r.ticks).add("wall_time_s", r.wallTime, 6);
   line.add("participant", participant).add("group", group);
   if (device) {  // a participant at a device: the stop in words and the packet counts
     const haptics::UdpBridgeCounters c = device->counters();
@@ -210,12 +210,12 @@ int runParticipant(const SessionOptions& o, const SessionRequest& request) {
           std::cerr << "hemiroll session: " << trial.trialId << ": " << words << "\n";
         const TrialResult result = playAtDevice(session, o, request.participant);
         ++tally.ran;
-        tally.successes += result.outcome == script::TrialOutcome::Success;
+        tally.successes += result.outcome == task::TrialOutcome::Success;
         continue;
       }
       const TrialResult result = playNext(session, o, memory);
       ++tally.ran;
-      tally.successes += result.outcome == script::TrialOutcome::Success;
+      tally.successes += result.outcome == task::TrialOutcome::Success;
       std::printf("%s\n", trialLine(request.participant, session.manifest().group, trial, result, nullptr).c_str());
       std::fflush(stdout);
     }

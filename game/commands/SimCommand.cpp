@@ -28,7 +28,7 @@ void listIntegrators() {
     std::printf("%-8s order %d  %s\n", info.name.c_str(), info.order, info.description.c_str());
 }
 
-RunSettings resolveSettings(const SimOptions& o, const script::ScenarioDef& scenario) {
+RunSettings resolveSettings(const SimOptions& o, const task::ScenarioDef& scenario) {
   RunSettings s;
   s.duration = o.duration.value_or(scenario.duration.value_or(SimOptions::kDefaultDuration));
   s.timeStep = o.timeStep.value_or(scenario.timeStep.value_or(SimOptions::kDefaultTimeStep));
@@ -77,7 +77,7 @@ int runSimCommand(const std::vector<std::string>& args) {
     return kExitOk;
   }
 
-  script::ScenarioDef scenario;
+  task::ScenarioDef scenario;
   try {
     scenario = script::ScenarioLoader().loadFile(options.scenarioPath);
   } catch (const script::ScriptError& e) {
@@ -100,7 +100,7 @@ int runSimCommand(const std::vector<std::string>& args) {
               << "; thin it with --every or raise --max-rows\n";
     return kExitUsage;
   }
-  if (settings.orientation == physics::OrientationForm::Quaternion && scenario.drive.kind == script::DriveKind::Rose) {
+  if (settings.orientation == physics::OrientationForm::Quaternion && scenario.drive.kind == task::DriveKind::Rose) {
     std::cerr << "hemiroll sim: --orientation quaternion applies to free and proxy drives; " << options.scenarioPath
               << " uses the rose drive (the 8-state prescribed model)\n";
     return kExitUsage;
@@ -142,7 +142,7 @@ int runSimCommand(const std::vector<std::string>& args) {
   std::fprintf(stderr,
                "hemiroll sim: %s drive, %lld steps of %.9g s (%s), simulated %.9g s, %lld rows, "
                "final energy %.9g J, wall %.3f s\n",
-               script::driveKindName(scenario.drive.kind), summary.steps, settings.timeStep,
+               task::driveKindName(scenario.drive.kind), summary.steps, settings.timeStep,
                settings.integrator.c_str(), summary.endTime, writer.rowsWritten(), summary.finalEnergy, wall);
   return kExitOk;
 }

@@ -146,7 +146,7 @@ int runMap(const SweepOptions& o) {
   const SweepData data = loadSweep(dir);
   MapRequest request;
   for (auto [name, param] : {std::pair{&o.x, &request.x}, std::pair{&o.y, &request.y}}) {
-    const auto found = script::findSweepParam(**name);
+    const auto found = task::findSweepParam(**name);
     if (!found)
       throw SweepError(SweepError::Kind::BadInput,
                        "unknown parameter '" + **name + "' (expected R, m_s, m_p, g, r1, r2, k or Omega)");

@@ -19,7 +19,7 @@ AutopilotBotOptions plannerOnItsOwnThread(bool drives) {
 
 }  // namespace
 
-AutopilotCompanion::AutopilotCompanion(const script::LevelDef& level, haptics::ServoLoop& loop,
+AutopilotCompanion::AutopilotCompanion(const task::LevelDef& level, haptics::ServoLoop& loop,
                                        const haptics::WorkspaceMapping& mapping, HandoffBotDevice* hand, bool guide,
                                        std::uint64_t seed)
     : loop_(loop),
@@ -50,7 +50,7 @@ void AutopilotCompanion::stop() {
   if (thread_.joinable()) thread_.join();
 }
 
-void AutopilotCompanion::publishTask(const script::TaskJudge& judge) {
+void AutopilotCompanion::publishTask(const task::TaskJudge& judge) {
   script::BotObservation task;
   ObservationBuilder::fillTask(judge, task);
   tasks_.write(task);

@@ -49,7 +49,7 @@ class AutopilotCompanion {
  public:
   // `loop` and `hand` (nullptr: it never drives) must outlive the companion.
   // `guide`: publish the plan to the loop as the guidance's target.
-  AutopilotCompanion(const script::LevelDef& level, haptics::ServoLoop& loop, const haptics::WorkspaceMapping& mapping,
+  AutopilotCompanion(const task::LevelDef& level, haptics::ServoLoop& loop, const haptics::WorkspaceMapping& mapping,
                      HandoffBotDevice* hand, bool guide, std::uint64_t seed = 0);
   ~AutopilotCompanion();
   AutopilotCompanion(const AutopilotCompanion&) = delete;
@@ -59,7 +59,7 @@ class AutopilotCompanion {
   void stop();  // joins; idempotent
 
   // UI thread, once per frame: the task's part of the observation.
-  void publishTask(const script::TaskJudge& judge);
+  void publishTask(const task::TaskJudge& judge);
   // UI thread: the latest plan (valid false before the first and after a give-up).
   bool latestPlan(haptics::GuideSample& out) { return plans_.read(out); }
   // UI thread: the latest hint at a person's bandwidth (false before the first).

@@ -11,7 +11,7 @@ namespace hemiroll::game {
 
 namespace {
 
-TrialRigDef rigDefOf(const PlaySessionDef& def, const script::LevelDef& level) {
+TrialRigDef rigDefOf(const PlaySessionDef& def, const task::LevelDef& level) {
   if (def.profile) {
     const std::string refusal = couplingRefusal(*def.profile, def.coupling.value_or(level.coupling), level.source);
     if (!refusal.empty()) throw std::invalid_argument(refusal);
@@ -32,7 +32,7 @@ TrialRigDef rigDefOf(const PlaySessionDef& def, const script::LevelDef& level) {
 
 }  // namespace
 
-void useDeviceProfile(PlaySessionDef& def, const script::DeviceProfileDef& profile) {
+void useDeviceProfile(PlaySessionDef& def, const task::DeviceProfileDef& profile) {
   def.profile = profile;
   def.deviceOptions.udp.spec = deviceSpecOf(profile);
   def.safety = safetyOf(profile, def.safety.value_or(haptics::SafetyDef{}));

@@ -99,12 +99,12 @@ struct PlaySessionDef {
   bool clockStartsOnTakeHold = true;
   // The force device's profile (useDeviceProfile): a level whose coupling it
   // cannot render is refused by the constructor, in one sentence naming both.
-  std::optional<script::DeviceProfileDef> profile;
+  std::optional<task::DeviceProfileDef> profile;
 };
 
 // Holds a device behind the bridge to `profile`: the bridge's spec (the
 // clamp, the stiffest coupling) and the safety layer's limits (DeviceProfiles.h).
-void useDeviceProfile(PlaySessionDef& def, const script::DeviceProfileDef& profile);
+void useDeviceProfile(PlaySessionDef& def, const task::DeviceProfileDef& profile);
 
 class PlaySession {
  public:

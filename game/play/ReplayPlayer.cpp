@@ -9,7 +9,7 @@
 
 namespace hemiroll::game {
 
-ReplayPlayer::ReplayPlayer(const script::LevelDef& level, const std::string& levelPath,
+ReplayPlayer::ReplayPlayer(const task::LevelDef& level, const std::string& levelPath,
                            const std::filesystem::path& file)
     : log_(record::ReplayReader::load(file)) {
   if (log_.header.levelHash != record::fileContentHash(levelPath))

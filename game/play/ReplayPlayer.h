@@ -27,7 +27,7 @@ class ReplayPlayer {
   // with one sentence: the file cannot be read or is no complete replay, it
   // was recorded on another version of the level, or with a device this
   // program does not know.
-  ReplayPlayer(const script::LevelDef& level, const std::string& levelPath, const std::filesystem::path& file);
+  ReplayPlayer(const task::LevelDef& level, const std::string& levelPath, const std::filesystem::path& file);
   ~ReplayPlayer();
 
   // Plays ticks until `ticks` have been played or the log ends.

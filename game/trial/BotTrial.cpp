@@ -69,7 +69,7 @@ void BotTrial::begin(const script::TrialTiming& timing) {
   try {
     bot_.init(placed, settings_.seed);
   } catch (const script::ScriptError& e) {
-    judging.judge().finish(script::TrialOutcome::Failure, std::string("bot error: ") + e.what(), rig_.loop().time());
+    judging.judge().finish(task::TrialOutcome::Failure, std::string("bot error: ") + e.what(), rig_.loop().time());
   }
   judging.start(rig_.initial());  // on_start, and on_fail for a failed init
   if (!settings_.guidance.active()) return;

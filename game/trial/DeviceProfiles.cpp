@@ -60,7 +60,7 @@ std::vector<std::string> deviceProfileNames() {
   return {names.begin(), names.end()};
 }
 
-script::DeviceProfileDef loadDeviceProfile(const std::string& nameOrFile) {
+task::DeviceProfileDef loadDeviceProfile(const std::string& nameOrFile) {
   if (nameOrFile.empty()) throw script::ScriptError("an empty device profile name (try generic, touch, omega3, ...)");
   if (namesAFile(nameOrFile)) return script::DeviceProfileLoader().loadFile(nameOrFile);
   std::error_code ec;
@@ -75,7 +75,7 @@ script::DeviceProfileDef loadDeviceProfile(const std::string& nameOrFile) {
                             (known.empty() ? std::string(" (none holds a profile)") : "; known profiles: " + known));
 }
 
-script::DeviceProfileDef loadProtocolDeviceProfile(const std::string& nameOrFile, const std::string& protocolPath) {
+task::DeviceProfileDef loadProtocolDeviceProfile(const std::string& nameOrFile, const std::string& protocolPath) {
   std::error_code ec;
   const fs::path beside = fs::path(protocolPath).parent_path() / nameOrFile;
   if (fs::path(nameOrFile).extension() == ".lua" && fs::path(nameOrFile).is_relative() && fs::is_regular_file(beside, ec))
@@ -83,7 +83,7 @@ script::DeviceProfileDef loadProtocolDeviceProfile(const std::string& nameOrFile
   return loadDeviceProfile(nameOrFile);
 }
 
-haptics::DeviceSpec deviceSpecOf(const script::DeviceProfileDef& p) {
+haptics::DeviceSpec deviceSpecOf(const task::DeviceProfileDef& p) {
   haptics::DeviceSpec spec;
   spec.name = keptName(p.model);
   spec.maxForce = p.peakForceN;
@@ -93,7 +93,7 @@ haptics::DeviceSpec deviceSpecOf(const script::DeviceProfileDef& p) {
   return spec;
 }
 
-haptics::SafetyDef safetyOf(const script::DeviceProfileDef& p, haptics::SafetyDef base) {
+haptics::SafetyDef safetyOf(const task::DeviceProfileDef& p, haptics::SafetyDef base) {
   base.maxForceRate = p.maxForceRateNPerS;
   base.workspaceHalfWidth = 0.5 * p.workspaceWidthM;
   base.workspaceHalfDepth = 0.5 * p.workspaceDepthM;
@@ -104,7 +104,7 @@ haptics::SafetyDef safetyOf(const script::DeviceProfileDef& p, haptics::SafetyDe
   return base;
 }
 
-std::string couplingRefusal(const script::DeviceProfileDef& p, const physics::CouplingDef& c, const std::string& level) {
+std::string couplingRefusal(const task::DeviceProfileDef& p, const physics::CouplingDef& c, const std::string& level) {
   if (c.visualOnly) return "";  // nothing is rendered
   const bool m3 = c.method == physics::ForceMethod::M3;
   const double stiffest = c.stiffness * (m3 ? std::max(1.0, c.alpha) : 1.0);

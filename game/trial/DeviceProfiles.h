@@ -29,24 +29,24 @@ std::vector<std::string> deviceProfileNames();
 // '/' or ending in .lua is a file). Throws script::ScriptError: for an
 // unknown name, naming the folders searched and the profiles they hold;
 // for a bad file, the loader's "file:line: key: what".
-script::DeviceProfileDef loadDeviceProfile(const std::string& nameOrFile);
+task::DeviceProfileDef loadDeviceProfile(const std::string& nameOrFile);
 
 // The profile a protocol names (its `device_profile`): a relative .lua file
 // is looked for beside the protocol first, then as loadDeviceProfile does.
-script::DeviceProfileDef loadProtocolDeviceProfile(const std::string& nameOrFile, const std::string& protocolPath);
+task::DeviceProfileDef loadProtocolDeviceProfile(const std::string& nameOrFile, const std::string& protocolPath);
 
 // The device's limits: maxForce the peak force, maxStiffness the profile's,
 // workspaceRadius the box's smallest half-extent (a sphere inside it: what a
 // bot's reach is held to), force output yes; named by the profile's model.
-haptics::DeviceSpec deviceSpecOf(const script::DeviceProfileDef& profile);
+haptics::DeviceSpec deviceSpecOf(const task::DeviceProfileDef& profile);
 // `base` with the profile's rate limit, workspace box and continuous rating.
-haptics::SafetyDef safetyOf(const script::DeviceProfileDef& profile, haptics::SafetyDef base = {});
+haptics::SafetyDef safetyOf(const task::DeviceProfileDef& profile, haptics::SafetyDef base = {});
 
 // "" when the profile renders `coupling` (and its stiffest direction: M3's
 // alpha scales the normal gain); else one sentence naming the level and the
 // device: "level.lua asks for a coupling stiffness of 1500 N/m, above the
 // 3D Systems Touch's maximum stiffness of 1020 N/m (devices/touch.lua)".
-std::string couplingRefusal(const script::DeviceProfileDef& profile, const physics::CouplingDef& coupling,
+std::string couplingRefusal(const task::DeviceProfileDef& profile, const physics::CouplingDef& coupling,
                             const std::string& level);
 
 }  // namespace hemiroll::game

@@ -14,7 +14,7 @@ script::Triple3 triple(const physics::Vec3& v) { return {v.x(), v.y(), v.z()}; }
 }  // namespace
 
 void ObservationBuilder::fill(double time, const physics::ForceDrivenState& x, const haptics::ServoSnapshot& snapshot,
-                              const script::TaskJudge& judge, script::BotObservation& out) const {
+                              const task::TaskJudge& judge, script::BotObservation& out) const {
   fillKinematics(time, x, snapshot, out);
   fillTask(judge, out);
 }
@@ -46,11 +46,11 @@ void ObservationBuilder::fillKinematics(double time, const physics::ForceDrivenS
   out.forceShare = snapshot.rampScale;
 }
 
-void ObservationBuilder::fillTask(const script::TaskJudge& judge, script::BotObservation& out) {
+void ObservationBuilder::fillTask(const task::TaskJudge& judge, script::BotObservation& out) {
   judge.slotTargets(out.target, out.tolerance, out.targetSet);
   out.omegaNormSet = false;
-  for (const script::ComponentStatus& c : judge.components()) {
-    if (c.variable != script::TaskVariable::omega_norm) continue;
+  for (const task::ComponentStatus& c : judge.components()) {
+    if (c.variable != task::TaskVariable::omega_norm) continue;
     out.omegaNormSet = true;
     out.omegaNormTarget = c.target;
     out.omegaNormTolerance = c.tolerance;
@@ -58,9 +58,9 @@ void ObservationBuilder::fillTask(const script::TaskJudge& judge, script::BotObs
   const auto& forbidden = judge.task().forbidden;
   out.zoneCount = static_cast<int>(std::min<std::size_t>(forbidden.size(), script::BotObservation::kMaxZones));
   for (int i = 0; i < out.zoneCount; ++i) {
-    const script::ZoneDef& z = forbidden[static_cast<std::size_t>(i)];
+    const task::ZoneDef& z = forbidden[static_cast<std::size_t>(i)];
     physics::PlaneZone& o = out.zones[static_cast<std::size_t>(i)];
-    o.circle = z.shape == script::ZoneShape::Circle;
+    o.circle = z.shape == task::ZoneShape::Circle;
     o.centre = z.center;
     o.radius = z.radius;
     o.min = z.min;

@@ -24,12 +24,12 @@ class ObservationBuilder {
   // published tick (proxy, force, engagement), or a default one before the
   // first tick; `judge`: the task as it stands.
   void fill(double time, const physics::ForceDrivenState& state, const haptics::ServoSnapshot& snapshot,
-            const script::TaskJudge& judge, script::BotObservation& out) const;
+            const task::TaskJudge& judge, script::BotObservation& out) const;
   // The two halves of fill, for a planner on another thread than the judge:
   // the state's part (any thread) and the task's part (the judge's thread).
   void fillKinematics(double time, const physics::ForceDrivenState& state, const haptics::ServoSnapshot& snapshot,
                       script::BotObservation& out) const;
-  static void fillTask(const script::TaskJudge& judge, script::BotObservation& out);
+  static void fillTask(const task::TaskJudge& judge, script::BotObservation& out);
 
  private:
   physics::ModelConstants constants_;

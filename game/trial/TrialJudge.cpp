@@ -6,7 +6,7 @@
 
 namespace hemiroll::game {
 
-using script::TrialOutcome;
+using task::TrialOutcome;
 
 TrialJudge::TrialJudge(script::LoadedLevel& level, bool faultsEndTrial)
     : level_(level), faultsEndTrial_(faultsEndTrial), judge_(level.def.task) {}
@@ -22,12 +22,12 @@ void TrialJudge::start(const physics::ForceDrivenState& initial) {
 template <class Tick>
 void TrialJudge::judgeAny(const Tick& tick) {
   if (judge_.finished()) return;
-  script::JudgeInput input;
+  task::JudgeInput input;
   input.time = tick.time;
   input.state = physics::forceStateOf(tick.state);
   input.event = tick.event;
   judge_.judge(input);
-  script::EffortInput effort;
+  task::EffortInput effort;
   effort.proxyPosition = physics::vec3Of(tick.proxyPosition);
   effort.handForce = physics::vec3Of(tick.handForce);
   accumulator_.add(input, effort, judge_);

@@ -24,15 +24,15 @@
 namespace hemiroll::game {
 
 struct TrialResult {
-  script::TrialOutcome outcome = script::TrialOutcome::Failure;
+  task::TrialOutcome outcome = task::TrialOutcome::Failure;
   std::string reason;
   double time = 0.0;                 // simulated time at the end [s]
   long long ticks = 0;
   std::optional<double> score;       // nullopt: no score function, or it failed
-  script::Medal medal = script::Medal::None;
+  task::Medal medal = task::Medal::None;
   std::string scoreError;            // the score function's failure, if any
   std::string endCallbackError;      // on_success / on_fail failed after the end, if so
-  script::TrialSummary summary;
+  task::TrialSummary summary;
   physics::ForceDrivenState finalState = physics::ForceDrivenState::Zero();
   double maxRenderedForce = 0.0;     // largest |force| sent to the device [N]
   double maxProxyDistance = 0.0;     // largest proxy to mass point distance [m]
@@ -56,13 +56,13 @@ class TrialJudge {
   // last judged time; runs on_fail.
   void fail(const std::string& reason);
 
-  script::TaskJudge& judge() { return judge_; }
-  const script::TaskJudge& judge() const { return judge_; }
+  task::TaskJudge& judge() { return judge_; }
+  const task::TaskJudge& judge() const { return judge_; }
   bool finished() const { return judge_.finished(); }
   const script::TrialObservation& view() const { return view_; }
   long long judgedTicks() const { return judgedTicks_; }
   // The trial summary so far (time, path, effort, margins), for a running score.
-  script::TrialSummary summary() const { return accumulator_.summary(judge_); }
+  task::TrialSummary summary() const { return accumulator_.summary(judge_); }
 
   // Outcome, summary, score and medal; `initial` stands for the final state
   // when no tick was judged. wallTime is left to the caller.
@@ -74,8 +74,8 @@ class TrialJudge {
 
   script::LoadedLevel& level_;
   bool faultsEndTrial_;
-  script::TaskJudge judge_;
-  script::TrialSummaryAccumulator accumulator_;
+  task::TaskJudge judge_;
+  task::TrialSummaryAccumulator accumulator_;
   script::TrialObservation view_;
   long long judgedTicks_ = 0;
   double maxRenderedForce_ = 0.0, maxProxyDistance_ = 0.0;

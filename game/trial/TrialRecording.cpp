@@ -19,7 +19,7 @@ std::string freshTrialId(const std::filesystem::path& dir, const std::string& ba
 
 }  // namespace
 
-TrialRecording::TrialRecording(const TrialRecordingDef& def, const script::LevelDef& level,
+TrialRecording::TrialRecording(const TrialRecordingDef& def, const task::LevelDef& level,
                                const haptics::ServoLoopDef& loop)
     : ring_(std::make_unique<haptics::RecordRing>()) {
   // The level's recording rate, as a whole number of ticks per row.
@@ -53,7 +53,7 @@ TrialRecording::TrialRecording(const TrialRecordingDef& def, const script::Level
 TrialRecording::~TrialRecording() = default;
 
 record::Fields TrialRecording::measureFields(const TrialResult& result) {
-  const script::TrialSummary& s = result.summary;
+  const task::TrialSummary& s = result.summary;
   char text[64];
   const auto number = [&text](double v) {
     std::snprintf(text, sizeof text, "%.17g", v);
@@ -78,13 +78,13 @@ record::Fields TrialRecording::measureFields(const TrialResult& result) {
   // one fixed set of columns (a session's levels judge different ones, and
   // every row of results.csv has the header's columns); empty where the
   // stage does not judge it.
-  for (int v = 0; v < script::kTaskVariableCount; ++v) {
-    const auto variable = static_cast<script::TaskVariable>(v);
+  for (int v = 0; v < task::kTaskVariableCount; ++v) {
+    const auto variable = static_cast<task::TaskVariable>(v);
     std::string value;
-    for (const script::ComponentStatus& c : s.finalComponents)
+    for (const task::ComponentStatus& c : s.finalComponents)
       if (c.variable == variable) value = number(c.error);
-    out.emplace_back(std::string("final_error_") + script::taskVariableName(variable) + "_" +
-                         script::taskVariableUnitTag(variable),
+    out.emplace_back(std::string("final_error_") + task::taskVariableName(variable) + "_" +
+                         task::taskVariableUnitTag(variable),
                      value);
   }
   return out;
@@ -92,7 +92,7 @@ record::Fields TrialRecording::measureFields(const TrialResult& result) {
 
 record::Fields TrialRecording::scoreFields(const TrialResult& result) {
   const bool hasScore = result.score && std::isfinite(*result.score);
-  return {{"has_score", hasScore ? "true" : "false"}, {"medal", script::medalName(result.medal)}};
+  return {{"has_score", hasScore ? "true" : "false"}, {"medal", task::medalName(result.medal)}};
 }
 
 void TrialRecording::finish(const TrialResult& result, const record::Fields& extra,
@@ -101,7 +101,7 @@ void TrialRecording::finish(const TrialResult& result, const record::Fields& ext
   record::TrialEnd end;
   end.device = device;
   // The words of `run`'s JSON line and the judge: "success" or "failure".
-  end.outcome = script::trialOutcomeName(result.outcome);
+  end.outcome = task::trialOutcomeName(result.outcome);
   end.reason = result.reason;
   end.droppedRows = result.recordRowsLost;
   end.hasTiming = timing.has_value();

@@ -52,7 +52,7 @@ class TrialRecording {
   // is the trial's servo loop definition (TrialRig::loopDef: its period,
   // coupling and guidance go into the sidecar); rows are kept at the
   // level's record rate. Throws TrialRecordingError.
-  TrialRecording(const TrialRecordingDef& def, const script::LevelDef& level, const haptics::ServoLoopDef& loop);
+  TrialRecording(const TrialRecordingDef& def, const task::LevelDef& level, const haptics::ServoLoopDef& loop);
   ~TrialRecording();
   TrialRecording(const TrialRecording&) = delete;
   TrialRecording& operator=(const TrialRecording&) = delete;

@@ -14,7 +14,7 @@ namespace {
 
 // The level's loop with the rig's choices; the device's part follows once
 // the device exists.
-haptics::ServoLoopDef loopDefOf(const script::LevelDef& level, const TrialRigDef& def) {
+haptics::ServoLoopDef loopDefOf(const task::LevelDef& level, const TrialRigDef& def) {
   haptics::ServoLoopDef loop = trialLoopDef(level, def.device);
   if (def.coupling) loop.coupling = *def.coupling;
   if (def.safety) loop.safety = *def.safety;

@@ -51,7 +51,7 @@ struct RecordTap {
 };
 
 struct TrialRigDef {
-  // Whose workspace mapping of the level the loop uses (script::kMappedDevices).
+  // Whose workspace mapping of the level the loop uses (task::kMappedDevices).
   std::string device = "bot";
   std::optional<physics::CouplingDef> coupling;  // none: the level's
   std::optional<haptics::SafetyDef> safety;      // none: the loop's defaults

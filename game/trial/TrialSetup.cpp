@@ -8,21 +8,21 @@ haptics::DeviceSpec botDeviceSpec() {
   return spec;
 }
 
-haptics::ServoLoopDef trialLoopDef(const script::LevelDef& level, const std::string& device) {
+haptics::ServoLoopDef trialLoopDef(const task::LevelDef& level, const std::string& device) {
   haptics::ServoLoopDef def;
   def.requestRealtime = false;  // callers that start the loop's thread ask for it
   def.params = level.params;
   def.coupling = level.coupling;
-  const script::DeviceMappingDef& mapping = level.mappingFor(device);
+  const task::DeviceMappingDef& mapping = level.mappingFor(device);
   def.mapping.scale = mapping.scale;
   def.mapping.offset = physics::Vec3(mapping.offset[0], mapping.offset[1], mapping.offset[2]);
   for (int i = 0; i < 12; ++i) def.initialState[static_cast<std::size_t>(i)] = level.initial[i];
   return def;
 }
 
-script::BotLevelInfo botLevelInfo(const script::LevelDef& level) { return botLevelInfo(level, trialLoopDef(level)); }
+script::BotLevelInfo botLevelInfo(const task::LevelDef& level) { return botLevelInfo(level, trialLoopDef(level)); }
 
-script::BotLevelInfo botLevelInfo(const script::LevelDef& level, const haptics::ServoLoopDef& def,
+script::BotLevelInfo botLevelInfo(const task::LevelDef& level, const haptics::ServoLoopDef& def,
                                   const haptics::DeviceSpec& device) {
   script::BotLevelInfo info;
   info.name = level.name;

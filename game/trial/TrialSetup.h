@@ -16,8 +16,8 @@ namespace hemiroll::game {
 
 // The servo loop's definition for a level (default safety; no thread
 // requested, no rings). `device` picks the level's workspace mapping
-// (script::kMappedDevices).
-haptics::ServoLoopDef trialLoopDef(const script::LevelDef& level, const std::string& device = "bot");
+// (task::kMappedDevices).
+haptics::ServoLoopDef trialLoopDef(const task::LevelDef& level, const std::string& device = "bot");
 
 // A desk device's limits (DeviceSpec defaults), named "bot": what a bot is
 // held to.
@@ -26,10 +26,10 @@ haptics::DeviceSpec botDeviceSpec();
 // The level as a bot's init sees it, in the trial's loop (`loop`: built by
 // trialLoopDef for "bot"; its period, engagement and mapping), held to
 // the workspace of `device` (botDeviceSpec's unless a profile gave another).
-script::BotLevelInfo botLevelInfo(const script::LevelDef& level, const haptics::ServoLoopDef& loop,
+script::BotLevelInfo botLevelInfo(const task::LevelDef& level, const haptics::ServoLoopDef& loop,
                                   const haptics::DeviceSpec& device = botDeviceSpec());
 // The same for a planner beside a trial whose loop is not a bot's (the
 // autopilot in the window plans in the level's bot loop).
-script::BotLevelInfo botLevelInfo(const script::LevelDef& level);
+script::BotLevelInfo botLevelInfo(const task::LevelDef& level);
 
 }  // namespace hemiroll::game

@@ -95,7 +95,7 @@ int main(int argc, char** argv) {
 
   // A sweep part: a manifest of a shipped spec and a CSV of its columns.
   {
-    const script::SweepDef spec =
+    const task::SweepDef spec =
         script::SweepLoader().loadFile(HEMIROLL_SOURCE_DIR "/levels/sweeps/rose_k_omega.lua");
     game::SweepManifest m;
     m.program = "hemiroll fuzz";

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <cstdint>
 
-namespace hemiroll::script {
+namespace hemiroll::task {
 namespace {
 
 TEST(EngineRandom, ReseedingRepeatsTheSequence) {
@@ -70,4 +70,4 @@ TEST(EngineRandom, ExtremeRangesDoNotOverflow) {
 }
 
 }  // namespace
-}  // namespace hemiroll::script
+}  // namespace hemiroll::task

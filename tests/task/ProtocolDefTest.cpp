@@ -9,7 +9,7 @@
 #include <set>
 #include <vector>
 
-namespace hemiroll::script {
+namespace hemiroll::task {
 namespace {
 
 physics::CouplingDef levelCoupling() {
@@ -163,4 +163,4 @@ TEST(ProtocolDefTest, AGroupsChangesWinInItsBlockAndRebuildADefaultLabel) {
 }
 
 }  // namespace
-}  // namespace hemiroll::script
+}  // namespace hemiroll::task

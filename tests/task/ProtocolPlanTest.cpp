@@ -9,7 +9,7 @@
 #include <map>
 #include <set>
 
-namespace hemiroll::script {
+namespace hemiroll::task {
 namespace {
 
 BlockDef block(int conditions, int repetitions, bool randomise) {
@@ -153,4 +153,4 @@ TEST(ProtocolPlanTest, ABlockOrderMovesWholeBlocksAndKeepsTheirTrialsAndSeeds) {
 }
 
 }  // namespace
-}  // namespace hemiroll::script
+}  // namespace hemiroll::task

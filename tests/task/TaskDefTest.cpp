@@ -7,7 +7,7 @@
 
 #include "engine/physics/StateLayout.h"
 
-namespace hemiroll::script {
+namespace hemiroll::task {
 namespace {
 
 TEST(TaskDef, SlotVariablesHaveTheStateLayoutsNamesAndOrder) {
@@ -44,4 +44,4 @@ TEST(TaskDef, NoTargetsMeansWatchOnly) {
 }
 
 }  // namespace
-}  // namespace hemiroll::script
+}  // namespace hemiroll::task

@@ -11,7 +11,7 @@
 #include "engine/task/TrialSummaryAccumulator.h"
 #include "tests/support/AllocationCounter.h"
 
-namespace hemiroll::script {
+namespace hemiroll::task {
 namespace {
 
 using physics::ForceDrivenState;
@@ -372,4 +372,4 @@ TEST(TaskJudge, JudgingATickAllocatesNothing) {
 }
 
 }  // namespace
-}  // namespace hemiroll::script
+}  // namespace hemiroll::task

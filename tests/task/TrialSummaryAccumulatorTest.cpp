@@ -8,7 +8,7 @@
 #include <cmath>
 #include <limits>
 
-namespace hemiroll::script {
+namespace hemiroll::task {
 namespace {
 
 namespace slot = physics::force_slot;
@@ -137,4 +137,4 @@ TEST(TrialSummaryAccumulator, WatchOnlyTasksReportFullMargins) {
 }
 
 }  // namespace
-}  // namespace hemiroll::script
+}  // namespace hemiroll::task

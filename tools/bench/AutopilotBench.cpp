@@ -40,7 +40,7 @@ void playLevel(benchmark::State& state, const std::string& level) {
     const auto wall0 = std::chrono::steady_clock::now();
     const game::TrialResult r = game::BotTrial(loaded, bot, game::TrialSettings{}).run();
     wall += std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-    const bool success = r.outcome == script::TrialOutcome::Success;
+    const bool success = r.outcome == task::TrialOutcome::Success;
     won += success ? 1.0 : 0.0;
     task += success ? r.time : 0.0;
     count += 1.0;

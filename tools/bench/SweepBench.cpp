@@ -53,7 +53,7 @@ void BM_WholeSweep(benchmark::State& state) {
     state.SkipWithError("this CPU does not run that lane width");
     return;
   }
-  const script::SweepDef def = script::SweepLoader().loadFile(kSpec);
+  const task::SweepDef def = script::SweepLoader().loadFile(kSpec);
   const fs::path out = fs::temp_directory_path() / ("hemiroll-sweep-bench-" + std::to_string(::getpid()));
   long long steps = 0;
   for (auto _ : state) {
@@ -83,7 +83,7 @@ struct PointRows {
 };
 
 PointRows paperPointRows(double duration) {
-  script::SweepDef def = script::SweepLoader().loadFile(kSpec);
+  task::SweepDef def = script::SweepLoader().loadFile(kSpec);
   def.duration = duration;
   const game::SweepGrid grid(def);
   game::RunSettings settings;
@@ -91,7 +91,7 @@ PointRows paperPointRows(double duration) {
   settings.timeStep = def.timeStep;
   settings.every = game::sampleEvery(def.timeStep);
   // Point 6: k = 8, Omega = -pi/10, the paper's.
-  const script::ScenarioDef scenario = grid.scenario(grid.point(6));
+  const task::ScenarioDef scenario = grid.scenario(grid.point(6));
   PointRows rows;
   namespace slot = physics::force_slot;
   game::ScenarioRun(scenario, settings).run([&](const game::TrajectoryRow& row) {

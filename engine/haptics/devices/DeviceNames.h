@@ -14,7 +14,7 @@ inline constexpr const char* kSimulatedHandDevice = "simulated-hand";
 
 // The devices a person plays with, in the order the settings offer them: the
 // one list the settings, the screens and the play session use (a level's
-// per_device mappings also take "bot": script::kMappedDevices).
+// per_device mappings also take "bot": task::kMappedDevices).
 inline constexpr const char* kPlayerDevices[] = {kMouseDevice, kJoystickDevice, kUdpDevice};
 
 }  // namespace hemiroll::haptics

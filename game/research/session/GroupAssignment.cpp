@@ -41,7 +41,7 @@ std::optional<std::pair<std::string, int>> earlierAssignment(const fs::path& par
 
 }  // namespace
 
-ParticipantAssignment assignParticipant(const script::ProtocolDef& protocol, const fs::path& experimentFolder,
+ParticipantAssignment assignParticipant(const task::ProtocolDef& protocol, const fs::path& experimentFolder,
                                         const std::string& participant, const std::string& session) {
   ParticipantAssignment a;
   std::optional<ParticipantsTable> table;
@@ -60,7 +60,7 @@ ParticipantAssignment assignParticipant(const script::ProtocolDef& protocol, con
     a.how = "no groups";
     return a;
   }
-  if (protocol.assignment == script::Assignment::ParticipantsFile) {
+  if (protocol.assignment == task::Assignment::ParticipantsFile) {
     a.group = row->group;
     a.order = row->order > 0 ? row->order : (row->rankInGroup - 1) % orders + 1;
     a.how = protocol.participantsFile + ", line " + std::to_string(row->line);

@@ -32,7 +32,7 @@ struct ParticipantAssignment {
 
 // Throws SessionError (BadInput) for a participants file that does not
 // check out or does not list the participant.
-ParticipantAssignment assignParticipant(const script::ProtocolDef& protocol,
+ParticipantAssignment assignParticipant(const task::ProtocolDef& protocol,
                                         const std::filesystem::path& experimentFolder,
                                         const std::string& participant, const std::string& session);
 

@@ -28,9 +28,9 @@ std::vector<std::string> splitTabs(const std::string& line) {
 
 bool missing(const std::string& cell) { return cell.empty() || cell == "n/a"; }
 
-std::string groupNames(const script::ProtocolDef& protocol) {
+std::string groupNames(const task::ProtocolDef& protocol) {
   std::string names;
-  for (const script::GroupDef& g : protocol.groups) names += (names.empty() ? "'" : ", '") + g.name + "'";
+  for (const task::GroupDef& g : protocol.groups) names += (names.empty() ? "'" : ", '") + g.name + "'";
   return names;
 }
 
@@ -78,9 +78,9 @@ struct KnownColumns {
 
 // The header's columns into table.header, each name checked; the group and
 // order columns held to the protocol's way of assigning.
-KnownColumns readHeader(const std::string& firstLine, const script::ProtocolDef& protocol, ParticipantsTable& table) {
+KnownColumns readHeader(const std::string& firstLine, const task::ProtocolDef& protocol, ParticipantsTable& table) {
   const std::string& path = table.source;
-  const bool fromFile = protocol.assignment == script::Assignment::ParticipantsFile;
+  const bool fromFile = protocol.assignment == task::Assignment::ParticipantsFile;
   table.header = splitTabs(firstLine);
   // A file saved by a spreadsheet may start with a byte-order mark: not part
   // of the first column's name.
@@ -118,7 +118,7 @@ KnownColumns readHeader(const std::string& firstLine, const script::ProtocolDef&
 // One participant's line (lineNo counts from 1), checked against the
 // protocol and the rows before it; perGroup counts the rows per group so far
 // (the last entry: no group column).
-ParticipantRow readRow(const std::string& line, int lineNo, KnownColumns known, const script::ProtocolDef& protocol,
+ParticipantRow readRow(const std::string& line, int lineNo, KnownColumns known, const task::ProtocolDef& protocol,
                        const ParticipantsTable& table, std::vector<int>& perGroup) {
   const std::string& path = table.source;
   if (line.empty()) badInput(path + ":" + std::to_string(lineNo) + ": an empty line (remove it)");
@@ -129,7 +129,7 @@ ParticipantRow readRow(const std::string& line, int lineNo, KnownColumns known, 
   ParticipantRow row;
   row.line = lineNo;
   row.id = cells[0];
-  if (!script::isFolderName(row.id))
+  if (!task::isFolderName(row.id))
     badInput(columnAt(path, lineNo, "participant_id") + "'" + row.id +
              "' is not a participant id: use 1 to 64 letters, digits, '-' or '_' (the id given to --participant)");
   if (const ParticipantRow* other = table.find(row.id))
@@ -140,7 +140,7 @@ ParticipantRow readRow(const std::string& line, int lineNo, KnownColumns known, 
     row.group = cells[static_cast<std::size_t>(known.group)];
     if (missing(row.group)) badInput(columnAt(path, lineNo, "group") + "missing; one of " + groupNames(protocol));
     const auto found = std::find_if(protocol.groups.begin(), protocol.groups.end(),
-                                    [&](const script::GroupDef& g) { return g.name == row.group; });
+                                    [&](const task::GroupDef& g) { return g.name == row.group; });
     if (found == protocol.groups.end())
       badInput(columnAt(path, lineNo, "group") + "no group '" + row.group + "' in the protocol (its groups: " +
                groupNames(protocol) + ")");
@@ -166,7 +166,7 @@ ParticipantRow readRow(const std::string& line, int lineNo, KnownColumns known, 
 
 }  // namespace
 
-ParticipantsTable readParticipantsFile(const std::string& path, const script::ProtocolDef& protocol) {
+ParticipantsTable readParticipantsFile(const std::string& path, const task::ProtocolDef& protocol) {
   ParticipantsTable table;
   table.source = path;
   const std::vector<std::string> lines = participantsFileLines(path);

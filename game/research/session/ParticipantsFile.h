@@ -40,6 +40,6 @@ struct ParticipantsTable {
 // Reads and checks the file against `protocol` (its groups, assignment and
 // order count). Throws SessionError (BadInput) with one sentence
 // "FILE:LINE: column 'NAME': what is wrong" (or "FILE: ..." for the file).
-ParticipantsTable readParticipantsFile(const std::string& path, const script::ProtocolDef& protocol);
+ParticipantsTable readParticipantsFile(const std::string& path, const task::ProtocolDef& protocol);
 
 }  // namespace hemiroll::game

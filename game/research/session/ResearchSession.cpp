@@ -121,7 +121,7 @@ ResearchSession::ResearchSession(const SessionRequest& request) {
   resumed_ = true;
   // The manifest keeps what the session started with; sittings and moved
   // files accumulate.
-  const std::vector<std::pair<std::string, script::TrialOverrides>> current = std::move(trials_);
+  const std::vector<std::pair<std::string, task::TrialOverrides>> current = std::move(trials_);
   manifest_ = *previous;
   trials_ = current;
   const ResumePoint point = findResumePoint(folder_, manifest_.plan);  // results.csv checked readable
@@ -130,13 +130,13 @@ ResearchSession::ResearchSession(const SessionRequest& request) {
   interrupted_ = point.interrupted;
 }
 
-haptics::GuidanceDef guidanceOf(const script::TrialOverrides& overrides, int trialInBlock) {
+haptics::GuidanceDef guidanceOf(const task::TrialOverrides& overrides, int trialInBlock) {
   haptics::GuidanceDef g;
   if (!overrides.guidance) {
     g.scale = 0.0;  // results show fade 0: no guidance at all
     return g;
   }
-  const script::GuidanceSpec& spec = *overrides.guidance;
+  const task::GuidanceSpec& spec = *overrides.guidance;
   haptics::parseGuidanceKind(spec.kind, g.kind);  // the loader accepts only the three names
   g.stiffness = spec.stiffness;
   g.damping = spec.damping;
@@ -149,7 +149,7 @@ void ResearchSession::keepAssignment(const SessionManifest& previous) {
   const std::string which = "session '" + previous.session + "' of participant '" + previous.participant + "'";
   if (!previous.group.empty() && protocol_.group(previous.group) == nullptr)
     badInput(which + " is in group '" + previous.group + "', which the protocol no longer has");
-  if (protocol_.assignment == script::Assignment::ParticipantsFile) {
+  if (protocol_.assignment == task::Assignment::ParticipantsFile) {
     const ParticipantsTable table = readParticipantsFile(protocol_.participantsFile, protocol_);
     const ParticipantRow* row = table.find(previous.participant);
     if (row == nullptr)
@@ -194,8 +194,8 @@ void ResearchSession::checkResultsColumns(const SessionManifest& previous) const
 }
 
 void ResearchSession::buildPlan(const SessionRequest& request, std::uint64_t seed) {
-  const script::ProtocolPlan plan = script::expandProtocol(protocol_, seed, manifest_.blockOrder);
-  const script::GroupDef* group = protocol_.group(manifest_.group);
+  const task::ProtocolPlan plan = task::expandProtocol(protocol_, seed, manifest_.blockOrder);
+  const task::GroupDef* group = protocol_.group(manifest_.group);
   manifest_.experiment = protocol_.experiment;
   manifest_.description = protocol_.description;
   // Paths as text (JSON, CSV): a name that is not UTF-8 is shown with \xNN.
@@ -204,18 +204,18 @@ void ResearchSession::buildPlan(const SessionRequest& request, std::uint64_t see
   manifest_.protocolVersion = protocol_.version;
   manifest_.seed = seed;
   std::map<std::string, LevelFacts> levels;
-  for (const script::PlannedTrial& p : plan.trials) {
-    const script::ConditionDef condition =
-        script::conditionInGroup(script::ProtocolPlan::conditionOf(protocol_, p), p.definedBlock - 1, group);
+  for (const task::PlannedTrial& p : plan.trials) {
+    const task::ConditionDef condition =
+        task::conditionInGroup(task::ProtocolPlan::conditionOf(protocol_, p), p.definedBlock - 1, group);
     auto found = levels.find(condition.levelPath);
     if (found == levels.end()) found = levels.emplace(condition.levelPath, factsOf(condition.levelPath, request.loadLimits)).first;
     const LevelFacts& level = found->second;
-    const physics::CouplingDef coupling = script::overriddenCoupling(condition.overrides, level.coupling);
+    const physics::CouplingDef coupling = task::overriddenCoupling(condition.overrides, level.coupling);
     ManifestTrial t;
     t.index = p.index;
     t.trialId = sessionTrialId(p.index);
     t.block = p.block;
-    t.blockName = script::ProtocolPlan::blockOf(protocol_, p).name;
+    t.blockName = task::ProtocolPlan::blockOf(protocol_, p).name;
     t.trialInBlock = p.trialInBlock;
     t.repetition = p.repetition;
     t.condition = p.condition;
@@ -223,14 +223,14 @@ void ResearchSession::buildPlan(const SessionRequest& request, std::uint64_t see
     t.levelFile = files::printable(condition.levelPath);
     t.levelName = level.name;
     t.levelHash = level.hash;
-    t.method = script::couplingMethodName(coupling);
+    t.method = task::couplingMethodName(coupling);
     t.stiffness = coupling.stiffness;
     t.damping = coupling.damping;
     t.alpha = coupling.alpha;
     t.timeLimit = condition.overrides.timeLimit.value_or(level.timeLimit);
     t.seed = p.seed;
     t.guidance = guidanceOf(condition.overrides, p.trialInBlock);
-    if (const script::BreakDef* b = script::ProtocolPlan::breakBefore(protocol_, p))
+    if (const task::BreakDef* b = task::ProtocolPlan::breakBefore(protocol_, p))
       t.breakBefore = ManifestBreak{b->message, b->minDuration, b->stop};
     manifest_.plan.push_back(std::move(t));
     trials_.emplace_back(condition.levelPath, condition.overrides);
@@ -318,12 +318,12 @@ bool ResearchSession::stopsHere() const {
 std::string ResearchSession::couplingProblem(const haptics::DeviceSpec& device) const {
   for (std::size_t i = static_cast<std::size_t>(done_); i < manifest_.plan.size(); ++i) {
     const ManifestTrial& t = manifest_.plan[i];
-    script::TrialOverrides planned;  // the effective coupling, as overrides of any
+    task::TrialOverrides planned;  // the effective coupling, as overrides of any
     planned.method = t.method;
     planned.stiffness = t.stiffness;
     planned.damping = t.damping;
     planned.alpha = t.alpha;
-    const physics::CouplingDef coupling = script::overriddenCoupling(planned, {});
+    const physics::CouplingDef coupling = task::overriddenCoupling(planned, {});
     if (profile_) {
       const std::string refusal = couplingRefusal(*profile_, coupling, t.levelFile + " (" + t.trialId + ", " + t.conditionLabel + ")");
       if (!refusal.empty()) return refusal;
@@ -343,10 +343,10 @@ script::LoadedLevel ResearchSession::loadNextLevel() const {
   const ManifestTrial& trial = nextTrial();
   const auto& planned = trials_.at(static_cast<std::size_t>(done_));
   const std::string& path = planned.first;
-  const script::TrialOverrides& overrides = planned.second;  // a plain reference: clang 14 captures no structured binding
+  const task::TrialOverrides& overrides = planned.second;  // a plain reference: clang 14 captures no structured binding
   script::LevelLoadOptions options;
   options.seed = trial.seed;
-  options.adjust = [&overrides](script::LevelDef& level) { script::applyTrialOverrides(overrides, level); };
+  options.adjust = [&overrides](task::LevelDef& level) { task::applyTrialOverrides(overrides, level); };
   try {
     return script::LevelLoader(options).loadFile(path);
   } catch (const script::ScriptError& e) {
@@ -354,7 +354,7 @@ script::LoadedLevel ResearchSession::loadNextLevel() const {
   }
 }
 
-std::unique_ptr<TrialRecording> ResearchSession::recordNext(const script::LevelDef& level,
+std::unique_ptr<TrialRecording> ResearchSession::recordNext(const task::LevelDef& level,
                                                             const haptics::ServoLoopDef& loop,
                                                             const std::string& deviceName,
                                                             const haptics::DeviceSpec& spec) const {

@@ -38,7 +38,7 @@ namespace hemiroll::game {
 
 // A condition's guidance for the block's trial `trialInBlock` (1-based):
 // the protocol's spec with the fade value of that trial as its scale.
-haptics::GuidanceDef guidanceOf(const script::TrialOverrides& overrides, int trialInBlock);
+haptics::GuidanceDef guidanceOf(const task::TrialOverrides& overrides, int trialInBlock);
 
 struct SessionRequest {
   std::string protocolPath;
@@ -73,9 +73,9 @@ class ResearchSession {
   // "" or the note of a stale lock taken over by begin().
   const std::string& lockNote() const;
 
-  const script::ProtocolDef& protocol() const { return protocol_; }
+  const task::ProtocolDef& protocol() const { return protocol_; }
   // The device profile the session runs on (the request's or the protocol's); none when neither names one.
-  const std::optional<script::DeviceProfileDef>& deviceProfile() const { return profile_; }
+  const std::optional<task::DeviceProfileDef>& deviceProfile() const { return profile_; }
   const SessionManifest& manifest() const { return manifest_; }
   const std::filesystem::path& folder() const { return folder_; }
   int trialCount() const { return static_cast<int>(manifest_.plan.size()); }
@@ -103,7 +103,7 @@ class ResearchSession {
   // SessionError (BadInput) when it no longer loads.
   script::LoadedLevel loadNextLevel() const;
   // Opens the next trial's recording. Throws SessionError (Environment).
-  std::unique_ptr<TrialRecording> recordNext(const script::LevelDef& level, const haptics::ServoLoopDef& loop,
+  std::unique_ptr<TrialRecording> recordNext(const task::LevelDef& level, const haptics::ServoLoopDef& loop,
                                              const std::string& deviceName, const haptics::DeviceSpec& spec) const;
   // Completes the sidecar, appends the results row and moves on. Throws
   // SessionError (Environment).
@@ -125,8 +125,8 @@ class ResearchSession {
   // begun by a version that wrote other columns), saying why and what to do.
   void checkResultsColumns(const SessionManifest& previous) const;
 
-  script::ProtocolDef protocol_;
-  std::optional<script::DeviceProfileDef> profile_;
+  task::ProtocolDef protocol_;
+  std::optional<task::DeviceProfileDef> profile_;
   SessionManifest manifest_;
   std::filesystem::path folder_;
   std::string player_;
@@ -134,7 +134,7 @@ class ResearchSession {
   bool resumed_ = false;
   std::vector<std::pair<std::string, std::string>> interrupted_;
   // Per planned trial: the level file as found now and the protocol's overrides.
-  std::vector<std::pair<std::string, script::TrialOverrides>> trials_;
+  std::vector<std::pair<std::string, task::TrialOverrides>> trials_;
   std::vector<int> definedBlocks_;  // per planned trial: its block in the protocol file (1-based)
   std::unique_ptr<SessionLock> lock_;
 };

@@ -10,7 +10,7 @@ namespace hemiroll::game {
 std::filesystem::path defaultSessionsRoot() { return record::dataDirectory() / "sessions"; }
 
 std::string checkFolderId(const std::string& id, const char* what) {
-  if (script::isFolderName(id)) return "";
+  if (task::isFolderName(id)) return "";
   return std::string("the ") + what + " '" + id + "' must be 1 to 64 letters, digits, '-' or '_' (it names a folder)";
 }
 

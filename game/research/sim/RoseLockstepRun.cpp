@@ -10,15 +10,15 @@
 
 namespace hemiroll::game {
 
-bool RoseLockstepRun::eligible(const script::ScenarioDef& scenario, const RunSettings& settings) {
-  return scenario.drive.kind == script::DriveKind::Rose && settings.integrator == "rk4" &&
+bool RoseLockstepRun::eligible(const task::ScenarioDef& scenario, const RunSettings& settings) {
+  return scenario.drive.kind == task::DriveKind::Rose && settings.integrator == "rk4" &&
          settings.orientation == physics::OrientationForm::ContactAngles;
 }
 
-RoseLockstepRun::RoseLockstepRun(std::vector<script::ScenarioDef> scenarios, const RunSettings& settings, int width,
+RoseLockstepRun::RoseLockstepRun(std::vector<task::ScenarioDef> scenarios, const RunSettings& settings, int width,
                                  RowContent content)
     : scenarios_(std::move(scenarios)), settings_(settings), width_(width), content_(content) {
-  for (const script::ScenarioDef& s : scenarios_)
+  for (const task::ScenarioDef& s : scenarios_)
     if (!eligible(s, settings_))
       throw std::invalid_argument("a lockstep run takes rose drives with rk4 on the contact angles only");
   if (!physics::laneWidthSupported(width_))
@@ -49,7 +49,7 @@ std::vector<RunSummary> RoseLockstepRun::run(const LaneRowCallback& onRow) const
   };
 
   for (std::size_t lane = 0; lane < lanes; ++lane) {
-    const script::ScenarioDef& s = scenarios_[lane];
+    const task::ScenarioDef& s = scenarios_[lane];
     roses.emplace_back(s.drive.rose);
     systems.emplace_back(s.params, roses.back());
     const physics::BodyState x0 = s.initial.tail<8>();

@@ -22,7 +22,7 @@ class RoseLockstepRun {
  public:
   using LaneRowCallback = std::function<void(std::size_t lane, const TrajectoryRow&)>;
 
-  static bool eligible(const script::ScenarioDef& scenario, const RunSettings& settings);
+  static bool eligible(const task::ScenarioDef& scenario, const RunSettings& settings);
 
   // What a row holds: everything ScenarioRun's has, or only the time and
   // the state (energy and face force left 0, and so the summary's final
@@ -31,14 +31,14 @@ class RoseLockstepRun {
 
   // Every scenario eligible; width is a lane width this CPU runs
   // (physics::laneWidthSupported). Throws std::invalid_argument otherwise.
-  RoseLockstepRun(std::vector<script::ScenarioDef> scenarios, const RunSettings& settings, int width,
+  RoseLockstepRun(std::vector<task::ScenarioDef> scenarios, const RunSettings& settings, int width,
                   RowContent content = RowContent::Full);
 
   // Rows of lane i in the order ScenarioRun::run gives them (lanes interleaved).
   std::vector<RunSummary> run(const LaneRowCallback& onRow) const;
 
  private:
-  std::vector<script::ScenarioDef> scenarios_;
+  std::vector<task::ScenarioDef> scenarios_;
   RunSettings settings_;
   int width_;
   RowContent content_;

@@ -100,11 +100,11 @@ long long ScenarioRun::stepCount(const RunSettings& settings) {
   return static_cast<long long>(std::ceil(ratio));
 }
 
-ScenarioRun::ScenarioRun(const script::ScenarioDef& scenario, const RunSettings& settings)
+ScenarioRun::ScenarioRun(const task::ScenarioDef& scenario, const RunSettings& settings)
     : scenario_(scenario), settings_(settings) {}
 
 RunSummary ScenarioRun::run(const RowCallback& onRow) const {
-  return scenario_.drive.kind == script::DriveKind::Rose ? runRose(onRow) : runForceDriven(onRow);
+  return scenario_.drive.kind == task::DriveKind::Rose ? runRose(onRow) : runForceDriven(onRow);
 }
 
 RunSummary ScenarioRun::runRose(const RowCallback& onRow) const {
@@ -120,8 +120,8 @@ namespace {
 
 // Both forms of the force-driven model take the scenario's input the same way.
 template <class System>
-void applyDrive(const script::ScenarioDef& scenario, System& system) {
-  if (scenario.drive.kind == script::DriveKind::Proxy)
+void applyDrive(const task::ScenarioDef& scenario, System& system) {
+  if (scenario.drive.kind == task::DriveKind::Proxy)
     system.setCoupling(scenario.drive.coupling, *scenario.drive.proxy);
   else
     system.setFree();

@@ -50,10 +50,10 @@ class ScenarioRun {
   // Steps of length timeStep; the last one is shortened to end at duration.
   static long long stepCount(const RunSettings& settings);
 
-  ScenarioRun(const script::ScenarioDef& scenario, const RunSettings& settings);
+  ScenarioRun(const task::ScenarioDef& scenario, const RunSettings& settings);
 
   // True when rows carry F_h (the proxy drive).
-  bool hasHandForce() const { return scenario_.drive.kind == script::DriveKind::Proxy; }
+  bool hasHandForce() const { return scenario_.drive.kind == task::DriveKind::Proxy; }
 
   // Throws script::ScriptError if a Lua proxy fails during the run, and
   // std::invalid_argument for an unknown integrator name.
@@ -64,7 +64,7 @@ class ScenarioRun {
   RunSummary runForceDriven(const RowCallback& onRow) const;
   RunSummary runRotation(const physics::ForceDrivenSystem& rows, const RowCallback& onRow) const;
 
-  script::ScenarioDef scenario_;  // a copy: shares the proxy (and its Lua state), owns the rest
+  task::ScenarioDef scenario_;  // a copy: shares the proxy (and its Lua state), owns the rest
   RunSettings settings_;
 };
 

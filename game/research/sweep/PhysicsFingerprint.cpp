@@ -7,14 +7,14 @@
 
 namespace hemiroll::game {
 
-std::string physicsFingerprintOf(const script::SweepDef& base) {
+std::string physicsFingerprintOf(const task::SweepDef& base) {
   std::string rows;
   for (const char* integrator : {"rk4", "dop853"}) {
-    script::SweepDef def = base;
-    def.start = script::SweepStart::Rest;
+    task::SweepDef def = base;
+    def.start = task::SweepStart::Rest;
     def.duration = 4.0;  // from rest the paper's drive is chaotic: ulps become millimetres by then
     def.integrator = integrator;  // dop853 at the base spec's tolerance
-    def.axes = {script::SweepAxis{script::SweepParam::k, {def.rose.k}, false}};
+    def.axes = {task::SweepAxis{task::SweepParam::k, {def.rose.k}, false}};
     const SweepGrid grid(def);
     const SweepPoint point = grid.point(0);
     rows += sweepRow(point, measurePoint(grid, point));
@@ -23,7 +23,7 @@ std::string physicsFingerprintOf(const script::SweepDef& base) {
 }
 
 const std::string& physicsFingerprint() {
-  static const std::string fingerprint = physicsFingerprintOf(script::SweepDef{});
+  static const std::string fingerprint = physicsFingerprintOf(task::SweepDef{});
   return fingerprint;
 }
 

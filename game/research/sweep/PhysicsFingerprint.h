@@ -22,6 +22,6 @@ const std::string& physicsFingerprint();
 // The same for a given base spec (its params, rose and tolerance; the start,
 // duration, integrator and axes are the fingerprint's own): the test's
 // handle on what the fingerprint sees.
-std::string physicsFingerprintOf(const script::SweepDef& base);
+std::string physicsFingerprintOf(const task::SweepDef& base);
 
 }  // namespace hemiroll::game

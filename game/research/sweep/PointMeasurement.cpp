@@ -30,7 +30,7 @@ double PointMeasurement::relativeSpread() const {
   return p.found && p.steadyRateMedian != 0.0 ? p.steadyRateSpread / std::abs(p.steadyRateMedian) : 0.0;
 }
 
-bool PointMeasurement::meetsPaper(const script::SweepAnalysisDef& def) const {
+bool PointMeasurement::meetsPaper(const task::SweepAnalysisDef& def) const {
   return event == physics::DomainEvent::None && features.phases.found && steadyFraction() >= def.minSteadyFraction &&
          relativeSpread() <= def.maxRelativeSpread && helixInSteadyPhase && features.helix.arc.found &&
          features.helix.loops.found;
@@ -54,7 +54,7 @@ long long sampleEvery(double timeStep) {
 
 namespace {
 
-RunSettings settingsOf(const script::SweepDef& def) {
+RunSettings settingsOf(const task::SweepDef& def) {
   RunSettings settings;
   settings.duration = def.duration;
   settings.timeStep = def.timeStep;
@@ -87,7 +87,7 @@ class PointRecorder {
     maxTilt_ = std::max(maxTilt_, std::acos(std::clamp(cosTilt, -1.0, 1.0)));
   }
 
-  PointMeasurement finish(const script::SweepDef& def, const RunSummary& summary) const {
+  PointMeasurement finish(const task::SweepDef& def, const RunSummary& summary) const {
     PointMeasurement m;
     m.duration = def.duration;
     m.maxTilt = maxTilt_;
@@ -110,7 +110,7 @@ class PointRecorder {
   double maxTilt_ = 0.0;
 };
 
-PointMeasurement measureScenario(const script::SweepDef& def, const script::ScenarioDef& scenario,
+PointMeasurement measureScenario(const task::SweepDef& def, const task::ScenarioDef& scenario,
                                  const RunSettings& settings) {
   PointRecorder recorder(settings);
   const RunSummary summary = ScenarioRun(scenario, settings).run([&](const TrajectoryRow& row) { recorder.add(row); });
@@ -126,7 +126,7 @@ PointMeasurement measurePoint(const SweepGrid& grid, const SweepPoint& point) {
 std::vector<PointMeasurement> measurePoints(const SweepGrid& grid, const std::vector<SweepPoint>& points,
                                             int laneWidth) {
   const RunSettings settings = settingsOf(grid.def());
-  std::vector<script::ScenarioDef> scenarios;
+  std::vector<task::ScenarioDef> scenarios;
   bool lockstep = laneWidth > 1 && points.size() > 1;
   for (const SweepPoint& point : points) {
     scenarios.push_back(grid.scenario(point));
@@ -134,7 +134,7 @@ std::vector<PointMeasurement> measurePoints(const SweepGrid& grid, const std::ve
   }
   std::vector<PointMeasurement> out;
   if (!lockstep) {
-    for (const script::ScenarioDef& scenario : scenarios) out.push_back(measureScenario(grid.def(), scenario, settings));
+    for (const task::ScenarioDef& scenario : scenarios) out.push_back(measureScenario(grid.def(), scenario, settings));
     return out;
   }
   std::vector<PointRecorder> recorders;  // each built in place: a copy would not keep the reserved columns

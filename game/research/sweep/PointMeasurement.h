@@ -33,7 +33,7 @@ struct PointMeasurement {
   // No event; a steady phase covering at least minSteadyFraction of the
   // run with a relative spread at most maxRelativeSpread; the arc and the
   // loops found in that phase.
-  bool meetsPaper(const script::SweepAnalysisDef& def) const;
+  bool meetsPaper(const task::SweepAnalysisDef& def) const;
   // What was not found, and why, in one line ("" when everything was).
   std::string notes() const;
 };

@@ -7,7 +7,7 @@
 
 namespace hemiroll::game {
 
-SweepGrid::SweepGrid(script::SweepDef def) : def_(std::move(def)), size_(def_.pointCount()) {}
+SweepGrid::SweepGrid(task::SweepDef def) : def_(std::move(def)), size_(def_.pointCount()) {}
 
 SweepPoint SweepGrid::point(long long index) const {
   if (index < 0 || index >= size_) throw std::out_of_range("sweep point index out of range");
@@ -22,17 +22,17 @@ SweepPoint SweepGrid::point(long long index) const {
     const long long n = static_cast<long long>(values.size());
     p.position[a] = static_cast<int>(rest % n);
     rest /= n;
-    script::setSweepParam(def_.axes[a].param, values[static_cast<std::size_t>(p.position[a])], p.params, p.rose);
+    task::setSweepParam(def_.axes[a].param, values[static_cast<std::size_t>(p.position[a])], p.params, p.rose);
   }
-  if (def_.start == script::SweepStart::Equilibrium) p.startTilt = staticTilt(p.params, p.rose.r1 + p.rose.r2);
+  if (def_.start == task::SweepStart::Equilibrium) p.startTilt = staticTilt(p.params, p.rose.r1 + p.rose.r2);
   return p;
 }
 
-script::ScenarioDef SweepGrid::scenario(const SweepPoint& point) const {
-  script::ScenarioDef s;
+task::ScenarioDef SweepGrid::scenario(const SweepPoint& point) const {
+  task::ScenarioDef s;
   s.source = def_.source;
   s.params = point.params;
-  s.drive.kind = script::DriveKind::Rose;
+  s.drive.kind = task::DriveKind::Rose;
   s.drive.rose = point.rose;
   s.initial[physics::force_slot::u_o] = -point.startTilt;
   s.duration = def_.duration;

@@ -23,17 +23,17 @@ struct SweepPoint {
 
 class SweepGrid {
  public:
-  explicit SweepGrid(script::SweepDef def);
+  explicit SweepGrid(task::SweepDef def);
 
-  const script::SweepDef& def() const { return def_; }
+  const task::SweepDef& def() const { return def_; }
   long long size() const { return size_; }
   // index in [0, size()).
   SweepPoint point(long long index) const;
   // The scenario that runs the point: the rose drive from its start.
-  script::ScenarioDef scenario(const SweepPoint& point) const;
+  task::ScenarioDef scenario(const SweepPoint& point) const;
 
  private:
-  script::SweepDef def_;
+  task::SweepDef def_;
   long long size_;
 };
 

@@ -31,10 +31,10 @@ struct AxisView {
   report::AxisSpec spec;
 };
 
-AxisView viewOf(const script::SweepAxis& axis) {
-  const script::SweepParamInfo& info = script::sweepParamInfo(axis.param);
-  const bool length = axis.param == script::SweepParam::R || axis.param == script::SweepParam::r1 ||
-                      axis.param == script::SweepParam::r2;
+AxisView viewOf(const task::SweepAxis& axis) {
+  const task::SweepParamInfo& info = task::sweepParamInfo(axis.param);
+  const bool length = axis.param == task::SweepParam::R || axis.param == task::SweepParam::r1 ||
+                      axis.param == task::SweepParam::r2;
   std::vector<double> coordinate;
   for (double v : axis.values) coordinate.push_back(axis.log ? std::log10(std::abs(v)) : v);
   std::vector<std::size_t> order(coordinate.size());
@@ -58,12 +58,12 @@ AxisView viewOf(const script::SweepAxis& axis) {
   return view;
 }
 
-std::size_t axisIndex(const script::SweepDef& spec, script::SweepParam param) {
+std::size_t axisIndex(const task::SweepDef& spec, task::SweepParam param) {
   for (std::size_t a = 0; a < spec.axes.size(); ++a)
     if (spec.axes[a].param == param) return a;
   std::string axes;
-  for (const script::SweepAxis& a : spec.axes) axes += (axes.empty() ? "" : ", ") + std::string(script::sweepParamInfo(a.param).name);
-  badInput(std::string(script::sweepParamInfo(param).name) + " is not an axis of this sweep (its axes: " + axes + ")");
+  for (const task::SweepAxis& a : spec.axes) axes += (axes.empty() ? "" : ", ") + std::string(task::sweepParamInfo(a.param).name);
+  badInput(std::string(task::sweepParamInfo(param).name) + " is not an axis of this sweep (its axes: " + axes + ")");
 }
 
 char eventMark(const std::string& event) {
@@ -87,10 +87,10 @@ double metricValue(const std::vector<std::string>& row, const SweepMetric& metri
   return v;
 }
 
-std::string otherAxes(const script::SweepDef& spec, std::size_t ax, std::size_t ay) {
+std::string otherAxes(const task::SweepDef& spec, std::size_t ax, std::size_t ay) {
   std::string out;
   for (std::size_t a = 0; a < spec.axes.size(); ++a)
-    if (a != ax && a != ay) out += (out.empty() ? "" : ", ") + std::string(script::sweepParamInfo(spec.axes[a].param).name);
+    if (a != ax && a != ay) out += (out.empty() ? "" : ", ") + std::string(task::sweepParamInfo(spec.axes[a].param).name);
   return out;
 }
 
@@ -115,7 +115,7 @@ SweepData loadSweep(const fs::path& dir) {
 }
 
 report::HeatmapDef sweepHeatmap(const SweepData& data, const MapRequest& request, bool compact) {
-  const script::SweepDef& spec = data.spec;
+  const task::SweepDef& spec = data.spec;
   const SweepMetric& metric = *request.metric;
   const std::size_t ax = axisIndex(spec, request.x), ay = axisIndex(spec, request.y);
   if (ax == ay) badInput("--x and --y name the same axis; a map needs two");
@@ -188,12 +188,12 @@ std::vector<std::pair<std::string, std::string>> sweepMapSheets(const SweepData&
   const auto& axes = data.spec.axes;
   for (std::size_t a = 0; a < axes.size(); ++a) {
     for (std::size_t b = a + 1; b < axes.size(); ++b) {
-      const char* x = script::sweepParamInfo(axes[a].param).name;
-      const char* y = script::sweepParamInfo(axes[b].param).name;
+      const char* x = task::sweepParamInfo(axes[a].param).name;
+      const char* y = task::sweepParamInfo(axes[b].param).name;
       const long long perCell = static_cast<long long>(data.rows.size() / (axes[a].values.size() * axes[b].values.size()));
       std::string title = fs::path(data.manifest.specFile).filename().string() + ": " + x + " x " + y + ", " +
                           std::to_string(data.rows.size()) + " points from " +
-                          (data.spec.start == script::SweepStart::Rest ? "rest" : "the static tilt");
+                          (data.spec.start == task::SweepStart::Rest ? "rest" : "the static tilt");
       if (perCell > 1) title += "; each cell aggregates " + std::to_string(perCell) + " over " + otherAxes(data.spec, a, b);
       report::PlotSheet sheet(3, 480.0, 360.0, title + " (" + data.manifest.specHash + ")");
       for (const char* name : sheetMetrics())

@@ -24,7 +24,7 @@ namespace hemiroll::game {
 
 struct SweepData {
   SweepManifest manifest;
-  script::SweepDef spec;
+  task::SweepDef spec;
   std::vector<std::vector<std::string>> rows;  // point order, every point
 };
 
@@ -33,7 +33,7 @@ struct SweepData {
 SweepData loadSweep(const std::filesystem::path& dir);
 
 struct MapRequest {
-  script::SweepParam x = script::SweepParam::k, y = script::SweepParam::Omega;
+  task::SweepParam x = task::SweepParam::k, y = task::SweepParam::Omega;
   const SweepMetric* metric = nullptr;
   std::optional<Aggregate> aggregate;  // unset: the metric's default
 };

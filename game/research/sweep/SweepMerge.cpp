@@ -98,9 +98,9 @@ MergedSweep mergeSweepParts(const std::vector<fs::path>& dirs) {
 
   // points_total is not covered by the spec hash: a forged or damaged one
   // must be refused before it sizes anything, and every part must agree.
-  if (first.pointsTotal < 1 || first.pointsTotal > script::kMaxSweepPoints)
+  if (first.pointsTotal < 1 || first.pointsTotal > task::kMaxSweepPoints)
     badInput(parts.front().manifestPath.string() + " says points_total = " + std::to_string(first.pointsTotal) +
-             "; a sweep has 1 to " + std::to_string(script::kMaxSweepPoints) + " points");
+             "; a sweep has 1 to " + std::to_string(task::kMaxSweepPoints) + " points");
   for (const Part& p : parts)
     if (p.manifest.pointsTotal != first.pointsTotal)
       badInput(p.manifestPath.string() + " says points_total = " + std::to_string(p.manifest.pointsTotal) + ", " +

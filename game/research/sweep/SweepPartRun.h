@@ -21,7 +21,7 @@
 namespace hemiroll::game {
 
 struct SweepPartRequest {
-  script::SweepDef def;
+  task::SweepDef def;
   std::string specFile;            // as given (recorded in the manifest)
   SweepShard shard;
   std::filesystem::path outDir;

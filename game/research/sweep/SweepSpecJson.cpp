@@ -11,14 +11,14 @@ namespace {
 
 using json = nlohmann::ordered_json;  // keys in the order written: the canonical text
 
-json toJson(const script::SweepDef& d) {
+json toJson(const task::SweepDef& d) {
   json axes = json::array();
-  for (const script::SweepAxis& a : d.axes)
-    axes.push_back({{"param", script::sweepParamInfo(a.param).name}, {"values", a.values}, {"log", a.log}});
+  for (const task::SweepAxis& a : d.axes)
+    axes.push_back({{"param", task::sweepParamInfo(a.param).name}, {"values", a.values}, {"log", a.log}});
   return {{"params", {{"R_m", d.params.radius}, {"m_s_kg", d.params.shellMass}, {"m_p_kg", d.params.pointMass},
                       {"g_m_per_s2", d.params.gravity}}},
           {"drive", {{"r1_m", d.rose.r1}, {"r2_m", d.rose.r2}, {"k", d.rose.k}, {"Omega_rad_per_s", d.rose.omega}}},
-          {"start", script::sweepStartName(d.start)},
+          {"start", task::sweepStartName(d.start)},
           {"duration_s", d.duration},
           {"dt_s", d.timeStep},
           {"integrator", d.integrator},
@@ -32,12 +32,12 @@ json toJson(const script::SweepDef& d) {
 
 }  // namespace
 
-std::string specJson(const script::SweepDef& def) { return toJson(def).dump(); }
+std::string specJson(const task::SweepDef& def) { return toJson(def).dump(); }
 
-std::string specHash(const script::SweepDef& def) { return record::contentHash(specJson(def)); }
+std::string specHash(const task::SweepDef& def) { return record::contentHash(specJson(def)); }
 
-script::SweepDef specFromJson(const std::string& text, const std::string& where) {
-  script::SweepDef d;
+task::SweepDef specFromJson(const std::string& text, const std::string& where) {
+  task::SweepDef d;
   try {
     const json j = json::parse(text);
     const json& p = j.at("params");
@@ -48,7 +48,7 @@ script::SweepDef specFromJson(const std::string& text, const std::string& where)
               r.at("Omega_rad_per_s").get<double>()};
     const std::string start = j.at("start").get<std::string>();
     if (start != "rest" && start != "equilibrium") throw std::invalid_argument("unknown start '" + start + "'");
-    d.start = start == "rest" ? script::SweepStart::Rest : script::SweepStart::Equilibrium;
+    d.start = start == "rest" ? task::SweepStart::Rest : task::SweepStart::Equilibrium;
     d.duration = j.at("duration_s").get<double>();
     d.timeStep = j.at("dt_s").get<double>();
     d.integrator = j.at("integrator").get<std::string>();
@@ -58,7 +58,7 @@ script::SweepDef specFromJson(const std::string& text, const std::string& where)
                   a.at("absolute_band_rad_per_s").get<double>(), a.at("min_steady_fraction").get<double>(),
                   a.at("max_relative_spread").get<double>()};
     for (const json& a : j.at("axes")) {
-      const auto param = script::findSweepParam(a.at("param").get<std::string>());
+      const auto param = task::findSweepParam(a.at("param").get<std::string>());
       if (!param) throw std::invalid_argument("unknown parameter '" + a.at("param").get<std::string>() + "'");
       d.axes.push_back({*param, a.at("values").get<std::vector<double>>(), a.at("log").get<bool>()});
       if (d.axes.back().values.empty()) throw std::invalid_argument("an axis without values");

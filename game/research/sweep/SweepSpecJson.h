@@ -13,11 +13,11 @@
 namespace hemiroll::game {
 
 // Compact JSON text (no description, no source: they decide no row).
-std::string specJson(const script::SweepDef& def);
+std::string specJson(const task::SweepDef& def);
 // "fnv1a-<16 hex digits>" of specJson(def).
-std::string specHash(const script::SweepDef& def);
+std::string specHash(const task::SweepDef& def);
 // The spec back from specJson's text; throws SweepError (bad input) naming
 // `where` when it is not one.
-script::SweepDef specFromJson(const std::string& text, const std::string& where);
+task::SweepDef specFromJson(const std::string& text, const std::string& where);
 
 }  // namespace hemiroll::game

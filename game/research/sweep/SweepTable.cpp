@@ -48,7 +48,7 @@ class Fields {
 const std::vector<std::string>& sweepColumns() {
   static const std::vector<std::string> kColumns = [] {
     std::vector<std::string> c = {"point"};
-    for (const script::SweepParamInfo& info : script::sweepParams()) c.emplace_back(info.column);
+    for (const task::SweepParamInfo& info : task::sweepParams()) c.emplace_back(info.column);
     for (const char* name :
          {"start_tilt_rad", "event", "event_time_s", "simulated_s", "max_tilt_rad", "mean_rate_rad_per_s",
           "steady_found", "steady_start_s", "steady_end_s", "steady_fraction", "steady_rate_rad_per_s",
@@ -73,8 +73,8 @@ std::string sweepRow(const SweepPoint& point, const PointMeasurement& m) {
   const bool stopped = m.event != physics::DomainEvent::None;
   Fields row;
   row.integer(point.index);
-  for (const script::SweepParamInfo& info : script::sweepParams())
-    row.number(script::sweepParamValue(info.param, point.params, point.rose));
+  for (const task::SweepParamInfo& info : task::sweepParams())
+    row.number(task::sweepParamValue(info.param, point.params, point.rose));
   row.number(point.startTilt)
       .text(stopped ? physics::domainEventName(m.event) : "none")
       .numberIf(stopped, m.eventTime)

@@ -18,7 +18,7 @@ constexpr double kDegrees = 180.0 / std::numbers::pi;
 // In TaskVariable order, then omega_norm. Positions in millimetres (the
 // targets are centimetres away, the bands a millimetre wide), angles in
 // degrees (a player's intuition for tilt), rates per second of those.
-constexpr std::array<PlayerUnit, script::kTaskVariableCount> kTaskUnits = {{
+constexpr std::array<PlayerUnit, task::kTaskVariableCount> kTaskUnits = {{
     {"mass point x", "mm", 1e3},
     {"mass point y", "mm", 1e3},
     {"mass point speed x", "mm/s", 1e3},
@@ -36,11 +36,11 @@ constexpr std::array<PlayerUnit, script::kTaskVariableCount> kTaskUnits = {{
 
 }  // namespace
 
-PlayerUnit playerUnitOf(script::TaskVariable variable) { return kTaskUnits[static_cast<std::size_t>(variable)]; }
+PlayerUnit playerUnitOf(task::TaskVariable variable) { return kTaskUnits[static_cast<std::size_t>(variable)]; }
 
 std::optional<HudChannel> HudChannel::fromName(std::string_view name) {
-  if (const std::optional<script::TaskVariable> v = script::taskVariableFromName(name)) {
-    if (*v == script::TaskVariable::omega_norm) return HudChannel(Source::OmegaNorm, 0, playerUnitOf(*v));
+  if (const std::optional<task::TaskVariable> v = task::taskVariableFromName(name)) {
+    if (*v == task::TaskVariable::omega_norm) return HudChannel(Source::OmegaNorm, 0, playerUnitOf(*v));
     return HudChannel(Source::StateSlot, static_cast<int>(*v), playerUnitOf(*v));
   }
   // The channels that are not state variables: LevelLoader's names.

@@ -21,7 +21,7 @@ struct PlayerUnit {
 };
 
 // How the HUD names a judged variable and in which unit it shows it.
-PlayerUnit playerUnitOf(script::TaskVariable variable);
+PlayerUnit playerUnitOf(task::TaskVariable variable);
 
 class HudChannel {
  public:

@@ -110,7 +110,7 @@ std::vector<std::string> PlayHud::messages(double now) const {
   return out;
 }
 
-void PlayHud::update(const haptics::ServoSnapshot& s, const script::TaskJudge& judge) {
+void PlayHud::update(const haptics::ServoSnapshot& s, const task::TaskJudge& judge) {
   namespace slot = physics::force_slot;
   HudReadout& r = readout_;
   r.time = s.time;
@@ -135,13 +135,13 @@ void PlayHud::update(const haptics::ServoSnapshot& s, const script::TaskJudge& j
   double du = 0.0, dv = 0.0;
   bool contactTarget = false;
   for (int i = 0; i < componentCount_; ++i) {
-    const script::ComponentStatus& c = components_[static_cast<std::size_t>(i)];
+    const task::ComponentStatus& c = components_[static_cast<std::size_t>(i)];
     if (c.inside) ++r.componentsInside;
-    if (c.variable == script::TaskVariable::u_a) { du = c.error; contactTarget = true; }
-    if (c.variable == script::TaskVariable::v_a) { dv = c.error; contactTarget = true; }
+    if (c.variable == task::TaskVariable::u_a) { du = c.error; contactTarget = true; }
+    if (c.variable == task::TaskVariable::v_a) { dv = c.error; contactTarget = true; }
   }
   r.distanceToTarget = contactTarget ? std::hypot(du, dv) : -1.0;
-  adviceCount_ = game::adviceRows(std::span<const script::ComponentStatus>(components_.data(), componentCount_),
+  adviceCount_ = game::adviceRows(std::span<const task::ComponentStatus>(components_.data(), componentCount_),
                                   screenYaw_, advice_);
 
   // Precession: psi's rate between frames (unwrapped), not w_z, which is the
@@ -161,28 +161,28 @@ void PlayHud::update(const haptics::ServoSnapshot& s, const script::TaskJudge& j
 
 // The value and what it wants, not their difference: "off by" (value -
 // target) made the player negate it (issue 27).
-void PlayHud::componentLine(const script::ComponentStatus& c, std::span<char> out) {
+void PlayHud::componentLine(const task::ComponentStatus& c, std::span<char> out) {
   const PlayerUnit u = playerUnitOf(c.variable);
   const int d = decimalsFor(c.tolerance * u.scale);
   std::snprintf(out.data(), out.size(), "%s (%s) %+.*f %s, wants %+.*f ±%.*f %s", u.label,
-                script::taskVariableName(c.variable), d, (c.target + c.error) * u.scale, u.unit, d,
+                task::taskVariableName(c.variable), d, (c.target + c.error) * u.scale, u.unit, d,
                 c.target * u.scale, d, c.tolerance * u.scale, u.unit);
 }
 
-std::string PlayHud::componentLine(const script::ComponentStatus& c) {
+std::string PlayHud::componentLine(const task::ComponentStatus& c) {
   std::array<char, 128> line{};
   componentLine(c, line);
   return line.data();
 }
 
-void PlayHud::holdBreakLine(const script::HoldBreak& b, std::span<char> out) {
+void PlayHud::holdBreakLine(const task::HoldBreak& b, std::span<char> out) {
   const PlayerUnit u = playerUnitOf(b.variable);
   const int d = b.excess * u.scale < 1.0 ? 2 : 1;
   std::snprintf(out.data(), out.size(), "the %s went out by %.*f %s after %.1f s", playerGroupName(b.variable), d,
                 b.excess * u.scale, u.unit, b.heldFor);
 }
 
-std::string PlayHud::holdBreakLine(const script::HoldBreak& b) {
+std::string PlayHud::holdBreakLine(const task::HoldBreak& b) {
   std::array<char, 128> line{};
   holdBreakLine(b, line);
   return line.data();
@@ -263,7 +263,7 @@ WindowRect PlayHud::drawTable(const WindowRect& messages) {
   ImGui::SetNextWindowBgAlpha(0.7f);
   ImGui::Begin("table", nullptr, kPanel);
   for (int k = 0; k < componentCount_; ++k) {
-    const script::ComponentStatus& c = components_[static_cast<std::size_t>(k)];
+    const task::ComponentStatus& c = components_[static_cast<std::size_t>(k)];
     std::array<char, 128> line{};
     componentLine(c, line);
     wrappedText(c.inside ? kGreen : kRed, line.data());

@@ -44,7 +44,7 @@ struct HudReadout {
   bool allInside = false;
   double precessionRate = 0.0;         // d psi / dt [rad/s]
   double holdTime = 0.0, requiredHold = 0.0;  // [s]
-  script::HoldBreak holdBreak;         // the last hold lost in this stage
+  task::HoldBreak holdBreak;         // the last hold lost in this stage
   Tilt tilt;
   bool loopWarning = false;            // late ticks or missed ticks seen
   double latenessMs = 0.0;             // the snapshot's worst lateness so far [ms]
@@ -64,7 +64,7 @@ class PlayHud {
   PlayHud();
   void reset();
   // Once per frame, from the latest snapshot and the judge.
-  void update(const haptics::ServoSnapshot& snapshot, const script::TaskJudge& judge);
+  void update(const haptics::ServoSnapshot& snapshot, const task::TaskJudge& judge);
   const HudReadout& readout() const { return readout_; }
 
   // Text the HUD names; set when a session starts.
@@ -124,11 +124,11 @@ class PlayHud {
   // One judged component for the full table, in its physics name and the
   // player's unit, e.g. "contact x (u_a) -28.0 mm, wants -40.0 ±4.0 mm";
   // written into `out` (no allocation) or returned.
-  static void componentLine(const script::ComponentStatus& c, std::span<char> out);
-  static std::string componentLine(const script::ComponentStatus& c);
+  static void componentLine(const task::ComponentStatus& c, std::span<char> out);
+  static std::string componentLine(const task::ComponentStatus& c);
   // Why the last hold was lost, e.g. "the tilt went out by 0.40 ° after 0.6 s".
-  static void holdBreakLine(const script::HoldBreak& b, std::span<char> out);
-  static std::string holdBreakLine(const script::HoldBreak& b);
+  static void holdBreakLine(const task::HoldBreak& b, std::span<char> out);
+  static std::string holdBreakLine(const task::HoldBreak& b);
   // Decimals for a plot axis spanning `range` (in its unit) so its ends differ.
   static int axisDecimals(double range);
   // `value` as drawn with `decimals`: 0 when it rounds to zero (no "-0.0").
@@ -147,7 +147,7 @@ class PlayHud {
   WindowRect drawPlots();
 
   HudReadout readout_;
-  std::array<script::ComponentStatus, 16> components_{};
+  std::array<task::ComponentStatus, 16> components_{};
   int componentCount_ = 0;
   std::array<AdviceRow, 8> advice_{};
   int adviceCount_ = 0;

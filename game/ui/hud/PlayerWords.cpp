@@ -11,7 +11,7 @@ namespace hemiroll::game {
 
 namespace {
 
-using script::TaskVariable;
+using task::TaskVariable;
 constexpr double kDegrees = 180.0 / std::numbers::pi;
 
 enum class Group : int { Contact, FacePoint, FaceSpeed, Rolling, Turning, Tilt, Heading, Spin };
@@ -150,9 +150,9 @@ const char* screenDirectionWords(double right, double up) {
   return kWords[i];
 }
 
-int adviceRows(std::span<const script::ComponentStatus> components, double heading, std::span<AdviceRow> out) {
+int adviceRows(std::span<const task::ComponentStatus> components, double heading, std::span<AdviceRow> out) {
   std::array<Gathered, kGroups> groups{};
-  for (const script::ComponentStatus& c : components) {
+  for (const task::ComponentStatus& c : components) {
     Gathered& g = groups[static_cast<std::size_t>(groupOf(c.variable))];
     ++g.members;
     g.error[secondOfPair(c.variable) ? 1 : 0] = c.error;
@@ -176,10 +176,10 @@ int adviceRows(std::span<const script::ComponentStatus> components, double headi
   return rows;
 }
 
-std::string taskGoal(const script::StageDef& stage, int index, int count) {
+std::string taskGoal(const task::StageDef& stage, int index, int count) {
   bool contact = false, still = false, upright = false, middle = false, heading = false;
   double lean = 0.0, pointOff = 0.0, headingTo = 0.0;
-  for (const script::TargetDef& t : stage.targets) {
+  for (const task::TargetDef& t : stage.targets) {
     switch (groupOf(t.variable)) {
       case Group::Contact: contact = true; break;
       case Group::Tilt:

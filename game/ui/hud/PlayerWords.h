@@ -31,11 +31,11 @@ struct AdviceRow {
 // groups above; returns how many were written (at most out.size()).
 // `screenRightHeading` [rad] turns plane directions into screen ones
 // (render::screenRightHeading of the camera).
-int adviceRows(std::span<const script::ComponentStatus> components, double screenRightHeading,
+int adviceRows(std::span<const task::ComponentStatus> components, double screenRightHeading,
                std::span<AdviceRow> out);
 
 // The group's name as a player says it ("contact point", "tilt", ...).
-const char* playerGroupName(script::TaskVariable variable);
+const char* playerGroupName(task::TaskVariable variable);
 
 // A move on screen [any unit] as a direction: "right", "up-left", ... ("up"
 // is away from the camera, where the mouse's forward stroke goes).
@@ -44,6 +44,6 @@ const char* screenDirectionWords(double right, double up);
 // The stage's task, short enough to stay on screen: "Goal: the contact point
 // onto the green square, then upright, still, the mass point in the middle;
 // hold 1.0 s". `index` is 0-based; a multi-stage task says which stage.
-std::string taskGoal(const script::StageDef& stage, int index, int count);
+std::string taskGoal(const task::StageDef& stage, int index, int count);
 
 }  // namespace hemiroll::game

@@ -20,11 +20,11 @@ std::unique_ptr<PlaySession> FreePlay::begin(script::LoadedLevel& level, PlaySes
   return std::make_unique<PlaySession>(level, def);
 }
 
-physics::CouplingDef FreePlay::coupling(const script::LevelDef& level) const {
+physics::CouplingDef FreePlay::coupling(const task::LevelDef& level) const {
   return couplingFor(host_.settings(), level.coupling);
 }
 
-void FreePlay::finished(PlaySession& session, TrialResult result, const script::LevelDef& level,
+void FreePlay::finished(PlaySession& session, TrialResult result, const task::LevelDef& level,
                         TrialEnding ending) {
   std::string replayNote = session.replayError();
   if (host_.settings().overrideCoupling) replayNote = "no replay: the force method was overridden in the settings";

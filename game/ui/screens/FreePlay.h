@@ -24,11 +24,11 @@ class FreePlay final : public PlayMode {
 
   const std::string& levelPath() const override { return levelPath_; }
   std::unique_ptr<PlaySession> begin(script::LoadedLevel& level, PlaySessionDef& def) override;
-  physics::CouplingDef coupling(const script::LevelDef& level) const override;
-  std::string title(const script::LevelDef& level) const override { return level.name; }
+  physics::CouplingDef coupling(const task::LevelDef& level) const override;
+  std::string title(const task::LevelDef& level) const override { return level.name; }
   bool ghostAllowed() const override { return true; }
   bool restartAllowed() const override { return true; }
-  void finished(PlaySession& session, TrialResult result, const script::LevelDef& level,
+  void finished(PlaySession& session, TrialResult result, const task::LevelDef& level,
                 TrialEnding ending) override;
   void leftWithoutTrial(const std::string& error) override;
 

@@ -30,7 +30,7 @@ struct LevelEntry {
   // Not loaded: the listing's time ran out before this file (ListingBudget.h).
   // Shown with a note; choosing it loads it in full.
   bool pending = false;
-  script::ScoringDef scoring;  // the medal thresholds the card shows
+  task::ScoringDef scoring;  // the medal thresholds the card shows
   std::optional<MedalTimes> medalTimes;  // the thresholds as times, where the score is a time
   LevelBest best;
 };

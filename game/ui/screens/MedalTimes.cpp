@@ -12,12 +12,12 @@ constexpr int kProbes = 64;  // times across the limit at which the score is ask
 }  // namespace
 
 std::optional<MedalTimes> medalTimes(script::LoadedLevel& level) {
-  const script::ScoringDef& scoring = level.def.scoring;
+  const task::ScoringDef& scoring = level.def.scoring;
   if (!scoring.hasMedals || !scoring.hasScoreFunction || !level.script) return std::nullopt;
   const double limit = level.def.task.timeLimit;
   if (!(limit > 0.0) || !std::isfinite(limit)) return std::nullopt;
-  script::TrialSummary success;
-  success.outcome = script::TrialOutcome::Success;
+  task::TrialSummary success;
+  success.outcome = task::TrialOutcome::Success;
   success.reason = "success";
   success.stageCount = static_cast<int>(level.def.task.stages.size());
   success.stagesPassed = success.stageCount;
@@ -61,7 +61,7 @@ std::optional<MedalTimes> medalTimes(script::LoadedLevel& level) {
   return t;
 }
 
-std::string medalLine(const script::ScoringDef& scoring, const std::optional<MedalTimes>& times) {
+std::string medalLine(const task::ScoringDef& scoring, const std::optional<MedalTimes>& times) {
   if (!scoring.hasMedals) return "";
   char line[160];
   if (times)

@@ -22,6 +22,6 @@ std::optional<MedalTimes> medalTimes(script::LoadedLevel& level);
 
 // "gold in 40 s, silver 46 s, bronze 170 s" when `times`, else
 // "bronze 70, silver 194, gold 200 points"; "" without medals.
-std::string medalLine(const script::ScoringDef& scoring, const std::optional<MedalTimes>& times);
+std::string medalLine(const task::ScoringDef& scoring, const std::optional<MedalTimes>& times);
 
 }  // namespace hemiroll::game

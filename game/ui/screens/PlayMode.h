@@ -30,15 +30,15 @@ class PlayMode {
   // message for the player when the trial cannot start.
   virtual std::unique_ptr<PlaySession> begin(script::LoadedLevel& level, PlaySessionDef& def) = 0;
   // The coupling the trial runs with (the HUD shows its method).
-  virtual physics::CouplingDef coupling(const script::LevelDef& level) const = 0;
+  virtual physics::CouplingDef coupling(const task::LevelDef& level) const = 0;
   // The HUD's title.
-  virtual std::string title(const script::LevelDef& level) const = 0;
+  virtual std::string title(const task::LevelDef& level) const = 0;
   virtual bool ghostAllowed() const = 0;
   virtual bool restartAllowed() const = 0;
   // The judge ended the trial (`session` finished, its result in `result`,
   // the last frame and what decided it in `ending`): the mode changes the
   // screen stack.
-  virtual void finished(PlaySession& session, TrialResult result, const script::LevelDef& level,
+  virtual void finished(PlaySession& session, TrialResult result, const task::LevelDef& level,
                         TrialEnding ending) = 0;
   // The trial could not start (`error`) and the player left.
   virtual void leftWithoutTrial(const std::string& error) = 0;

@@ -319,11 +319,11 @@ void PlayScreen::showAutopilot() {
 // The task's short form for the stage the judge is on: on screen all along
 // (the level's own texts come and go).
 void PlayScreen::showGoal() {
-  const script::TaskJudge& judge = session_->judging().judge();
+  const task::TaskJudge& judge = session_->judging().judge();
   const int stage = judge.stage();
   if (stage == goalStage_) return;
   goalStage_ = stage;
-  const script::StageDef* current = judge.currentStage();
+  const task::StageDef* current = judge.currentStage();
   const int count = static_cast<int>(judge.task().stages.size());
   hud_.setGoal(current ? taskGoal(*current, stage, count)
                        : judge.task().watchOnly() ? "Watch: the level plays itself" : "");
@@ -412,7 +412,7 @@ bool PlayScreen::safetyStop() {
 void PlayScreen::endTrial() {
   host_.audio().setProximity(0.0);
   TrialResult result = session_->finish();
-  host_.audio().play(result.outcome == script::TrialOutcome::Success ? Cue::Success : Cue::Failure);
+  host_.audio().play(result.outcome == task::TrialOutcome::Success ? Cue::Success : Cue::Failure);
   // The last frame stays on screen behind the results, with what decided it
   // and what the loop's timing did to it.
   TrialEnding ending = TrialEnding::of(scene_, scene_.trace);

@@ -64,7 +64,7 @@ void ReplayScreen::update(double dt) {
   const haptics::ServoSnapshot& s = player_->snapshot();
   // The judge sees the frames' ticks only: enough to know the stage whose
   // target to draw (the replay itself is the logged run, bit for bit).
-  script::JudgeInput in;
+  task::JudgeInput in;
   in.time = s.time;
   in.state = physics::forceStateOf(s.state);
   if (!judge_->finished()) judge_->judge(in);

@@ -48,7 +48,7 @@ class ReplayScreen final : public Screen {
   std::string levelPath_, replayFile_, error_;
   script::LoadedLevel level_;
   std::unique_ptr<ReplayPlayer> player_;
-  std::optional<script::TaskJudge> judge_;  // the stage whose target is drawn
+  std::optional<task::TaskJudge> judge_;  // the stage whose target is drawn
   double clock_ = 0.0;  // [s] of replay time watched (wall time times the speed)
   double speed_ = 1.0;
   bool paused_ = false;

@@ -47,10 +47,10 @@ std::vector<ProtocolEntry> scanProtocols(const std::string& dir, const ListingBu
       continue;
     }
     try {
-      const script::ProtocolDef def = script::ProtocolLoader(options).loadFile(e.path);
+      const task::ProtocolDef def = script::ProtocolLoader(options).loadFile(e.path);
       e.experiment = def.experiment;
       e.description = def.description;
-      for (const script::BlockDef& b : def.blocks) e.trials += static_cast<int>(b.conditions.size()) * b.repetitions;
+      for (const task::BlockDef& b : def.blocks) e.trials += static_cast<int>(b.conditions.size()) * b.repetitions;
     } catch (const std::exception& error) {
       e.error = error.what();
     }

@@ -40,7 +40,7 @@ ResultsScreen::ResultsScreen(ScreenHost& host, std::string levelPath, std::strin
     return;
   }
   before_ = host_.scores().personalBest(levelName_, player);
-  const bool success = result_.outcome == script::TrialOutcome::Success;
+  const bool success = result_.outcome == task::TrialOutcome::Success;
   newBest_ = success && (!before_.bestTime || result_.time < *before_.bestTime);
   ScoreEntry entry;
   entry.level = levelName_;
@@ -48,7 +48,7 @@ ResultsScreen::ResultsScreen(ScreenHost& host, std::string levelPath, std::strin
   entry.success = success;
   entry.time = result_.time;
   entry.score = result_.score;
-  entry.medal = script::medalName(result_.medal);
+  entry.medal = task::medalName(result_.medal);
   stored_ = host_.scores().add(entry);
   // A first success becomes the ghost; one already there (the player's
   // own, or the autopilot's line they chose) is replaced only when they say
@@ -59,7 +59,7 @@ ResultsScreen::ResultsScreen(ScreenHost& host, std::string levelPath, std::strin
 }
 
 bool ResultsScreen::offersRaceThisRun() const {
-  return !assisted_ && !ghostKept_ && !replay_.empty() && result_.outcome == script::TrialOutcome::Success;
+  return !assisted_ && !ghostKept_ && !replay_.empty() && result_.outcome == task::TrialOutcome::Success;
 }
 
 void ResultsScreen::raceThisRun() {
@@ -132,7 +132,7 @@ void ResultsScreen::input(const platform::InputEvent& e) {
   if (e.key == platform::Key::Enter || e.code == 'r') again();
   else if (e.code == 'n') next();
   else if (e.code == 's') saveReplay();
-  else if (e.code == 'g' && assisted_ && result_.outcome == script::TrialOutcome::Success) raceThisLine();
+  else if (e.code == 'g' && assisted_ && result_.outcome == task::TrialOutcome::Success) raceThisLine();
   else if (e.code == 'k' && offersRaceThisRun()) raceThisRun();
   else if (e.code == 'w') watchReplay();
   else if (e.key == platform::Key::Escape) host_.screens().pop();
@@ -142,12 +142,12 @@ namespace {
 
 const ImVec4 kGreenText(0.4f, 0.9f, 0.45f, 1), kRedText(1, 0.5f, 0.4f, 1), kGoldText(0.95f, 0.8f, 0.35f, 1);
 
-ImVec4 medalColour(script::Medal m) {
+ImVec4 medalColour(task::Medal m) {
   switch (m) {
-    case script::Medal::Gold: return ImVec4(1.0f, 0.84f, 0.2f, 1);
-    case script::Medal::Silver: return ImVec4(0.82f, 0.84f, 0.88f, 1);
-    case script::Medal::Bronze: return ImVec4(0.85f, 0.55f, 0.3f, 1);
-    case script::Medal::None: break;
+    case task::Medal::Gold: return ImVec4(1.0f, 0.84f, 0.2f, 1);
+    case task::Medal::Silver: return ImVec4(0.82f, 0.84f, 0.88f, 1);
+    case task::Medal::Bronze: return ImVec4(0.85f, 0.55f, 0.3f, 1);
+    case task::Medal::None: break;
   }
   return ImVec4(0.7f, 0.7f, 0.7f, 1);
 }
@@ -184,12 +184,12 @@ void ResultsScreen::paint() {
     const platform::PixelSize px = host_.window().drawableSize();
     host_.renderer().render(ending_.scene, px.width, px.height);
   }
-  const bool success = result_.outcome == script::TrialOutcome::Success;
+  const bool success = result_.outcome == task::TrialOutcome::Success;
   if (ending_.hasScene) beginSidePanel("results", 480);
   else beginCentredPanel("results", 560);
   ImGui::SetWindowFontScale(1.8f);
-  if (success && result_.medal != script::Medal::None)
-    ImGui::TextColored(medalColour(result_.medal), "Success: %s medal", script::medalName(result_.medal));
+  if (success && result_.medal != task::Medal::None)
+    ImGui::TextColored(medalColour(result_.medal), "Success: %s medal", task::medalName(result_.medal));
   else
     ImGui::TextColored(success ? kGreenText : kRedText, "%s", success ? "Success" : "Not this time");
   ImGui::SetWindowFontScale(1.0f);
@@ -198,7 +198,7 @@ void ResultsScreen::paint() {
   if (ending_.decidedBy.empty()) wrappedText(result_.reason);
   for (const std::string& line : ending_.decidedBy) wrappedTextDisabled(line);
   if (result_.score)
-    ImGui::Text("score %.1f   medal %s", *result_.score, script::medalName(result_.medal));
+    ImGui::Text("score %.1f   medal %s", *result_.score, task::medalName(result_.medal));
   else if (!result_.scoreError.empty())
     wrappedText(kRedText, "no score: " + result_.scoreError);
   if (const std::string medals = medalLine(ending_.scoring, ending_.medalTimes); !medals.empty())

@@ -80,7 +80,7 @@ void SessionScreen::trialEnded(const SessionTrialEnd& end) {
   const ManifestTrial& trial = session_->manifest().plan.at(static_cast<std::size_t>(session_->done() - 1));
   char line[512];
   std::snprintf(line, sizeof line, "%s: %s, %s, %.1f s", trial.trialId.c_str(),
-                script::trialOutcomeName(end.result.outcome), end.result.reason.c_str(), end.result.time);
+                task::trialOutcomeName(end.result.outcome), end.result.reason.c_str(), end.result.time);
   log_.emplace_back(line);
   armBreak();
 }

@@ -61,12 +61,12 @@ std::unique_ptr<PlaySession> SessionTrialPlay::begin(script::LoadedLevel& level,
   return session;
 }
 
-std::string SessionTrialPlay::title(const script::LevelDef& level) const {
+std::string SessionTrialPlay::title(const task::LevelDef& level) const {
   return "trial " + std::to_string(research_.nextTrial().index) + " of " + std::to_string(research_.trialCount()) +
          ": " + level.name;
 }
 
-void SessionTrialPlay::finished(PlaySession& session, TrialResult result, const script::LevelDef& /*level*/,
+void SessionTrialPlay::finished(PlaySession& session, TrialResult result, const task::LevelDef& /*level*/,
                                 TrialEnding /*ending*/) {
   SessionTrialEnd recorded;
   recorded.recorded = true;

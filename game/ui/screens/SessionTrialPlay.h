@@ -30,12 +30,12 @@ class SessionTrialPlay final : public PlayMode {
 
   const std::string& levelPath() const override { return levelPath_; }
   std::unique_ptr<PlaySession> begin(script::LoadedLevel& level, PlaySessionDef& def) override;
-  physics::CouplingDef coupling(const script::LevelDef& level) const override { return level.coupling; }
+  physics::CouplingDef coupling(const task::LevelDef& level) const override { return level.coupling; }
   // The player sees where they are in the plan.
-  std::string title(const script::LevelDef& level) const override;
+  std::string title(const task::LevelDef& level) const override;
   bool ghostAllowed() const override { return false; }
   bool restartAllowed() const override { return false; }
-  void finished(PlaySession& session, TrialResult result, const script::LevelDef& level,
+  void finished(PlaySession& session, TrialResult result, const task::LevelDef& level,
                 TrialEnding ending) override;
   void leftWithoutTrial(const std::string& error) override;
 

@@ -22,11 +22,11 @@ TrialEnding TrialEnding::of(const render::RenderScene& scene, const render::Cont
   return e;
 }
 
-std::vector<std::string> explainEnding(const TrialResult& result, const script::TaskDef& task, double heading) {
+std::vector<std::string> explainEnding(const TrialResult& result, const task::TaskDef& task, double heading) {
   std::vector<std::string> lines;
   char line[200];
-  const script::TrialSummary& s = result.summary;
-  if (result.outcome == script::TrialOutcome::Success) {
+  const task::TrialSummary& s = result.summary;
+  if (result.outcome == task::TrialOutcome::Success) {
     const double hold = task.stages.empty() ? 0.0 : task.stages.back().hold;
     if (hold > 0.0)
       std::snprintf(line, sizeof line, "every band held for %.1f s, from %.2f s to %.2f s", hold, result.time - hold,

@@ -21,7 +21,7 @@ struct TrialEnding {
   render::RenderScene scene;                    // scene.trace points into `trace`
   std::unique_ptr<render::ContactTrace> trace;  // owned here, so the scene can move
   std::vector<std::string> decidedBy;           // explainEnding(), then explainLoop()
-  script::ScoringDef scoring;
+  task::ScoringDef scoring;
   std::optional<MedalTimes> medalTimes;         // the thresholds as times, where the score is a time
   bool hasScene = false;
 
@@ -34,7 +34,7 @@ struct TrialEnding {
 // reason and what was still out of its band and what it needed, the furthest
 // out first (the compact HUD's few rows, in the player's words: PlayerWords,
 // screen directions for a camera whose screen right has this heading [rad]).
-std::vector<std::string> explainEnding(const TrialResult& result, const script::TaskDef& task,
+std::vector<std::string> explainEnding(const TrialResult& result, const task::TaskDef& task,
                                        double screenRightHeading = 0.0);
 
 // What the servo loop's timing did to a trial in the window (issue 27: a

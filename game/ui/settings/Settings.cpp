@@ -7,12 +7,12 @@ namespace hemiroll::game {
 // The player's override is a protocol's, applied the same way (ProtocolDef).
 physics::CouplingDef couplingFor(const Settings& s, const physics::CouplingDef& level) {
   if (!s.overrideCoupling) return level;
-  script::TrialOverrides o;
+  task::TrialOverrides o;
   o.method = methodLabel(s.method);  // "?" for an unknown index: M3, as before
   o.stiffness = s.stiffness;
   o.damping = s.damping;
   o.alpha = s.alpha;
-  return script::overriddenCoupling(o, level);
+  return task::overriddenCoupling(o, level);
 }
 
 const char* methodLabel(int method) {

@@ -111,7 +111,7 @@ class Reader {
 
  private:
   // Ids name folders and files (a session's participant): the protocols' rule.
-  static bool isIdentifier(const std::string& s) { return script::isFolderName(s); }
+  static bool isIdentifier(const std::string& s) { return task::isFolderName(s); }
   static bool knownAction(const std::string& id) {
     for (int i = 0; i < kKeyActionCount; ++i)
       if (id == keyActionInfo(static_cast<KeyAction>(i)).id) return true;

@@ -9,20 +9,20 @@ namespace hemiroll::game {
 
 namespace {
 
-using script::TaskVariable;
+using task::TaskVariable;
 namespace slot = physics::force_slot;
 
 // Wider than any floor: the renderer clips a free component's band to its floor.
 constexpr double kFreeBand = 1e3;
 
-void fillTargets(const script::LevelDef& level, const physics::ForceDrivenState& x, std::size_t stage,
+void fillTargets(const task::LevelDef& level, const physics::ForceDrivenState& x, std::size_t stage,
                  render::RenderScene& scene) {
   scene.targets.clear();
   if (stage >= level.task.stages.size()) return;
   render::TargetMarker marker;
   marker.halfWidth = {kFreeBand, kFreeBand};
   bool any = false, inside = true;
-  for (const script::TargetDef& t : level.task.stages[stage].targets) {
+  for (const task::TargetDef& t : level.task.stages[stage].targets) {
     int axis = -1;
     if (t.variable == TaskVariable::u_a) axis = 0;
     if (t.variable == TaskVariable::v_a) axis = 1;
@@ -38,11 +38,11 @@ void fillTargets(const script::LevelDef& level, const physics::ForceDrivenState&
   scene.targets.push_back(marker);
 }
 
-void fillZones(const script::LevelDef& level, render::RenderScene& scene) {
+void fillZones(const task::LevelDef& level, render::RenderScene& scene) {
   scene.forbidden.clear();
-  for (const script::ZoneDef& z : level.task.forbidden) {
+  for (const task::ZoneDef& z : level.task.forbidden) {
     render::ZoneMarker m;
-    m.circle = z.shape == script::ZoneShape::Circle;
+    m.circle = z.shape == task::ZoneShape::Circle;
     m.centre = z.center;
     m.radius = z.radius;
     m.min = z.min;
@@ -53,7 +53,7 @@ void fillZones(const script::LevelDef& level, render::RenderScene& scene) {
 
 }  // namespace
 
-void fillFromState(const script::LevelDef& level, const physics::ForceDrivenState& x, std::size_t stage,
+void fillFromState(const task::LevelDef& level, const physics::ForceDrivenState& x, std::size_t stage,
                    render::RenderScene& scene) {
   const double radius = level.params.radius;
   const physics::Orientation o = physics::makeOrientation(x[slot::u_o], x[slot::v_o], x[slot::psi]);
@@ -68,15 +68,15 @@ void fillFromState(const script::LevelDef& level, const physics::ForceDrivenStat
   scene.examplePath.assign(level.scene.examplePath.begin(), level.scene.examplePath.end());
 }
 
-std::vector<render::PropDef> propsOf(const script::LevelDef& level) {
+std::vector<render::PropDef> propsOf(const task::LevelDef& level) {
   std::vector<render::PropDef> props;
-  for (const script::PropDef& p : level.scene.props)
+  for (const task::PropDef& p : level.scene.props)
     props.push_back({p.mesh, p.position, p.size, p.yaw,
                      {float(p.colour[0]), float(p.colour[1]), float(p.colour[2]), 1.0f}});
   return props;
 }
 
-void fillGhost(const script::LevelDef& level, const haptics::ServoSnapshot& ghost, render::GhostPose& out) {
+void fillGhost(const task::LevelDef& level, const haptics::ServoSnapshot& ghost, render::GhostPose& out) {
   const physics::ForceDrivenState x = physics::forceStateOf(ghost.state);
   const physics::Orientation o = physics::makeOrientation(x[slot::u_o], x[slot::v_o], x[slot::psi]);
   out.shown = true;
@@ -86,7 +86,7 @@ void fillGhost(const script::LevelDef& level, const haptics::ServoSnapshot& ghos
   out.massPoint = {x[slot::x_p], x[slot::y_p]};
 }
 
-void fillFromSnapshot(const script::LevelDef& level, const haptics::ServoSnapshot& snapshot, std::size_t stage,
+void fillFromSnapshot(const task::LevelDef& level, const haptics::ServoSnapshot& snapshot, std::size_t stage,
                       render::RenderScene& scene) {
   const physics::ForceDrivenState x = physics::forceStateOf(snapshot.state);
   fillFromState(level, x, stage, scene);

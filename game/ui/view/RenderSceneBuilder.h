@@ -20,18 +20,18 @@ namespace hemiroll::game {
 // The pose (centre, R of eq. 6, radius, mass point), the stage's targets
 // (with "inside" from the state) and the zones. Leaves the proxy, force,
 // trace and camera as they are.
-void fillFromState(const script::LevelDef& level, const physics::ForceDrivenState& state, std::size_t stage,
+void fillFromState(const task::LevelDef& level, const physics::ForceDrivenState& state, std::size_t stage,
                    render::RenderScene& scene);
 
 // The same from a servo snapshot, plus the proxy, the spring (drawn while
 // the coupling is engaged or ramping) and F_h as the force arrow.
 // The level's scenery for Renderer::setProps.
-std::vector<render::PropDef> propsOf(const script::LevelDef& level);
+std::vector<render::PropDef> propsOf(const task::LevelDef& level);
 
 // The ghost's pose from another run's snapshot (a replayed best).
-void fillGhost(const script::LevelDef& level, const haptics::ServoSnapshot& ghost, render::GhostPose& out);
+void fillGhost(const task::LevelDef& level, const haptics::ServoSnapshot& ghost, render::GhostPose& out);
 
-void fillFromSnapshot(const script::LevelDef& level, const haptics::ServoSnapshot& snapshot, std::size_t stage,
+void fillFromSnapshot(const task::LevelDef& level, const haptics::ServoSnapshot& snapshot, std::size_t stage,
                       render::RenderScene& scene);
 
 }  // namespace hemiroll::game

@@ -57,7 +57,7 @@ TEST(FiguresCommand, PaperFiguresAndTheirFeatures) {
 // r1 + r2. Held there (Omega = 0), the hemisphere must stay at rest; tilted
 // the other way it must fall.
 double angularSpeedAfter(double seconds, double uo) {
-  script::ScenarioDef scenario =
+  task::ScenarioDef scenario =
       script::ScenarioLoader().loadFile(kSource + "/levels/scenarios/rose_paper_equilibrium.lua");
   scenario.drive.rose.omega = 0.0;
   scenario.initial[physics::force_slot::u_o] = uo;

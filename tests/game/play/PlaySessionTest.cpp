@@ -94,7 +94,7 @@ TEST(PlaySessionTest, AScriptedMouseEngagesAndPlaysPausesAndQuits) {
 
   session.quit();
   const TrialResult result = session.finish();
-  EXPECT_EQ(result.outcome, script::TrialOutcome::Failure);
+  EXPECT_EQ(result.outcome, task::TrialOutcome::Failure);
   EXPECT_EQ(result.reason, "quit by the player");
   EXPECT_LE(result.maxRenderedForce, 1e-12);  // a mouse renders no force (max force 0)
 }
@@ -296,7 +296,7 @@ TEST(PlaySessionTest, AUdpDeviceWaitsForItsClientThenPlays) {
 // can render gets the profile's clamp.
 TEST(PlaySessionTest, ADeviceProfileRefusesACouplingItCannotRender) {
   script::LoadedLevel level = script::LevelLoader().loadFile(HEMIROLL_SOURCE_DIR "/levels/tutorial_01_tilt_and_return.lua");
-  script::DeviceProfileDef soft = script::DeviceProfileLoader().loadFile(HEMIROLL_SOURCE_DIR "/devices/touch.lua");
+  task::DeviceProfileDef soft = script::DeviceProfileLoader().loadFile(HEMIROLL_SOURCE_DIR "/devices/touch.lua");
   soft.maxStiffnessNPerM = 400.0;  // tutorial 01: M3, kr 250, alpha 2 = 500 N/m
   PlaySessionDef def;
   def.device = "udp";

@@ -22,7 +22,7 @@ const char* const kTippingSweep = R"(return {
   },
 })";
 
-script::SweepDef sweepOf(const std::string& source) { return script::SweepLoader().loadSource(source, "tiny.lua"); }
+task::SweepDef sweepOf(const std::string& source) { return script::SweepLoader().loadSource(source, "tiny.lua"); }
 
 game::SweepPartReport runSweepInto(const std::string& source, const std::filesystem::path& dir, game::SweepShard shard,
                                    int threads, int laneWidth) {

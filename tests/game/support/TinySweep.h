@@ -16,7 +16,7 @@ extern const char* const kTinySweep;
 // 0.39 s (point 3); k = 8, Omega = -pi/10 does not (point 0).
 extern const char* const kTippingSweep;
 
-script::SweepDef sweepOf(const std::string& source);
+task::SweepDef sweepOf(const std::string& source);
 
 // Runs `source` (shard, threads, SIMD lanes) into dir in-process.
 game::SweepPartReport runSweepInto(const std::string& source, const std::filesystem::path& dir,

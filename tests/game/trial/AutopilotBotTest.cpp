@@ -19,7 +19,7 @@
 namespace hemiroll::game {
 namespace {
 
-using script::TrialOutcome;
+using task::TrialOutcome;
 
 const std::string kLevels = std::string(HEMIROLL_SOURCE_DIR) + "/levels/";
 
@@ -49,7 +49,7 @@ TrialResult playSource(const char* source) {
 TEST(AutopilotBot, WinsThePapersTaskWithGold) {
   const TrialResult r = playFile(kLevels + "paper_reaching.lua");
   ASSERT_EQ(r.outcome, TrialOutcome::Success) << r.reason;
-  EXPECT_EQ(r.medal, script::Medal::Gold);  // under 40 s
+  EXPECT_EQ(r.medal, task::Medal::Gold);  // under 40 s
   EXPECT_LE(r.maxRenderedForce, botDeviceSpec().maxForce);
 }
 

@@ -26,7 +26,7 @@ namespace {
 
 using ::testing::HasSubstr;
 using ::testing::StartsWith;
-using script::TrialOutcome;
+using task::TrialOutcome;
 
 const std::string kBots = std::string(HEMIROLL_SOURCE_DIR) + "/scripts/bots/";
 

@@ -21,12 +21,12 @@ using ::testing::HasSubstr;
 
 const std::string kSource = HEMIROLL_SOURCE_DIR;
 
-script::DeviceProfileDef shipped(const std::string& name) {
+task::DeviceProfileDef shipped(const std::string& name) {
   return script::DeviceProfileLoader().loadFile(kSource + "/devices/" + name + ".lua");
 }
 
 TEST(DeviceProfiles, TheSpecIsTheProfilesPeakStiffnessAndInnerReach) {
-  const script::DeviceProfileDef touch = shipped("touch");
+  const task::DeviceProfileDef touch = shipped("touch");
   const haptics::DeviceSpec spec = deviceSpecOf(touch);
   EXPECT_STREQ(spec.name, "3D Systems Touch");
   EXPECT_EQ(spec.maxForce, touch.peakForceN);
@@ -36,7 +36,7 @@ TEST(DeviceProfiles, TheSpecIsTheProfilesPeakStiffnessAndInnerReach) {
 }
 
 TEST(DeviceProfiles, TheSafetyLimitsAreTheProfiles) {
-  const script::DeviceProfileDef falcon = shipped("falcon");
+  const task::DeviceProfileDef falcon = shipped("falcon");
   haptics::SafetyDef base;
   base.maxDeviceSpeed = 1.5;  // what the profile does not set is kept
   const haptics::SafetyDef s = safetyOf(falcon, base);
@@ -51,7 +51,7 @@ TEST(DeviceProfiles, TheSafetyLimitsAreTheProfiles) {
 }
 
 TEST(DeviceProfiles, ACouplingTooStiffIsRefusedInOneSentenceNamingBoth) {
-  const script::DeviceProfileDef touch = shipped("touch");
+  const task::DeviceProfileDef touch = shipped("touch");
   physics::CouplingDef c;
   c.method = physics::ForceMethod::M1;
   c.stiffness = 1500.0;
@@ -66,7 +66,7 @@ TEST(DeviceProfiles, ACouplingTooStiffIsRefusedInOneSentenceNamingBoth) {
 }
 
 TEST(DeviceProfiles, M3sAlphaCountsInTheStiffestDirection) {
-  const script::DeviceProfileDef touch = shipped("touch");
+  const task::DeviceProfileDef touch = shipped("touch");
   physics::CouplingDef c;
   c.method = physics::ForceMethod::M3;
   c.stiffness = 600.0;
@@ -77,7 +77,7 @@ TEST(DeviceProfiles, M3sAlphaCountsInTheStiffestDirection) {
 }
 
 TEST(DeviceProfiles, DampingIsCheckedWhereTheProfileGivesAMaximum) {
-  script::DeviceProfileDef p = shipped("generic");
+  task::DeviceProfileDef p = shipped("generic");
   physics::CouplingDef c;
   c.stiffness = 100.0;
   c.damping = 50.0;

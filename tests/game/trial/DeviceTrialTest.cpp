@@ -35,7 +35,7 @@ return {
 }
 )lua";
 
-script::DeviceProfileDef profile(const std::string& source) {
+task::DeviceProfileDef profile(const std::string& source) {
   return script::DeviceProfileLoader().loadSource(source, "test_device.lua");
 }
 
@@ -76,7 +76,7 @@ struct Played {
 // loaded cores a client can be starved past 10 ms (PlaySessionTest measured
 // a fault at 0.16 s), so the bridge's and the loop's watchdogs get 100 ms
 // here and the loop's overrun 0.5 s.
-Played play(const script::DeviceProfileDef& device, hapticclient::ClientOptions client) {
+Played play(const task::DeviceProfileDef& device, hapticclient::ClientOptions client) {
   script::LoadedLevel level = script::LevelLoader().loadSource(kLevel, "level.lua");
   DeviceTrialDef def;
   def.bridge.port = 0;  // any free port
@@ -133,7 +133,7 @@ TEST(DeviceTrial, NoClientIsAFailureThatSaysWhatToStart) {
   def.clientTimeout = 0.2;
   DeviceTrial trial(level, def);
   const TrialResult r = trial.run();
-  EXPECT_EQ(r.outcome, script::TrialOutcome::Failure);
+  EXPECT_EQ(r.outcome, task::TrialOutcome::Failure);
   EXPECT_EQ(r.reason, "no device: no state from a client on 127.0.0.1:" + std::to_string(trial.port()) +
                           " within 0.2 s; start the device's client (docs/UDP_BRIDGE.md) before the trial");
   EXPECT_EQ(trial.stop(), haptics::SafetyFault::None);

@@ -66,19 +66,19 @@ TEST(PassiveHandTest, StillWithoutForceAndDriftingAtTheSteadyRateUnderAPush) {
 // it, and not without guidance or with the error pushed up.
 TEST(GuidedTrialTest, AutopilotGuidanceLeadsAPassiveHandToTheTarget) {
   const TrialResult guided = passiveHandOn("tutorial_04_stop_on_target.lua", haptics::GuidanceKind::Autopilot);
-  EXPECT_EQ(guided.outcome, script::TrialOutcome::Success) << guided.reason;
+  EXPECT_EQ(guided.outcome, task::TrialOutcome::Success) << guided.reason;
   const TrialResult alone = passiveHandOn("tutorial_04_stop_on_target.lua", haptics::GuidanceKind::None);
-  EXPECT_EQ(alone.outcome, script::TrialOutcome::Failure);
+  EXPECT_EQ(alone.outcome, task::TrialOutcome::Failure);
   EXPECT_EQ(alone.reason, "time limit reached");
   const TrialResult augmented =
       passiveHandOn("tutorial_04_stop_on_target.lua", haptics::GuidanceKind::ErrorAugmentation);
-  EXPECT_EQ(augmented.outcome, script::TrialOutcome::Failure);
+  EXPECT_EQ(augmented.outcome, task::TrialOutcome::Failure);
 }
 
 TEST(GuidedTrialTest, AGuidedTrialIsDeterministic) {
   const TrialResult a = passiveHandOn("tutorial_02_roll_a_short_distance.lua", haptics::GuidanceKind::Autopilot);
   const TrialResult b = passiveHandOn("tutorial_02_roll_a_short_distance.lua", haptics::GuidanceKind::Autopilot);
-  EXPECT_EQ(a.outcome, script::TrialOutcome::Success) << a.reason;
+  EXPECT_EQ(a.outcome, task::TrialOutcome::Success) << a.reason;
   EXPECT_EQ(a.ticks, b.ticks);
   EXPECT_EQ(a.time, b.time);
 }
@@ -97,7 +97,7 @@ TEST(GuidedTrialTest, ALuaBotWithTheCompliantArmFeelsGuidanceAsThePassiveHandDoe
   const TrialResult withArm = BotTrial(loaded, lua, settings).run();
   EXPECT_EQ(withArm.outcome, builtin.outcome) << withArm.reason;
   EXPECT_EQ(withArm.ticks, builtin.ticks);
-  EXPECT_EQ(withArm.outcome, script::TrialOutcome::Success) << withArm.reason;  // guidance led it there
+  EXPECT_EQ(withArm.outcome, task::TrialOutcome::Success) << withArm.reason;  // guidance led it there
 }
 
 }  // namespace

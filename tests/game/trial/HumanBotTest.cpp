@@ -15,7 +15,7 @@
 namespace hemiroll::game {
 namespace {
 
-using script::TrialOutcome;
+using task::TrialOutcome;
 
 const std::string kLevels = std::string(HEMIROLL_SOURCE_DIR) + "/levels/";
 

@@ -21,7 +21,7 @@
 namespace hemiroll::game {
 namespace {
 
-using script::TrialOutcome;
+using task::TrialOutcome;
 
 const std::string kSource = HEMIROLL_SOURCE_DIR;
 

@@ -15,7 +15,7 @@ namespace {
 
 // Rows as the servo loop pushes them: time advancing 1 ms per tick, the
 // level's initial state, no fault unless asked.
-void pushRows(haptics::RecordRing& ring, const script::LevelDef& def, int from, int count,
+void pushRows(haptics::RecordRing& ring, const task::LevelDef& def, int from, int count,
               haptics::SafetyFault fault = haptics::SafetyFault::None) {
   for (int k = from; k < from + count; ++k) {
     haptics::RecordRow row;

@@ -53,7 +53,7 @@ void runParticipant(const test::TempDirectory& dir, const std::string& protocol,
     const script::LoadedLevel level = s.loadNextLevel();
     auto recording = s.recordNext(level.def, trialLoopDef(level.def), "bot", botDeviceSpec());
     TrialResult result;
-    result.outcome = time < 5.0 ? script::TrialOutcome::Success : script::TrialOutcome::Failure;
+    result.outcome = time < 5.0 ? task::TrialOutcome::Success : task::TrialOutcome::Failure;
     result.reason = time < 5.0 ? "target held" : "time limit";
     result.time = time;
     result.ticks = static_cast<long long>(time * 1000.0);

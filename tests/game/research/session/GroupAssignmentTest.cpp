@@ -20,10 +20,10 @@ namespace {
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
-script::ProtocolDef protocol() {
-  script::ProtocolDef p;
+task::ProtocolDef protocol() {
+  task::ProtocolDef p;
   for (const char* name : {"a", "b", "c"}) {
-    script::GroupDef g;
+    task::GroupDef g;
     g.name = name;
     p.groups.push_back(g);
   }
@@ -47,7 +47,7 @@ void arrived(const fs::path& experiment, const std::string& participant, const s
 TEST(GroupAssignmentTest, ByArrivalTheLeastFilledGroupThenItsLeastUsedOrder) {
   test::TempDirectory dir;
   const fs::path experiment = dir.path() / "e";
-  const script::ProtocolDef p = protocol();
+  const task::ProtocolDef p = protocol();
   std::vector<std::pair<std::string, int>> got;
   for (int k = 0; k < 6; ++k) {
     // Appended, not "p" + to_string(k): GCC 12 warns on the latter (-Wrestrict, a false positive).
@@ -73,8 +73,8 @@ TEST(GroupAssignmentTest, ByArrivalTheLeastFilledGroupThenItsLeastUsedOrder) {
 
 TEST(GroupAssignmentTest, FromTheParticipantsFileItsGroupAndOrderOrTheRankWithinTheGroup) {
   test::TempDirectory dir;
-  script::ProtocolDef p = protocol();
-  p.assignment = script::Assignment::ParticipantsFile;
+  task::ProtocolDef p = protocol();
+  p.assignment = task::Assignment::ParticipantsFile;
   p.participantsFile = dir.write("participants.tsv",
                                  "participant_id\tgroup\torder\tage\n"
                                  "x1\tc\t2\t30\n"
@@ -99,8 +99,8 @@ TEST(GroupAssignmentTest, FromTheParticipantsFileItsGroupAndOrderOrTheRankWithin
 // second session in another group would split them across two groups.
 TEST(GroupAssignmentTest, AParticipantsFileEditedSinceTheFirstSessionIsRefused) {
   test::TempDirectory dir;
-  script::ProtocolDef p = protocol();
-  p.assignment = script::Assignment::ParticipantsFile;
+  task::ProtocolDef p = protocol();
+  p.assignment = task::Assignment::ParticipantsFile;
   p.participantsFile = dir.write("participants.tsv", "participant_id\tgroup\torder\nx1\tc\t2\n");
   const fs::path experiment = dir.path() / "e";
   arrived(experiment, "x1", "c", 2);
@@ -118,7 +118,7 @@ TEST(GroupAssignmentTest, AParticipantsFileEditedSinceTheFirstSessionIsRefused) 
 
 TEST(GroupAssignmentTest, WithoutGroupsOrOrdersThereIsNothingToAssign) {
   test::TempDirectory dir;
-  script::ProtocolDef p;
+  task::ProtocolDef p;
   p.blocks.resize(2);
   const ParticipantAssignment a = assignParticipant(p, dir.path(), "p", "1");
   EXPECT_EQ(a.group, "");

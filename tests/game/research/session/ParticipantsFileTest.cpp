@@ -16,11 +16,11 @@ namespace {
 
 using ::testing::HasSubstr;
 
-script::ProtocolDef protocol(script::Assignment assignment) {
-  script::ProtocolDef p;
+task::ProtocolDef protocol(task::Assignment assignment) {
+  task::ProtocolDef p;
   p.assignment = assignment;
   for (const char* name : {"guided", "control"}) {
-    script::GroupDef g;
+    task::GroupDef g;
     g.name = name;
     p.groups.push_back(g);
   }
@@ -31,7 +31,7 @@ script::ProtocolDef protocol(script::Assignment assignment) {
 
 class ParticipantsFileTest : public ::testing::Test {
  protected:
-  std::string errorOf(const std::string& text, script::Assignment assignment = script::Assignment::ParticipantsFile) {
+  std::string errorOf(const std::string& text, task::Assignment assignment = task::Assignment::ParticipantsFile) {
     const std::string path = dir_.write("participants.tsv", text);
     try {
       (void)readParticipantsFile(path, protocol(assignment));
@@ -50,7 +50,7 @@ TEST_F(ParticipantsFileTest, ReadsGroupsOrdersAndTheLabsOwnColumns) {
                                       "p01\t24\tcontrol\tleft\t2\r\n"
                                       "p02\tn/a\tguided\tright\tn/a\n"
                                       "p03\t31\tcontrol\t\t\n\n");
-  const ParticipantsTable t = readParticipantsFile(path, protocol(script::Assignment::ParticipantsFile));
+  const ParticipantsTable t = readParticipantsFile(path, protocol(task::Assignment::ParticipantsFile));
   ASSERT_EQ(t.rows.size(), 3u);
   const ParticipantRow* p01 = t.find("p01");
   ASSERT_NE(p01, nullptr);
@@ -84,9 +84,9 @@ TEST_F(ParticipantsFileTest, MistakesNameTheFileLineAndColumn) {
             ":2: column 'order': '1.5' is not a block order: a whole number from 1 to 2 (the protocol's counterbalanced "
             "orders)");
   // With assignment by arrival the session decides: the file may not.
-  EXPECT_THAT(errorOf("participant_id\tgroup\np01\tguided\n", script::Assignment::Balanced),
+  EXPECT_THAT(errorOf("participant_id\tgroup\np01\tguided\n", task::Assignment::Balanced),
               HasSubstr(":1: column 'group': the protocol assigns groups and orders by arrival"));
-  EXPECT_EQ(errorOf("participant_id\tage\np01\t24\n", script::Assignment::Balanced), "no error");
+  EXPECT_EQ(errorOf("participant_id\tage\np01\t24\n", task::Assignment::Balanced), "no error");
   // A lab column named as one hemiroll writes beside it would clash in BIDS and trials.csv.
   EXPECT_THAT(errorOf("participant_id\tgroup\tsession\np01\tguided\t3\n"),
               HasSubstr(":1: column 'session': a name hemiroll writes itself"));
@@ -96,7 +96,7 @@ TEST_F(ParticipantsFileTest, MistakesNameTheFileLineAndColumn) {
 // A spreadsheet's byte-order mark is not part of the first column's name.
 TEST_F(ParticipantsFileTest, AByteOrderMarkIsSkipped) {
   const std::string path = dir_.write("participants.tsv", "\xEF\xBB\xBFparticipant_id\tgroup\np01\tguided\n");
-  const ParticipantsTable t = readParticipantsFile(path, protocol(script::Assignment::ParticipantsFile));
+  const ParticipantsTable t = readParticipantsFile(path, protocol(task::Assignment::ParticipantsFile));
   ASSERT_NE(t.find("p01"), nullptr);
   EXPECT_EQ(t.header[0], "participant_id");
 }

@@ -65,7 +65,7 @@ class ResearchSessionTest : public ::testing::Test {
     const haptics::ServoLoopDef loop = trialLoopDef(level.def);
     auto recording = s.recordNext(level.def, loop, "bot", botDeviceSpec());
     TrialResult result;
-    result.outcome = script::TrialOutcome::Success;
+    result.outcome = task::TrialOutcome::Success;
     result.reason = "target held";
     result.time = 1.5;
     result.ticks = 1500;

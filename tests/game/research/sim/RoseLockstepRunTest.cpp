@@ -30,8 +30,8 @@ bool sameRow(const TrajectoryRow& a, const TrajectoryRow& b) {
 // kTippingSweep's four points from rest (two tip over within 3 s) and
 // kTinySweep's nine from the static tilt: thirteen lanes, not a multiple of
 // any width.
-std::vector<script::ScenarioDef> scenarios() {
-  std::vector<script::ScenarioDef> out;
+std::vector<task::ScenarioDef> scenarios() {
+  std::vector<task::ScenarioDef> out;
   for (const char* source : {test::kTippingSweep, test::kTinySweep}) {
     const SweepGrid grid(test::sweepOf(source));
     for (long long i = 0; i < grid.size(); ++i) out.push_back(grid.scenario(grid.point(i)));
@@ -44,7 +44,7 @@ TEST(RoseLockstepRun, EveryLaneHasTheRowsAndSummaryOfItsScalarRun) {
   settings.duration = 2.0005;  // 2000 steps of 1 ms and one of 0.5 ms
   settings.timeStep = 1e-3;
   settings.every = 7;
-  const std::vector<script::ScenarioDef> all = scenarios();
+  const std::vector<task::ScenarioDef> all = scenarios();
   std::vector<std::vector<TrajectoryRow>> expected(all.size());
   std::vector<RunSummary> expectedSummaries;
   int tipped = 0;
@@ -83,7 +83,7 @@ TEST(RoseLockstepRun, StateOnlyRowsAreTheFullRowsWithoutEnergyAndForce) {
   RunSettings settings;
   settings.duration = 1.5;
   settings.every = 10;
-  const std::vector<script::ScenarioDef> all = scenarios();
+  const std::vector<task::ScenarioDef> all = scenarios();
   const int width = physics::bestLaneWidth();
   std::vector<std::vector<TrajectoryRow>> full(all.size()), lean(all.size());
   const std::vector<RunSummary> fullSummaries = RoseLockstepRun(all, settings, width).run(
@@ -106,14 +106,14 @@ TEST(RoseLockstepRun, StateOnlyRowsAreTheFullRowsWithoutEnergyAndForce) {
 }
 
 TEST(RoseLockstepRun, TakesOnlyRoseDrivesWithRk4) {
-  const std::vector<script::ScenarioDef> all = scenarios();
+  const std::vector<task::ScenarioDef> all = scenarios();
   RunSettings settings;
   EXPECT_TRUE(RoseLockstepRun::eligible(all.front(), settings));
   settings.integrator = "dopri5";
   EXPECT_FALSE(RoseLockstepRun::eligible(all.front(), settings));
   EXPECT_THROW(RoseLockstepRun(all, settings, 1), std::invalid_argument);
-  script::ScenarioDef free = all.front();
-  free.drive.kind = script::DriveKind::Free;
+  task::ScenarioDef free = all.front();
+  free.drive.kind = task::DriveKind::Free;
   EXPECT_FALSE(RoseLockstepRun::eligible(free, RunSettings{}));
 }
 

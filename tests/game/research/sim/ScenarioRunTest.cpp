@@ -11,13 +11,13 @@
 namespace hemiroll::game {
 namespace {
 
-script::ScenarioDef roseScenario() {
-  script::ScenarioDef def;
-  def.drive.kind = script::DriveKind::Rose;
+task::ScenarioDef roseScenario() {
+  task::ScenarioDef def;
+  def.drive.kind = task::DriveKind::Rose;
   return def;
 }
 
-std::vector<TrajectoryRow> rowsOf(const script::ScenarioDef& def, const RunSettings& s, RunSummary* summary = nullptr) {
+std::vector<TrajectoryRow> rowsOf(const task::ScenarioDef& def, const RunSettings& s, RunSummary* summary = nullptr) {
   std::vector<TrajectoryRow> rows;
   const RunSummary r = ScenarioRun(def, s).run([&](const TrajectoryRow& row) { rows.push_back(row); });
   if (summary) *summary = r;
@@ -61,7 +61,7 @@ TEST(ScenarioRun, ShortenedLastStepEndsAtTheDuration) {
 }
 
 TEST(ScenarioRun, RoseRowsCarryTheCurveAndTheDrivingForce) {
-  const script::ScenarioDef def = roseScenario();
+  const task::ScenarioDef def = roseScenario();
   const auto rows = rowsOf(def, {0.01, 0.001, "rk4", 1});
   // p(0) = (r1 + r2, 0) by eqs. (49)-(50) at phi = 0.
   EXPECT_EQ(rows.front().state[physics::force_slot::x_p], def.drive.rose.r1 + def.drive.rose.r2);
@@ -71,7 +71,7 @@ TEST(ScenarioRun, RoseRowsCarryTheCurveAndTheDrivingForce) {
 }
 
 TEST(ScenarioRun, InitialStateOutsideTheDomainStopsAtOnce) {
-  script::ScenarioDef def = roseScenario();
+  task::ScenarioDef def = roseScenario();
   def.drive.rose.r1 = 0.05;  // p(0) beyond the face edge R = 0.04
   RunSummary summary;
   const auto rows = rowsOf(def, {1.0, 0.001, "rk4", 1}, &summary);
@@ -88,9 +88,9 @@ struct HeldAtCentre final : physics::ProxyTrajectory {
 };
 
 TEST(ScenarioRun, StiffCouplingIsSubsteppedAndStaysStable) {
-  script::ScenarioDef def;
+  task::ScenarioDef def;
   def.params.pointMass = 0.002;
-  def.drive.kind = script::DriveKind::Proxy;
+  def.drive.kind = task::DriveKind::Proxy;
   def.drive.coupling = physics::CouplingDef{physics::ForceMethod::M2, 5000.0, 10.0, 1.0, false};
   def.drive.proxy = std::make_shared<HeldAtCentre>();
   def.initial[0] = 0.002;  // 2 mm off the proxy
@@ -112,18 +112,18 @@ TEST(ScenarioRun, StiffCouplingIsSubsteppedAndStaysStable) {
 // recovers from q and keeps continuous through several turns (|w_z| of 4 to
 // 6 rad/s for 3 s), each crossing the branch cut of atan2.
 TEST(ScenarioRun, QuaternionFormGivesTheSameRowsAsContactAngles) {
-  script::ScenarioDef spin;
+  task::ScenarioDef spin;
   // Free: a pure spin (any rocking lets the frictionless point slide off the
   // face within a second). The M3 tether exercises the whole dynamics.
   spin.initial[physics::force_slot::w_z] = 6.0;
-  spin.drive.kind = script::DriveKind::Free;
-  script::ScenarioDef tether;
-  tether.drive.kind = script::DriveKind::Proxy;
+  spin.drive.kind = task::DriveKind::Free;
+  task::ScenarioDef tether;
+  tether.drive.kind = task::DriveKind::Proxy;
   tether.drive.coupling = physics::CouplingDef{};  // M3, the paper's gains
   tether.drive.proxy = std::make_shared<HeldAtCentre>();
   tether.initial[physics::force_slot::x_p] = 0.004;
   tether.initial[physics::force_slot::w_z] = -4.0;
-  for (const script::ScenarioDef* def : {&spin, &tether}) {
+  for (const task::ScenarioDef* def : {&spin, &tether}) {
     RunSettings settings{3.0, 0.01, "dop853", 10, 1e-12};
     RunSummary summary;
     const auto angles = rowsOf(*def, settings, &summary);

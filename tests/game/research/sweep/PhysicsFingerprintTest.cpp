@@ -15,7 +15,7 @@ TEST(PhysicsFingerprint, StableWithinAProcessAndFromItsParts) {
   EXPECT_EQ(a.rfind("fnv1a-", 0), 0u) << a;
   EXPECT_EQ(a.size(), 6u + 16u) << a;
   EXPECT_EQ(&physicsFingerprint(), &a);  // computed once
-  EXPECT_EQ(physicsFingerprintOf(script::SweepDef{}), a);
+  EXPECT_EQ(physicsFingerprintOf(task::SweepDef{}), a);
 }
 
 // The rows hashed also hold the point's parameters, so a nudged parameter
@@ -23,8 +23,8 @@ TEST(PhysicsFingerprint, StableWithinAProcessAndFromItsParts) {
 // of it changes only the arithmetic (DOP853's step sizes), as another libm's
 // last bit would.
 TEST(PhysicsFingerprint, OneUlpOfArithmeticChangesIt) {
-  const std::string base = physicsFingerprintOf(script::SweepDef{});
-  script::SweepDef nudged;
+  const std::string base = physicsFingerprintOf(task::SweepDef{});
+  task::SweepDef nudged;
   nudged.tolerance = std::nextafter(nudged.tolerance, 1.0);
   EXPECT_NE(physicsFingerprintOf(nudged), base);
 }

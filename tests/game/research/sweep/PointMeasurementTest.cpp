@@ -84,7 +84,7 @@ TEST(PointMeasurement, SamplesAtAbout100Hz) {
 // The steady-phase thresholds default to the ones `hemiroll analyze` uses.
 TEST(PointMeasurement, AnalysisDefaultsAreThoseOfTheAnalysis) {
   const analysis::PhaseDef phases;
-  const script::SweepAnalysisDef sweep;
+  const task::SweepAnalysisDef sweep;
   EXPECT_EQ(sweep.minRate, phases.minRate);
   EXPECT_EQ(sweep.relativeBand, phases.relativeBand);
   EXPECT_EQ(sweep.absoluteBand, phases.absoluteBand);

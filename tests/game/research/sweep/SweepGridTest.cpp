@@ -16,7 +16,7 @@ namespace {
 
 using ::testing::ElementsAre;
 
-script::SweepDef spec(const std::string& source) { return script::SweepLoader().loadSource(source, "s.lua"); }
+task::SweepDef spec(const std::string& source) { return script::SweepLoader().loadSource(source, "s.lua"); }
 
 TEST(SweepGrid, TheLastAxisVariesFastest) {
   const SweepGrid grid(spec(R"(return { axes = {
@@ -47,8 +47,8 @@ TEST(SweepGrid, TheStartTiltFollowsEachPointsMassesAndLinks) {
     const SweepPoint p = grid.point(i);
     EXPECT_EQ(p.startTilt, staticTilt(p.params, p.rose.r1 + p.rose.r2));
     EXPECT_GT(p.startTilt, 0.0);
-    const script::ScenarioDef s = grid.scenario(p);
-    EXPECT_EQ(s.drive.kind, script::DriveKind::Rose);
+    const task::ScenarioDef s = grid.scenario(p);
+    EXPECT_EQ(s.drive.kind, task::DriveKind::Rose);
     EXPECT_EQ(s.initial[physics::force_slot::u_o], -p.startTilt);  // lowers the mass point (StaticTilt.h)
     EXPECT_EQ(s.params.pointMass, p.params.pointMass);
     EXPECT_EQ(s.drive.rose.r1, p.rose.r1);
@@ -60,7 +60,7 @@ TEST(SweepGrid, FromRestStartsUpright) {
   const SweepGrid grid(spec("return { start = 'rest', duration = 5, dt = 0.002, axes = { { param = 'k', values = { 6 } } } }"));
   const SweepPoint p = grid.point(0);
   EXPECT_EQ(p.startTilt, 0.0);
-  const script::ScenarioDef s = grid.scenario(p);
+  const task::ScenarioDef s = grid.scenario(p);
   EXPECT_TRUE(s.initial.isZero());
   EXPECT_EQ(s.duration, 5.0);
   EXPECT_EQ(s.timeStep, 0.002);

@@ -16,7 +16,7 @@ namespace {
 using ::testing::HasSubstr;
 
 SweepManifest sample() {
-  const script::SweepDef d = test::sweepOf(test::kTinySweep);
+  const task::SweepDef d = test::sweepOf(test::kTinySweep);
   SweepManifest m;
   m.program = "hemiroll 9";
   m.specFile = "a/b.lua";

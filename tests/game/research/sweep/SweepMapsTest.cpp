@@ -29,7 +29,7 @@ TEST(SweepMaps, TippedCellsAreGreyAndMarked) {
   test::runSweepInto(test::kTippingSweep, dir.path());
   const SweepData data = loadSweep(dir.path());
   const report::HeatmapDef map =
-      sweepHeatmap(data, {script::SweepParam::k, script::SweepParam::Omega, findSweepMetric("steady_fraction"), {}});
+      sweepHeatmap(data, {task::SweepParam::k, task::SweepParam::Omega, findSweepMetric("steady_fraction"), {}});
   EXPECT_THAT(map.xCentres, ElementsAre(8.0, 16.0));
   EXPECT_THAT(map.yCentres, ElementsAre(-1.0, -0.3141592653589793));  // sorted increasing
   ASSERT_EQ(map.values.size(), 4u);
@@ -41,7 +41,7 @@ TEST(SweepMaps, TippedCellsAreGreyAndMarked) {
   EXPECT_THAT(map.missingNote, HasSubstr("T: tipped over"));
   EXPECT_EQ(map.title, "steady share of the run");  // one point per cell: no aggregate to name
   const report::HeatmapDef stopped =
-      sweepHeatmap(data, {script::SweepParam::k, script::SweepParam::Omega, findSweepMetric("stopped"), {}});
+      sweepHeatmap(data, {task::SweepParam::k, task::SweepParam::Omega, findSweepMetric("stopped"), {}});
   EXPECT_THAT(stopped.values, ElementsAre(1.0, 1.0, 0.0, 0.0));  // the stopped runs count here
 
   const std::string svg = report::renderHeatmap(map);
@@ -57,7 +57,7 @@ TEST(SweepMaps, FurtherAxesAreAggregatedAndSaidSo) {
       { param = "Omega", values = { -0.6, -0.4 } } } })",
                      dir.path(), {}, 2);
   const SweepData data = loadSweep(dir.path());
-  MapRequest request{script::SweepParam::Omega, script::SweepParam::k, findSweepMetric("max_tilt_rad"), Aggregate::Max};
+  MapRequest request{task::SweepParam::Omega, task::SweepParam::k, findSweepMetric("max_tilt_rad"), Aggregate::Max};
   const report::HeatmapDef map = sweepHeatmap(data, request);
   EXPECT_EQ(map.title, "largest tilt, max over m_p (2 points/cell)");
   // The cell (Omega = -0.6, k = 8) holds points 0 (m_p 0.5) and 2 (m_p 1).
@@ -81,9 +81,9 @@ TEST(SweepMaps, RefusesWhatCannotBeMapped) {
   test::runSweepInto(test::kTippingSweep, dir.path() / "whole");
   const SweepData data = loadSweep(dir.path() / "whole");
   const SweepMetric* metric = findSweepMetric("loops");
-  EXPECT_THROW(sweepHeatmap(data, {script::SweepParam::k, script::SweepParam::k, metric, {}}), SweepError);
+  EXPECT_THROW(sweepHeatmap(data, {task::SweepParam::k, task::SweepParam::k, metric, {}}), SweepError);
   try {
-    sweepHeatmap(data, {script::SweepParam::k, script::SweepParam::r1, metric, {}});
+    sweepHeatmap(data, {task::SweepParam::k, task::SweepParam::r1, metric, {}});
     FAIL();
   } catch (const SweepError& e) {
     EXPECT_THAT(e.what(), HasSubstr("r1 is not an axis of this sweep (its axes: k, Omega)"));

@@ -17,13 +17,13 @@ using ::testing::HasSubstr;
 using ::testing::StartsWith;
 
 TEST(SweepSpecJson, RoundTripsToTheSameText) {
-  const script::SweepDef d = test::sweepOf(R"(return { start = "rest", tol = 1e-9, analysis = { min_rate = 0.01 },
+  const task::SweepDef d = test::sweepOf(R"(return { start = "rest", tol = 1e-9, analysis = { min_rate = 0.01 },
       axes = { { param = "m_p", range = { from = 0.1, to = 3, count = 4, log = true } },
                { param = "Omega", values = { -0.3141592653589793, -0.1 } } } })");
   const std::string text = specJson(d);
-  const script::SweepDef back = specFromJson(text, "x");
+  const task::SweepDef back = specFromJson(text, "x");
   EXPECT_EQ(specJson(back), text);
-  EXPECT_EQ(back.start, script::SweepStart::Rest);
+  EXPECT_EQ(back.start, task::SweepStart::Rest);
   EXPECT_EQ(back.analysis.minRate, 0.01);
   EXPECT_EQ(back.axes[0].values, d.axes[0].values);  // bit for bit
   EXPECT_TRUE(back.axes[0].log);
@@ -41,7 +41,7 @@ TEST(SweepSpecJson, TheHashFollowsWhatDecidesTheRows) {
   };
   EXPECT_EQ(specHash(spec("a", "10")), specHash(spec("b", "10")));
   EXPECT_NE(specHash(spec("a", "10")), specHash(spec("a", "10.5")));
-  script::SweepDef d = spec("a", "10");
+  task::SweepDef d = spec("a", "10");
   const std::string before = specHash(d);
   d.axes[0].values[1] = std::nextafter(8.0, 9.0);  // one bit
   EXPECT_NE(specHash(d), before);

@@ -13,12 +13,12 @@ namespace {
 
 struct Fixture {
   script::LoadedLevel level = script::LevelLoader().loadFile(HEMIROLL_SOURCE_DIR "/levels/paper_reaching.lua");
-  script::TaskJudge judge{level.def.task};
+  task::TaskJudge judge{level.def.task};
   haptics::ServoSnapshot snapshot;
 
   void judgeAt(double time) {
     snapshot.time = time;
-    script::JudgeInput in;
+    task::JudgeInput in;
     in.time = time;
     in.state = physics::forceStateOf(snapshot.state);
     judge.judge(in);
@@ -36,9 +36,9 @@ TEST(PlayHudTest, ReadsTimeDistanceAndComponentsFromTheJudge) {
   EXPECT_EQ(r.timeLimit, f.level.def.task.timeLimit);
   double du = 0.0, dv = 0.0;
   int inside = 0;
-  for (const script::ComponentStatus& c : f.judge.components()) {
-    if (c.variable == script::TaskVariable::u_a) du = c.error;
-    if (c.variable == script::TaskVariable::v_a) dv = c.error;
+  for (const task::ComponentStatus& c : f.judge.components()) {
+    if (c.variable == task::TaskVariable::u_a) du = c.error;
+    if (c.variable == task::TaskVariable::v_a) dv = c.error;
     inside += c.inside;
   }
   ASSERT_GT(std::hypot(du, dv), 0.0);  // the paper's target is 5.7 cm from the start
@@ -157,20 +157,20 @@ TEST(PlayHudTest, PlotAxesGetTheDecimalsThatTellTheirEndsApart) {
 // The full table keeps the physics' names, with the value and what it
 // wants (not their difference, which the player had to negate).
 TEST(PlayHudTest, TheTableReadsValuesAndTargetsInPlayerUnits) {
-  script::ComponentStatus c;
-  c.variable = script::TaskVariable::u_a;
+  task::ComponentStatus c;
+  c.variable = task::TaskVariable::u_a;
   c.target = -0.04;
   c.error = 0.0123;
   c.tolerance = 0.001;
   EXPECT_EQ(PlayHud::componentLine(c), "contact x (u_a) -27.7 mm, wants -40.0 ±1.0 mm");
-  c.variable = script::TaskVariable::u_o;  // a band under a degree gets two decimals
+  c.variable = task::TaskVariable::u_o;  // a band under a degree gets two decimals
   c.target = 0.0;
   c.error = -0.02;
   c.tolerance = 0.01;
   EXPECT_EQ(PlayHud::componentLine(c), "tilt u (u_o) -1.15 °, wants +0.00 ±0.57 °");
-  script::HoldBreak b;
+  task::HoldBreak b;
   b.happened = true;
-  b.variable = script::TaskVariable::xd_p;
+  b.variable = task::TaskVariable::xd_p;
   b.excess = 0.0042;
   b.heldFor = 0.6;
   EXPECT_EQ(PlayHud::holdBreakLine(b), "the mass point speed went out by 4.2 mm/s after 0.6 s");
@@ -180,12 +180,12 @@ TEST(PlayHudTest, TheTableReadsValuesAndTargetsInPlayerUnits) {
 // gauge's: the face normal's angle and the way it leans.
 TEST(PlayHudTest, ReadsTheHoldItsLastBreakAndTheTilt) {
   script::LoadedLevel level = script::LevelLoader().loadFile(HEMIROLL_SOURCE_DIR "/levels/tutorial_01_tilt_and_return.lua");
-  script::TaskJudge judge(level.def.task);
+  task::TaskJudge judge(level.def.task);
   haptics::ServoSnapshot s;
   s.state[physics::force_slot::u_o] = -0.08;  // the first stage's target: leaning towards +x
   auto judgeAt = [&](double t) {
     s.time = t;
-    script::JudgeInput in;
+    task::JudgeInput in;
     in.time = t;
     in.state = physics::forceStateOf(s.state);
     judge.judge(in);
@@ -204,7 +204,7 @@ TEST(PlayHudTest, ReadsTheHoldItsLastBreakAndTheTilt) {
   hud.update(s, judge);
   EXPECT_FALSE(hud.readout().allInside);
   ASSERT_TRUE(hud.readout().holdBreak.happened);
-  EXPECT_EQ(hud.readout().holdBreak.variable, script::TaskVariable::u_o);
+  EXPECT_EQ(hud.readout().holdBreak.variable, task::TaskVariable::u_o);
   EXPECT_NEAR(hud.readout().holdBreak.excess, 0.05, 1e-12);
   EXPECT_EQ(hud.readout().tilt.angle, 0.0);
 }

@@ -18,10 +18,10 @@ namespace hemiroll::game {
 namespace {
 
 using ::testing::HasSubstr;
-using V = script::TaskVariable;
+using V = task::TaskVariable;
 
-script::ComponentStatus component(V v, double target, double error, double tolerance) {
-  script::ComponentStatus c;
+task::ComponentStatus component(V v, double target, double error, double tolerance) {
+  task::ComponentStatus c;
   c.variable = v;
   c.target = target;
   c.error = error;
@@ -31,7 +31,7 @@ script::ComponentStatus component(V v, double target, double error, double toler
   return c;
 }
 
-std::vector<std::string> rows(const std::vector<script::ComponentStatus>& cs, double heading = 0.0) {
+std::vector<std::string> rows(const std::vector<task::ComponentStatus>& cs, double heading = 0.0) {
   std::array<AdviceRow, 8> out{};
   const int n = adviceRows(cs, heading, out);
   std::vector<std::string> text;
@@ -43,7 +43,7 @@ std::vector<std::string> rows(const std::vector<script::ComponentStatus>& cs, do
 // 4 cm back and 4 cm left of the start, which the follow camera shows down
 // and to the left; an orbit camera turned a quarter shows it elsewhere.
 TEST(PlayerWordsTest, TheContactPointSaysWhereToRollOnScreen) {
-  const std::vector<script::ComponentStatus> start = {component(V::u_a, -0.04, 0.04, 0.004),
+  const std::vector<task::ComponentStatus> start = {component(V::u_a, -0.04, 0.04, 0.004),
                                                       component(V::v_a, -0.04, 0.04, 0.004)};
   EXPECT_EQ(rows(start), std::vector<std::string>{"contact point: roll 56.6 mm down-left (±4.0)"});
   // Screen right along +y (and up along -x): the move (-x, -y) is up-left there.
@@ -76,12 +76,12 @@ TEST(PlayerWordsTest, OtherGroupsSayWhatToDo) {
 
 // The task's short form, from the stage's targets.
 TEST(PlayerWordsTest, TheGoalIsTheStagesTargetsInShort) {
-  script::StageDef paper;
+  task::StageDef paper;
   for (V v : {V::x_p, V::y_p, V::xd_p, V::yd_p, V::w_x, V::w_y, V::w_z, V::u_a, V::v_a, V::u_o, V::v_o})
     paper.targets.push_back({v, v == V::u_a || v == V::v_a ? -0.04 : 0.0, 0.004});
   EXPECT_EQ(taskGoal(paper, 0, 1),
             "Goal: the contact point onto the green square, then upright, still, the mass point in the middle");
-  script::StageDef lean;
+  task::StageDef lean;
   lean.name = "lean";
   lean.targets = {{V::u_o, -0.08, 0.02}};
   lean.hold = 0.5;

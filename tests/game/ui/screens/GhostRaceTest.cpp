@@ -46,7 +46,7 @@ class GhostRaceTest : public ::testing::Test {
   // The level's results after a logged ~1 s trial (`replay`) that succeeded at `time`.
   TrialResult successAt(double time) const {
     TrialResult result;
-    result.outcome = script::TrialOutcome::Success;
+    result.outcome = task::TrialOutcome::Success;
     result.reason = "target held";
     result.time = time;
     return result;

@@ -11,16 +11,16 @@
 namespace hemiroll::game {
 namespace {
 
-script::TaskDef holdTask(double hold) {
-  script::TaskDef task;
-  script::StageDef stage;
+task::TaskDef holdTask(double hold) {
+  task::TaskDef task;
+  task::StageDef stage;
   stage.hold = hold;
   task.stages.push_back(stage);
   return task;
 }
 
-script::ComponentStatus out(script::TaskVariable v, double error, double tolerance) {
-  script::ComponentStatus c;
+task::ComponentStatus out(task::TaskVariable v, double error, double tolerance) {
+  task::ComponentStatus c;
   c.variable = v;
   c.error = error;
   c.tolerance = tolerance;
@@ -31,7 +31,7 @@ script::ComponentStatus out(script::TaskVariable v, double error, double toleran
 
 TEST(TrialEndingTest, ASuccessNamesTheHoldThatEndedIt) {
   TrialResult r;
-  r.outcome = script::TrialOutcome::Success;
+  r.outcome = task::TrialOutcome::Success;
   r.time = 12.34;
   r.summary.stageCount = 1;
   const std::vector<std::string> lines = explainEnding(r, holdTask(1.0));
@@ -42,12 +42,12 @@ TEST(TrialEndingTest, ASuccessNamesTheHoldThatEndedIt) {
 
 TEST(TrialEndingTest, AFailureNamesTheMomentAndTheFurthestOut) {
   TrialResult r;
-  r.outcome = script::TrialOutcome::Failure;
+  r.outcome = task::TrialOutcome::Failure;
   r.reason = "time limit reached";
   r.time = 240.0;
   r.summary.stageCount = 2;
   r.summary.stagesPassed = 1;
-  using V = script::TaskVariable;
+  using V = task::TaskVariable;
   r.summary.finalComponents = {out(V::u_a, 0.002, 0.004),  out(V::v_a, 0.012, 0.004), out(V::x_p, -0.009, 0.004),
                                out(V::y_p, 0.005, 0.004),  out(V::w_x, 0.02, 0.01),   out(V::w_y, 0.011, 0.01),
                                out(V::psi, 0.5, 0.17)};
@@ -68,7 +68,7 @@ TEST(TrialEndingTest, AFailureNamesTheMomentAndTheFurthestOut) {
 }
 
 TEST(TrialEndingTest, MedalThresholdsOnlyWhenTheLevelHasMedals) {
-  script::ScoringDef s;
+  task::ScoringDef s;
   EXPECT_EQ(medalLine(s, std::nullopt), "");
   s.hasMedals = true;
   s.bronze = 70;

@@ -1,5 +1,5 @@
 // game/ui/settings/Settings: the player's override of the force method and gains,
-// applied as a protocol's overrides are (script::overriddenCoupling).
+// applied as a protocol's overrides are (task::overriddenCoupling).
 
 #include "game/ui/settings/Settings.h"
 

@@ -8,16 +8,16 @@ namespace hemiroll::game {
 namespace {
 
 namespace slot = physics::force_slot;
-using script::TaskVariable;
+using task::TaskVariable;
 
-script::LevelDef paperLikeLevel() {
-  script::LevelDef level;
+task::LevelDef paperLikeLevel() {
+  task::LevelDef level;
   level.params.radius = 0.05;
-  script::StageDef stage;
+  task::StageDef stage;
   stage.targets = {{TaskVariable::x_p, 0.0, 0.004}, {TaskVariable::u_a, -0.04, 0.004}, {TaskVariable::v_a, -0.03, 0.002}};
   level.task.stages.push_back(stage);
-  script::ZoneDef zone;
-  zone.shape = script::ZoneShape::Box;
+  task::ZoneDef zone;
+  zone.shape = task::ZoneShape::Box;
   zone.min = {0.1, 0.1};
   zone.max = {0.2, 0.15};
   level.task.forbidden.push_back(zone);
@@ -25,7 +25,7 @@ script::LevelDef paperLikeLevel() {
 }
 
 TEST(RenderSceneBuilderTest, PoseFromTheState) {
-  const script::LevelDef level = paperLikeLevel();
+  const task::LevelDef level = paperLikeLevel();
   physics::ForceDrivenState x = physics::ForceDrivenState::Zero();
   x[slot::u_a] = 0.01;
   x[slot::v_a] = -0.02;
@@ -44,7 +44,7 @@ TEST(RenderSceneBuilderTest, PoseFromTheState) {
 }
 
 TEST(RenderSceneBuilderTest, TheContactTargetAndZonesOfTheStage) {
-  const script::LevelDef level = paperLikeLevel();
+  const task::LevelDef level = paperLikeLevel();
   physics::ForceDrivenState x = physics::ForceDrivenState::Zero();
   render::RenderScene scene;
   fillFromState(level, x, 0, scene);
@@ -67,8 +67,8 @@ TEST(RenderSceneBuilderTest, TheContactTargetAndZonesOfTheStage) {
 }
 
 TEST(RenderSceneBuilderTest, AFreeComponentGetsAWideBand) {
-  script::LevelDef level;
-  script::StageDef stage;
+  task::LevelDef level;
+  task::StageDef stage;
   stage.targets = {{TaskVariable::u_a, 0.05, 0.01}};
   level.task.stages.push_back(stage);
   render::RenderScene scene;
@@ -78,7 +78,7 @@ TEST(RenderSceneBuilderTest, AFreeComponentGetsAWideBand) {
 }
 
 TEST(RenderSceneBuilderTest, SnapshotAddsProxySpringAndForce) {
-  const script::LevelDef level = paperLikeLevel();
+  const task::LevelDef level = paperLikeLevel();
   haptics::ServoSnapshot snap;
   snap.proxyPosition = {0.01, 0.02, 0.06};
   snap.handForce = {0.5, -1.0, 2.0};

@@ -31,9 +31,9 @@ TEST(DeviceFactoryTest, EveryPlayerDeviceIsMadeAndMappable) {
   const std::vector<std::string> names = f.names();
   for (const char* player : kPlayerDevices) {
     EXPECT_NE(std::find(names.begin(), names.end(), player), names.end()) << player;
-    EXPECT_NE(std::find_if(std::begin(script::kMappedDevices), std::end(script::kMappedDevices),
+    EXPECT_NE(std::find_if(std::begin(task::kMappedDevices), std::end(task::kMappedDevices),
                            [&](const char* mapped) { return std::string(mapped) == player; }),
-              std::end(script::kMappedDevices))
+              std::end(task::kMappedDevices))
         << player;
   }
 }
