@@ -13,7 +13,9 @@
 //   Settle  the proxy glides at `glideSpeed` to a point above the landing
 //           point (c_up, moved towards the target as far as the bands on p
 //           and u_co allow): the hemisphere rolls straight under it and
-//           stands upright there, since a straight roll keeps c_up.
+//           stands upright there, since a straight roll keeps c_up. Near
+//           rest a regulator (SettleRegulator.h) takes the proxy and holds
+//           the rest leaning from c_up to the landing point, still.
 //
 // Deterministic and cheap (a few flops per tick); copyable, so that the
 // planner can roll copies forward through the model (Autopilot.h).

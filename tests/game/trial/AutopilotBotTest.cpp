@@ -147,6 +147,23 @@ return { name = "reach and hold, then psi", params = { R = 0.04, m_s = 0.1, m_p 
   EXPECT_EQ(twoStages.summary.stagesPassed, 2);
 }
 
+// The holds' generator (levels/generated/random_hold.lua): two seeds, one
+// shoved (seed 0: 1.7 cm, hold 0.77 s) and one not (seed 9); the tool plays
+// seeds 0-59, 60 of 60 won (docs/AUTOPILOT.md).
+TEST(AutopilotBot, WinsGeneratedHoldTasks) {
+  for (const std::uint64_t seed : {0u, 9u}) {
+    script::LevelLoadOptions options;
+    options.seed = seed;
+    script::LoadedLevel level = script::LevelLoader(options).loadFile(kLevels + "generated/random_hold.lua");
+    EXPECT_NE(level.def.name.find("(hold)"), std::string::npos) << seed << ": " << level.def.name;
+    AutopilotBot bot;
+    TrialSettings settings;
+    settings.seed = seed;
+    const TrialResult r = BotTrial(level, bot, settings).run();
+    EXPECT_EQ(r.outcome, TrialOutcome::Success) << level.def.name << ": " << r.reason;
+  }
+}
+
 TEST(AutopilotBot, WinsWithEveryForceMethodAndStiffnessRatio) {
   // The paper's task with M1, M2 and M3 at alpha = 1..4 (Sec. 4.1's range).
   const std::string paper = kLevels + "paper_reaching.lua";
