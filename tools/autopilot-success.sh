@@ -7,7 +7,9 @@
 # then the rate, the median time of the won tasks, the median wall time
 # and the CPU per simulated second, over all and per kind
 # (tools/bot-success.sh). --level FILE plays another generator (e.g.
-# levels/generated/random_reach.lua, the paper's body reaching anywhere).
+# levels/generated/random_reach.lua, the paper's body reaching anywhere, or
+# levels/generated/random_hold.lua, the paper's task moved with a hold of
+# 0.1-1 s and bands 1-2x the paper's: kind "hold").
 #   tools/autopilot-success.sh [--level FILE] [FIRST LAST] [BUILD_DIR]
 # A failed seed runs to the level's time limit: expect 20-40 s of wall time
 # for each, about a second for most won ones.

@@ -60,6 +60,8 @@ Autopilot::Autopilot(const AutopilotDef& def)
   def_.budget = std::clamp(def_.budget, 0.25, 4.0);
   def_.helix.stiffen = def_.handStiffens ? stiffeningFor(def_.params, def_.coupling, 1.0) : 0.0;
   policy_.params().stiffen = def_.helix.stiffen;
+  if (def_.regulatedSettle) policy_.setSettleGain(settleGainFor(def_.params, def_.coupling, def_.dt));
+  policy_.enableRegulator(def_.handStiffens);
   work_ = policy_;
   stats_.decisionWall.reserve(4096);
   if (def_.plannerThread) worker_ = std::make_unique<PlannerWorker>([this](const PlanJob& j) { return plan(j); });
@@ -136,6 +138,7 @@ ProxyCommand Autopilot::act(const AutopilotInput& input) {
     return out;
   }
   policy_.params().stiffen = def_.handStiffens ? stiffeningFor(def_.params, def_.coupling, input.forceShare) : 0.0;
+  policy_.enableRegulator(def_.handStiffens);
   if (given_.set[11] && !turningPsi_ && normalisedError(goal_, input.state) <= 1.0) startTurningPsi(input.time);
   if (def_.plannerThread)
     exchangeWithWorker(input);

@@ -92,6 +92,9 @@ struct AutopilotDef {
   // the coupling (HelixParams::stiffen, stiffeningFor). Off where another
   // hand holds the proxy and the plan is only a guide or a hint.
   bool handStiffens = true;
+  // Settle with the regulator (SettleRegulator.h): it comes to rest and
+  // stays. Off: the glide of before, which passes through tight bands.
+  bool regulatedSettle = true;
   // Planning's work per trial (issue 33): at most budget x
   // (planningRolloutSeconds + planningRolloutSecondsPerSimulatedSecond x the
   // simulated time since the first act), counted in seconds the planner's

@@ -12,6 +12,14 @@ namespace hemiroll::autopilot {
 using physics::Vec2;
 using physics::Vec3;
 
+namespace {
+// The regulator's largest proxy speed: the planner's limit (Autopilot.cpp).
+constexpr double kRegulatedSpeed = 0.25;  // [m/s]
+// The regulator takes over below this tilt and this rocking (HelixPolicy::nearRest).
+constexpr double kRegulateTilt = 0.1;     // [rad]
+constexpr double kRegulateRocking = 0.2;  // [rad/s]
+}  // namespace
+
 HelixPolicy::HelixPolicy(const physics::ModelConstants& constants, const HelixParams& params, double dt)
     : constants_(&constants), params_(params), dt_(dt) {}
 
@@ -29,7 +37,11 @@ void HelixPolicy::setGoal(const Goal& goal) {
   landReach_ = 0.7 * reach;
 }
 
-void HelixPolicy::startAt(const Vec3& proxy) { last_ = proxy; }
+void HelixPolicy::startAt(const Vec3& proxy) {
+  last_ = given_ = proxy;
+  added_ = Vec3::Zero();
+  regulating_ = false;
+}
 
 Vec2 LandingShape::at(double t) const {
   const double s = t / spacing;
@@ -45,6 +57,7 @@ void HelixPolicy::land(double landRate, double despinGain, const LandingShape& s
   params_.despinGain = despinGain;
   shape_ = shape;
   landingTime_ = 0.0;
+  regulating_ = false;
   // A circle that never started has nothing to fade: settle at once, without
   // the steering offset's step (a kick a light mass point feels).
   if (phase_ == HelixPhase::Travel && radius_ <= 0.0) {
@@ -56,6 +69,7 @@ void HelixPolicy::land(double landRate, double despinGain, const LandingShape& s
 
 void HelixPolicy::travel() {
   phase_ = HelixPhase::Travel;
+  regulating_ = false;
   detourZone_ = -1;
   shape_ = {};
   settleOffset_ = Vec2::Zero();
@@ -71,6 +85,7 @@ void HelixPolicy::settleNow() {
   shape_ = {};
   landingTime_ = 0.0;
   radius_ = 0.0;
+  regulating_ = false;
 }
 
 Vec2 HelixPolicy::contactTarget() const {
@@ -187,7 +202,11 @@ Vec3 HelixPolicy::proxyFor(const physics::ForceDrivenState& x) {
     const double most = params_.glideSpeed * dt_;
     if (step.norm() > most) step *= most / step.norm();
     proxy = last_ + step;
+  } else if (phase_ == HelixPhase::Settle && settleGain_.valid && regulatorOn_ && goal_.zoneCount == 0 &&
+             (regulating_ || nearRest(x, up.tilt))) {
+    proxy = regulatedSettle(x, up.point, landingPoint(up.point));
   } else if (phase_ == HelixPhase::Settle) {
+    regulating_ = false;
     const Vec2 land = detour(Vec2(x[u_a], x[v_a]), landingPoint(up.point));
     const Vec2 error = land - Vec2(x[u_a], x[v_a]);
     // The goal creeps only while the contact is not yet well inside its
@@ -229,12 +248,40 @@ Vec3 HelixPolicy::proxyFor(const physics::ForceDrivenState& x) {
   // last_ keeps the path; the landing shape rides on it.
   last_ = proxy;
   motion_.phase = phase_;
+  added_ = Vec3::Zero();
   if (phase_ != HelixPhase::Travel) {
     const Vec2 shaped = shape_.at(landingTime_);
     landingTime_ += dt_;
-    proxy += despin(x) + Vec3(shaped.x(), shaped.y(), 0.0);
+    added_ = despin(x) + Vec3(shaped.x(), shaped.y(), 0.0);
   }
-  return stiffened(proxy, x);
+  // The regulator's proxy is the device's own: its model has the level's
+  // coupling, so the hand does not stiffen it.
+  given_ = regulating_ ? Vec3(proxy + added_) : stiffened(proxy + added_, x);
+  return given_;
+}
+
+bool HelixPolicy::nearRest(const physics::ForceDrivenState& x, double tilt) const {
+  // The regulator is linear about a rest: taking over from a landing still
+  // tilted 0.1-0.4 rad and rocking, it threw the paper's hemisphere off or
+  // left it spinning at 0.16 rad/s (measured), so the glide brings it near
+  // first.
+  using namespace physics::force_slot;
+  return tilt < kRegulateTilt && std::hypot(x[w_x], x[w_y]) < kRegulateRocking;
+}
+
+Vec3 HelixPolicy::regulatedSettle(const physics::ForceDrivenState& x, const Vec2& upright, const Vec2& land) {
+  // The regulator's path starts where the proxy is (less what rides on it).
+  if (!regulating_) {
+    last_ = given_ - added_;
+    regulating_ = true;
+  }
+  const Vec2 away = land - upright;
+  const double tilt = away.norm() / constants_->params.radius;
+  const Vec2 lean = tilt > 1e-12 ? Vec2(std::sin(tilt) / away.norm() * away) : Vec2::Zero();
+  // At most the planner's proxy speed (Autopilot's deliverable()).
+  const Vec2 step = settleStep(settleGain_, *constants_, x, given_.head<2>(), lean, kRegulatedSpeed * dt_);
+  motion_.goal = land;
+  return {last_.x() + step.x(), last_.y() + step.y(), settleGain_.proxyHeight};
 }
 
 Vec3 HelixPolicy::stiffened(const Vec3& proxy, const physics::ForceDrivenState& x) const {

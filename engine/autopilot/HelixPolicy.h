@@ -13,7 +13,9 @@
 //   Settle  the proxy glides at `glideSpeed` to a point above the landing
 //           point (c_up, moved towards the target as far as the bands on p
 //           and u_co allow): the hemisphere rolls straight under it and
-//           stands upright there, since a straight roll keeps c_up.
+//           stands upright there, since a straight roll keeps c_up. Near
+//           rest a regulator (SettleRegulator.h) takes the proxy and holds
+//           the rest leaning from c_up to the landing point, still.
 //
 // Deterministic and cheap (a few flops per tick); copyable, so that the
 // planner can roll copies forward through the model (Autopilot.h).
@@ -21,6 +23,7 @@
 #include <array>
 
 #include "engine/autopilot/Goal.h"
+#include "engine/autopilot/SettleRegulator.h"
 #include "engine/physics/HemisphereParams.h"
 #include "engine/physics/StateLayout.h"
 
@@ -97,6 +100,12 @@ class HelixPolicy {
   // on its way).
   void reshape(const LandingShape& shape);
   void settleNow();
+  // Settle with the regulator (SettleRegulator.h) where it has a gain:
+  // the proxy is moved to hold the rest rather than glided over it.
+  void setSettleGain(const SettleGain& gain) { settleGain_ = gain; }
+  // Only where the proxy is the autopilot's own: under guidance or a hint
+  // another hand holds it, and the regulator's model is not the plant.
+  void enableRegulator(bool on) { regulatorOn_ = on; }
 
   // The proxy for the next tick, from the state after the last one.
   physics::Vec3 proxyFor(const physics::ForceDrivenState& x);
@@ -120,6 +129,10 @@ class HelixPolicy {
   // goal that holds the hemisphere at that lean (HelixPolicy.cpp).
   bool leansOnly() const;
   physics::Vec3 leanGoal(const physics::ForceDrivenState& x);
+  bool nearRest(const physics::ForceDrivenState& x, double tilt) const;
+  // The regulated settle: the rest leaning from c_up to the landing point.
+  physics::Vec3 regulatedSettle(const physics::ForceDrivenState& x, const physics::Vec2& upright,
+                                const physics::Vec2& land);
 
   const physics::ModelConstants* constants_;
   HelixParams params_;
@@ -136,6 +149,11 @@ class HelixPolicy {
   int detourZone_ = -1;       // the zone being passed (-1: none)
   physics::Vec2 waypoint_ = physics::Vec2::Zero();
   HelixMotion motion_;
+  SettleGain settleGain_;
+  physics::Vec3 given_ = physics::Vec3::Zero();  // the proxy the last tick gave (after every addition)
+  physics::Vec3 added_ = physics::Vec3::Zero();  // what the despin circle and the shape added to it
+  bool regulating_ = false;                      // the regulator has the proxy (its path starts at given_)
+  bool regulatorOn_ = true;
 };
 
 }  // namespace hemiroll::autopilot

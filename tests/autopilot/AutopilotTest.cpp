@@ -85,6 +85,41 @@ TEST(Autopilot, SolvesThePaperTaskAgainstTheModel) {
   EXPECT_LT(p.time, 40.0);  // the paper's best humans: about 40 s
 }
 
+// The paper's task with a hold (the paper has none; before the settle
+// regulator the landings passed through its bands without staying and
+// planning spent its budget by 12.7 s): the bands must hold for 0.1 s in a
+// row, and here they must go on holding for 2 s more, every tick: the
+// regulated settle comes to rest inside them and stays.
+TEST(Autopilot, HoldsThePapersTaskAndStays) {
+  Goal goal = paperGoal();
+  goal.hold = 0.1;
+  const AutopilotDef def;
+  Autopilot pilot(def);
+  PlantModel plant(def.params, def.coupling, def.dt);
+  plant.reset(physics::ForceDrivenState::Zero(), 0.0);
+  AutopilotInput in;
+  in.goal = goal;
+  in.engaged = true;
+  in.massPosition = Vec3(0.0, 0.0, def.params.radius);
+  const long long holdTicks = std::llround(goal.hold / def.dt);
+  long long inside = 0, leftAfter = 0;
+  double held = -1.0;
+  for (long long k = 0; k < 60000 && (held < 0.0 || plant.time() < held + 2.0); ++k) {
+    in.time = plant.time();
+    in.state = plant.state();
+    const ProxyCommand c = pilot.act(in);
+    ASSERT_TRUE(pilot.failure().empty()) << pilot.failure();
+    ASSERT_EQ(plant.tick(c.position, c.velocity), physics::DomainEvent::None) << "t = " << plant.time();
+    const bool in = normalisedError(goal, plant.state()) <= 1.0;
+    inside = in ? inside + 1 : 0;
+    if (held < 0.0 && inside > holdTicks) held = plant.time();
+    if (held >= 0.0 && !in) ++leftAfter;
+  }
+  ASSERT_GE(held, 0.0) << "not held in 60 s";
+  EXPECT_LT(held, 40.0);  // the paper's best humans: about 40 s (measured: 11.9 s)
+  EXPECT_EQ(leftAfter, 0);
+}
+
 TEST(Autopilot, RecoversFromAShove) {
   // 3 s in, mid-helix, the mass point is knocked sideways at 5 cm/s (a 0.05
   // N s impulse on 1 kg): the plan made before no longer holds, and the

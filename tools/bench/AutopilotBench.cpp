@@ -86,6 +86,29 @@ void policyTick(benchmark::State& state, bool settling) {
   }
 }
 
+// The regulated settle's tick (SettleRegulator): near rest, where it holds
+// the proxy.
+void BM_HelixPolicyTickRegulated(benchmark::State& state) {
+  const physics::HemisphereParams params;
+  const physics::ModelConstants constants(params);
+  autopilot::Goal goal;
+  for (int slot : {7, 8}) {
+    goal.set[static_cast<std::size_t>(slot)] = true;
+    goal.target[static_cast<std::size_t>(slot)] = -0.04;
+    goal.tolerance[static_cast<std::size_t>(slot)] = 0.004;
+  }
+  autopilot::HelixPolicy policy(constants, autopilot::HelixParams{}, 0.001);
+  policy.setGoal(goal);
+  policy.setSettleGain(autopilot::settleGainFor(params, physics::CouplingDef{}, 0.001));
+  policy.settleNow();
+  physics::ForceDrivenState x = physics::ForceDrivenState::Zero();
+  x << 0.0017, 0.0, 0.0, 0.0, 0.01, -0.01, 0.005, -0.039, -0.039, -0.04, 0.0, 0.3;
+  for (auto _ : state) {
+    x[11] += 1e-9;  // a new state each tick, as the loop gives
+    benchmark::DoNotOptimize(policy.proxyFor(x));
+  }
+}
+
 void BM_HelixPolicyTickTravelling(benchmark::State& state) { policyTick(state, false); }
 void BM_HelixPolicyTickSettling(benchmark::State& state) { policyTick(state, true); }
 
@@ -97,6 +120,7 @@ void BM_AutopilotFullOrientation(benchmark::State& state) { playLevel(state, "ch
 
 BENCHMARK(BM_HelixPolicyTickTravelling);
 BENCHMARK(BM_HelixPolicyTickSettling);
+BENCHMARK(BM_HelixPolicyTickRegulated);
 BENCHMARK(BM_AutopilotPaperTask)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_AutopilotTutorial04)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_AutopilotFullOrientation)->Unit(benchmark::kMillisecond)->Iterations(1);

@@ -115,6 +115,55 @@ TEST(AutopilotBot, WinsEachKindOfTheWidenedGenerator) {
   }
 }
 
+// Holds (issue 28): the paper's task with a hold of 0.1 s, and a
+// researcher's two stages written from the docs (reach 5 cm at 45 degrees
+// and hold still, then psi within 20 degrees and hold still; p 6 mm, omega
+// 0.02 rad/s), once lost at 13.2 s (landings passed through the bands; the
+// planning budget ran out). docs/AUTOPILOT.md has the generated hold tasks.
+TEST(AutopilotBot, WinsTasksWithHolds) {
+  std::string source = readFile(kLevels + "paper_reaching.lua");
+  const std::string shipped = "hold = 0,";
+  source.replace(source.find(shipped), shipped.size(), "hold = 0.1,");
+  script::LoadedLevel level = script::LevelLoader().loadSource(source, "paper_hold.lua");
+  AutopilotBot bot;
+  const TrialResult paper = BotTrial(level, bot, TrialSettings{}).run();
+  EXPECT_EQ(paper.outcome, TrialOutcome::Success) << paper.reason;
+  EXPECT_EQ(paper.medal, script::Medal::Gold);
+
+  const TrialResult twoStages = playSource(R"lua(
+local pi = math.pi
+return { name = "reach and hold, then psi", params = { R = 0.04, m_s = 0.1, m_p = 1.0, g = 9.81 },
+  force = { method = "M3", kr = 250, kv = 10, alpha = 2 },
+  task = { stages = {
+    { targets = { u_ca = { value = { 0.05 * math.cos(pi / 4), 0.05 * math.sin(pi / 4) }, tol = 0.006 },
+                  p = { value = { 0, 0 }, tol = 0.006 }, p_dot = { value = { 0, 0 }, tol = 0.006 },
+                  omega = { value = { 0, 0, 0 }, tol = 0.02 }, u_co = { value = { 0, 0 }, tol = pi / 12 } },
+      hold = 1.0 },
+    { targets = { p = { value = { 0, 0 }, tol = 0.006 }, omega = { value = { 0, 0, 0 }, tol = 0.02 },
+                  psi = { value = -2.0, tol = 20 * pi / 180 } },
+      hold = 1.0 } }, time_limit = 120 } }
+)lua");
+  EXPECT_EQ(twoStages.outcome, TrialOutcome::Success) << twoStages.reason;
+  EXPECT_EQ(twoStages.summary.stagesPassed, 2);
+}
+
+// The holds' generator (levels/generated/random_hold.lua): two seeds, one
+// shoved (seed 0: 1.7 cm, hold 0.77 s) and one not (seed 9); the tool plays
+// seeds 0-59, 60 of 60 won (docs/AUTOPILOT.md).
+TEST(AutopilotBot, WinsGeneratedHoldTasks) {
+  for (const std::uint64_t seed : {0u, 9u}) {
+    script::LevelLoadOptions options;
+    options.seed = seed;
+    script::LoadedLevel level = script::LevelLoader(options).loadFile(kLevels + "generated/random_hold.lua");
+    EXPECT_NE(level.def.name.find("(hold)"), std::string::npos) << seed << ": " << level.def.name;
+    AutopilotBot bot;
+    TrialSettings settings;
+    settings.seed = seed;
+    const TrialResult r = BotTrial(level, bot, settings).run();
+    EXPECT_EQ(r.outcome, TrialOutcome::Success) << level.def.name << ": " << r.reason;
+  }
+}
+
 TEST(AutopilotBot, WinsWithEveryForceMethodAndStiffnessRatio) {
   // The paper's task with M1, M2 and M3 at alpha = 1..4 (Sec. 4.1's range).
   const std::string paper = kLevels + "paper_reaching.lua";
