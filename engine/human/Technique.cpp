@@ -64,6 +64,18 @@ Movement Technique::settle(const ScreenView& view, const Vec2& upright, const Ve
   return m;
 }
 
+Movement Technique::turn(const ScreenView& view, double radius) {
+  // An anticlockwise stir turns it clockwise; while the stir dies away it
+  // keeps the sense it had.
+  if (phase_ == Phase::Turn) turnSense_ = view.headingError < 0.0 ? 1.0 : -1.0;
+  Movement m;
+  m.kind = Movement::Kind::Stir;
+  m.centre = view.contact;
+  m.radius = radius;
+  m.rate = turnSense_ * def_.stirRate;
+  return m;
+}
+
 bool Technique::reachLeaning(const ScreenView& view) const {
   return view.contactTargetSet && !view.uprightRequired && !view.leanTargetSet &&
          (phase_ == Phase::Lean || (view.contactTarget - view.contact).norm() < def_.leanReach);
@@ -82,7 +94,19 @@ Movement Technique::decide(const ScreenView& view, double interval) {
     phase_ = Phase::Stir;
     nudge_ = Vec2::Zero();
   }
-  if (view.leanTargetSet && !view.contactTargetSet) {
+  // A heading to reach and no contact to carry: stir on the spot until the
+  // HUD's heading is well inside its band, then land as below.
+  const double headingOff = view.headingSet ? std::abs(view.headingError) / view.headingTolerance : 0.0;
+  if (view.headingSet && !view.contactTargetSet) {
+    if (phase_ == Phase::Stir || phase_ == Phase::Lean) phase_ = Phase::Turn;
+    if (phase_ == Phase::Settle && headingOff > def_.turnOutside) phase_ = Phase::Turn;
+    if (phase_ == Phase::Turn) {
+      if (headingOff > def_.turnInside) return turn(view, def_.stirRadius);
+      phase_ = Phase::Land;
+      fading_ = def_.stirRadius;
+    }
+  }
+  if (view.leanTargetSet && !view.contactTargetSet && !view.headingSet) {
     phase_ = Phase::Lean;
     return lean(view);
   }
@@ -105,6 +129,7 @@ Movement Technique::decide(const ScreenView& view, double interval) {
     case Phase::Land:
       fading_ = std::max(0.0, fading_ - def_.fadeRate * interval);
       break;
+    case Phase::Turn: break;
     case Phase::Settle:
       if (distance > def_.restirReach || view.time - settledAt_ > def_.settlePatience) phase_ = Phase::Stir;
       break;
@@ -115,6 +140,7 @@ Movement Technique::decide(const ScreenView& view, double interval) {
     nudge_ = Vec2::Zero();
   }
   if (phase_ == Phase::Settle) return settle(view, upright, target);
+  if (phase_ == Phase::Land && view.headingSet && !view.contactTargetSet) return turn(view, fading_);
   return stir(view, error, phase_ == Phase::Land ? fading_ : def_.stirRadius);
 }
 

@@ -13,6 +13,10 @@
 //   Settle then hold the hand still over that spot and nudge it while the
 //          contact stays off; stir again if it rolls away, or if it will not
 //          settle after a while.
+//   Turn   a task that asks for a heading the HUD says is not reached yet:
+//          stir round the contact with no aim, anticlockwise to turn it
+//          clockwise and the other way round, until the heading is well
+//          inside its band; then land and settle as above.
 //   Lean   a task that asks for a lean: hold the hand off the contact the way
 //          the lean should go, further while the lean falls short. A target
 //          near enough that may be reached leaning (nothing asks for upright):
@@ -45,11 +49,15 @@ struct TechniqueDef {
   double settlePatience = 10.0;   // settling this long without success: stir again [s]
   double leanGain = 0.5;          // leaning: the hold moves this fraction of the lean's error (as R sin) [-]
   double leanReach = 0.01;        // a target this near, with nothing asking for upright, is reached leaning [m]
+  // Turning: rolling the contact round a loop turns the hemisphere the other
+  // way about the vertical (an anticlockwise stir, a clockwise turn).
+  double turnInside = 0.5;        // stir until the heading is this fraction of its band from the target [-]
+  double turnOutside = 0.9;       // settling: stir again once it is this fraction of the band off [-]
 };
 
 class Technique {
  public:
-  enum class Phase { Stir, Land, Settle, Lean };
+  enum class Phase { Stir, Land, Settle, Lean, Turn };
 
   Technique(const TechniqueDef& def, double radius) : def_(def), radius_(radius) {}
 
@@ -67,6 +75,8 @@ class Technique {
   // Holding still the technique's way: over the target when it may be
   // reached leaning, else over c_up moved towards the target.
   Movement hold(const ScreenView& view);
+  // A heading to reach with nothing to carry: the stir that turns it.
+  Movement turn(const ScreenView& view, double radius);
 
   TechniqueDef def_;
   double radius_;
@@ -75,6 +85,7 @@ class Technique {
   double fading_ = 0.0;      // the stir's radius while it dies away [m]
   double spinSeen_ = 0.0;    // the turning, watched over spinLag [rad/s]
   double settledAt_ = 0.0;   // [s]
+  double turnSense_ = 1.0;   // the turning stir's sense: +1 anticlockwise
   physics::Vec2 nudge_ = physics::Vec2::Zero();
 };
 

@@ -90,5 +90,40 @@ TEST(Technique, ALeanTheTaskAsksForIsHeldTheWayTheLeanShouldGo) {
   EXPECT_NEAR(m.centre.y(), 0.0, 1e-12);
 }
 
+TEST(Technique, AHeadingToReachIsTurnedByAStirOnTheSpotThenItSettles) {
+  TechniqueDef def;
+  ScreenView v;
+  v.contact = Vec2(0.001, -0.002);
+  v.uprightRequired = true;
+  v.leanTargetSet = true;  // upright, as tutorial 03's last stage asks
+  v.headingSet = true;
+  v.headingTolerance = 0.1;
+  for (const double error : {-0.15, 0.15}) {  // clockwise still to go, then anticlockwise
+    Technique t(def, 0.04);
+    v.headingError = error;
+    const Movement m = t.decide(v, 0.25);
+    EXPECT_EQ(t.phase(), Technique::Phase::Turn);
+    EXPECT_EQ(m.kind, Movement::Kind::Stir);
+    EXPECT_EQ(m.centre, v.contact);  // on the spot: no aim
+    EXPECT_DOUBLE_EQ(m.radius, def.stirRadius);
+    EXPECT_DOUBLE_EQ(m.rate, error < 0.0 ? def.stirRate : -def.stirRate);  // anticlockwise turns it clockwise
+  }
+  // Well inside the band: the stir dies away in the sense it had, then the hand holds.
+  Technique t(def, 0.04);
+  v.headingError = -0.15;
+  t.decide(v, 0.25);
+  v.headingError = -0.01;
+  Movement m = t.decide(v, 0.25);
+  EXPECT_EQ(t.phase(), Technique::Phase::Land);
+  EXPECT_GT(m.rate, 0.0);
+  for (int i = 0; i < 40 && t.phase() != Technique::Phase::Settle; ++i) m = t.decide(v, 0.25);
+  EXPECT_EQ(t.phase(), Technique::Phase::Settle);
+  EXPECT_EQ(m.kind, Movement::Kind::Hold);
+  // Pushed out of its band again while settling: turn again.
+  v.headingError = 0.095;
+  t.decide(v, 0.25);
+  EXPECT_EQ(t.phase(), Technique::Phase::Turn);
+}
+
 }  // namespace
 }  // namespace hemiroll::human

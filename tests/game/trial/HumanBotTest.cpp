@@ -91,6 +91,22 @@ TEST(HumanBot, ALeanTheTaskAsksForIsShownAsTheNormalItWouldHave) {
   EXPECT_EQ(v.leanTolerance, 0.03);
 }
 
+TEST(HumanBot, AHeadingTheTaskAsksForIsShownAsTheHudSaysIt) {
+  script::BotObservation obs;
+  EXPECT_FALSE(screenViewOf(obs).headingSet);
+  obs.targetSet[11] = true;
+  obs.target[11] = -0.15;  // psi: tutorial 03's turn
+  obs.tolerance[11] = 0.1;
+  obs.state[11] = 0.05;
+  human::ScreenView v = screenViewOf(obs);
+  ASSERT_TRUE(v.headingSet);
+  EXPECT_NEAR(v.headingError, -0.2, 1e-12);  // target - value: clockwise still to go
+  EXPECT_EQ(v.headingTolerance, 0.1);
+  obs.state[11] = -0.15 + 2.0 * M_PI - 0.01;  // a turn and a bit the other way: the short way round
+  v = screenViewOf(obs);
+  EXPECT_NEAR(v.headingError, 0.01, 1e-12);
+}
+
 // In a session the person learns: each trial's init reads the trials
 // practised from the participant's memory, plays with the noise the law of
 // practice gives for them, and counts one more. Outside a session (no
