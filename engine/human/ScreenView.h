@@ -54,6 +54,9 @@ struct ScreenView {
   bool headingSet = false;
   double headingError = 0.0;      // target - heading, wrapped, positive anticlockwise seen from above [rad]
   double headingTolerance = 0.0;  // [rad]
+  // The band the task puts on the spin, as the HUD gives it ("spinning at
+  // 1.2 degrees/s: let it settle (±0.57)"); 0 without one [rad/s].
+  double spinTolerance = 0.0;
   int stage = 0;
   // The game's aids.
   HintCue hint;

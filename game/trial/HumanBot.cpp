@@ -56,6 +56,8 @@ human::ScreenView screenViewOf(const script::BotObservation& obs) {
     v.headingError = std::remainder(obs.target[psi] - obs.state[psi], 2.0 * M_PI);
     v.headingTolerance = obs.tolerance[psi];
   }
+  if (obs.targetSet[w_z]) v.spinTolerance = obs.tolerance[w_z];
+  else if (obs.omegaNormSet) v.spinTolerance = obs.omegaNormTolerance;
   v.stage = obs.stage;
   return v;
 }
