@@ -29,7 +29,7 @@ return {
     "point 4 cm back and 4 cm left and stop there, upright and at rest, with the mass point " ..
     "on top, within the paper's tolerances and 4 minutes. Technique (Sec. 4.2): tilt, then " ..
     "circle the mass point so the hemisphere precesses along a helix towards the target, " ..
-    "then calm it down on the spot.",
+    "then calm it down on the spot (tutorials 4 to 6 teach it: the swirl, then the brake).",
   author = "hemiroll, after Svinin, Goncharenko, Luo and Hosoe (2009)",
   difficulty = 5,
   version = "1",

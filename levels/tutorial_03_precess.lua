@@ -19,8 +19,10 @@ return {
     "seconds, anticlockwise, round the contact point (where the hemisphere touches the floor). " ..
     "The hemisphere leans and turns with your stir. Aim the circles a little off the contact point " ..
     "and the contact point wanders through four gates on a small circle, right, ahead, left and " ..
-    "behind (the green arrow points to the next). Then let the circles die away and hold still: " ..
-    "it stands up, turned a little about the vertical.",
+    "behind (the green arrow points to the next). Last, it must stand up turned a little about the " ..
+    "vertical: while the HUD says to turn it further, keep stirring on the spot, with no aim (an " ..
+    "anticlockwise stir turns it clockwise); once the heading is well inside its band, let the " ..
+    "circles die away and hold still.",
   author = "hemiroll",
   difficulty = 2,
   version = "1",

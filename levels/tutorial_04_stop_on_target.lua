@@ -11,12 +11,15 @@ local pi = math.pi
 return {
   name = "04 Stop on target",
   description = "Bring the hemisphere 1 cm to the right, onto the green target square, and stop there nearly " ..
-    "upright and at rest, mass point near the middle. Leaning only tilts it: to travel, stir " ..
-    "(tutorial 3), small quick circles round the contact point, aimed a little off it. The " ..
-    "hemisphere spirals away at about 45 degrees from your aim, to the side it turns, so aim that " ..
-    "much the other way, and less the nearer you are. Near the target let the circles die away " ..
-    "over a second or two, then hold still over the spot and nudge gently. Stuck? {key:hint} shows the " ..
-    "autopilot's hint. The paper's task, gentler.",
+    "upright and at rest, mass point near the middle. Leaning only tilts it: to travel, swirl. " ..
+    "Circle the mouse anticlockwise, a turn every two seconds, round the spot the hemisphere would " ..
+    "stand on if it were rolled upright (the contact point moved back against the lean, about " ..
+    "0.7 mm per degree of tilt), in circles as big as keep the tilt gauge at about 10 degrees. Put " ..
+    "the circles' middle a few millimetres off that spot, a quarter turn from the way to go, to the " ..
+    "side the hemisphere turns: it drifts the way to go. On the target let the circles die away " ..
+    "over a second or two, then hold still over the spot and nudge gently. Still turning? Swirl a " ..
+    "second the way it turns, then let that die away too. Stuck? {key:hint} shows the ring to trace. " ..
+    "The paper's task, gentler.",
   author = "hemiroll",
   difficulty = 3,
   version = "1",

@@ -26,10 +26,13 @@ local last_stage = nil
 return {
   name = "05 The helix",
   description = "Go 2 cm to the right, further than a lean can take you, the way the paper's " ..
-    "players did: stir small quick circles round the contact point (tutorial 3), aimed a little " ..
-    "off it (tutorial 4). The contact point spirals along, a loop a turn: the dashed blue path on " ..
-    "the floor shows three loops, with a gate after each. At the target let the circles die away, " ..
-    "then hold still over the spot. Stuck? {key:hint} shows the autopilot's hint.",
+    "players did: swirl (tutorial 4), anticlockwise circles a turn every two seconds round the " ..
+    "spot it would stand on upright, as big as keep the tilt gauge at about 10 degrees, their " ..
+    "middle a few millimetres off that spot, a quarter turn from the way to go, to the side it " ..
+    "turns. The contact point loops along a helix: the dashed blue path on the floor shows three " ..
+    "loops, with a gate after each (a lean alone reaches the first two, not the last). At the " ..
+    "target let the circles die away, then hold still over the spot; still turning, swirl a second " ..
+    "the way it turns and let that die away. Stuck? {key:hint} shows the ring to trace.",
   author = "hemiroll",
   difficulty = 3,
   version = "1",
@@ -65,12 +68,12 @@ return {
     rate = 10,
     on_start = function(state)
       last_stage = 1
-      hemiroll.message("Stir small quick circles, aimed a little off the contact point: a loop a turn", 6)
+      hemiroll.message("Swirl: circles a turn every two seconds, tilt about 10 degrees, aimed a quarter turn off", 6)
     end,
     on_update = function(state)
       if state.stage ~= last_stage then
         last_stage = state.stage
-        if state.stage == 2 then hemiroll.message("First gate. Keep stirring, steadily", 4) end
+        if state.stage == 2 then hemiroll.message("First gate. Keep swirling, steadily", 4) end
         if state.stage == 3 then
           hemiroll.message("Last loop onto the target; then let the circles die away and hold still", 5)
         end

@@ -16,9 +16,11 @@ return {
   name = "06 The paper's hemisphere",
   description = "The paper's own hemisphere: a light shell under a heavy mass point, livelier than " ..
     "the tutorials'. Bring it 2 cm to the right, onto the target, and stop there nearly upright " ..
-    "and at rest. Stir small quick circles round the contact point, aimed a little off it " ..
-    "(tutorials 3 to 5); here a small stir goes a long way. Near the target let the circles die " ..
-    "away and hold still over the spot. Stuck? {key:hint} shows the autopilot's hint. Next: the paper's task.",
+    "and at rest. Swirl as in tutorials 4 and 5, circles that keep the tilt gauge at about 10 " ..
+    "degrees: here that is a small swirl, about 5 mm, and a bigger one throws the mass point off. " ..
+    "On the target let the circles die away and hold still over the spot; still turning, swirl a " ..
+    "second the way it turns and let that die away. Stuck? {key:hint} shows the ring to trace. " ..
+    "Next: the paper's task.",
   author = "hemiroll",
   difficulty = 4,
   version = "1",

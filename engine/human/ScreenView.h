@@ -49,6 +49,14 @@ struct ScreenView {
   bool leanTargetSet = false;
   physics::Vec3 leanTarget = physics::Vec3::UnitZ();
   double leanTolerance = 0.0;
+  // A heading the task asks for (a band on psi): the HUD says how far to
+  // turn it and which way ("heading: turn it 8.6 degrees clockwise").
+  bool headingSet = false;
+  double headingError = 0.0;      // target - heading, wrapped, positive anticlockwise seen from above [rad]
+  double headingTolerance = 0.0;  // [rad]
+  // The band the task puts on the spin, as the HUD gives it ("spinning at
+  // 1.2 degrees/s: let it settle (±0.57)"); 0 without one [rad/s].
+  double spinTolerance = 0.0;
   int stage = 0;
   // The game's aids.
   HintCue hint;

@@ -28,6 +28,7 @@ AutopilotCompanion::AutopilotCompanion(const task::LevelDef& level, haptics::Ser
       observer_(level.params, mapping),
       autopilot_(plannerOnItsOwnThread(hand != nullptr)) {
   driving_.store(hand != nullptr);
+  smoother_.reset(level.params.radius);
   try {
     autopilot_.init(botLevelInfo(level), static_cast<std::int64_t>(seed));
   } catch (const script::ScriptError& e) {

@@ -17,7 +17,7 @@ void HintCoach::init(const script::BotLevelInfo& info, std::int64_t seed) {
   autopilot_ = std::make_unique<AutopilotBot>(options);
   autopilot_->init(info, seed);
   dt_ = info.dt;
-  smoother_.reset();
+  smoother_.reset(info.params.radius);
 }
 
 std::string HintCoach::giveUpReason() const { return autopilot_ ? autopilot_->giveUpReason() : std::string(); }

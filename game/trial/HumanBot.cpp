@@ -1,5 +1,7 @@
 #include "game/trial/HumanBot.h"
 
+#include <cmath>
+
 #include "engine/physics/Orientation.h"
 #include "engine/physics/StateKinematics.h"
 #include "engine/physics/StateLayout.h"
@@ -49,6 +51,13 @@ human::ScreenView screenViewOf(const script::BotObservation& obs) {
     v.leanTarget = faceNormalOf(at);
     v.leanTolerance = obs.targetSet[u_o] ? obs.tolerance[u_o] : obs.tolerance[v_o];
   }
+  if (obs.targetSet[psi]) {
+    v.headingSet = true;
+    v.headingError = std::remainder(obs.target[psi] - obs.state[psi], 2.0 * M_PI);
+    v.headingTolerance = obs.tolerance[psi];
+  }
+  if (obs.targetSet[w_z]) v.spinTolerance = obs.tolerance[w_z];
+  else if (obs.omegaNormSet) v.spinTolerance = obs.omegaNormTolerance;
   v.stage = obs.stage;
   return v;
 }
