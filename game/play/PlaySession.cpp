@@ -64,8 +64,11 @@ PlaySession::PlaySession(script::LoadedLevel& level, const PlaySessionDef& def)
 std::unique_ptr<haptics::HapticDevice> PlaySession::makeDevice(const PlaySessionDef& def,
                                                                const haptics::ServoLoopDef& loop) {
   std::unique_ptr<haptics::HapticDevice> player;
-  if (def.device == haptics::kMouseDevice) {
-    auto mouse = std::make_unique<haptics::MouseDevice>(def.deviceOptions.mouse);
+  if (haptics::isMouseDevice(def.device)) {
+    auto mouse = std::make_unique<haptics::MouseDevice>(
+        def.device == haptics::kMouseHandDevice
+            ? haptics::mouseHandDef(def.deviceOptions.mouse, def.deviceOptions.mouseHand)
+            : def.deviceOptions.mouse);
     mouse_ = mouse.get();
     player = std::move(mouse);
   } else {

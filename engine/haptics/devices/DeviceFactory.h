@@ -1,6 +1,7 @@
 #pragma once
 // Devices by name, for the command line, levels and settings:
 //   "mouse"           MouseDevice          (the UI feeds it; no force output)
+//   "mouse-hand"      MouseDevice          (the pointer pulls a simulated hand the force pushes)
 //   "joystick"        SdlJoystickDevice    (SDL_Haptic constant force)
 //   "udp"             UdpBridgeDevice      (a real device behind the bridge)
 //   "scripted"        ScriptedDevice       (a pose function; holds still by default)
@@ -31,10 +32,16 @@ inline constexpr const char* kMouseDevice = "mouse";
 inline constexpr const char* kJoystickDevice = "joystick";
 inline constexpr const char* kUdpDevice = "udp";
 inline constexpr const char* kPlayerDevices[] = {kMouseDevice, kJoystickDevice, kUdpDevice};
+// The mouse with the "hand" feel (Settings::mouseFeel): the settings offer
+// it as a way of playing the mouse, not as a device of its own.
+inline constexpr const char* kMouseHandDevice = "mouse-hand";
+// Either of the two: the UI feeds the pointer.
+inline bool isMouseDevice(const std::string& name) { return name == kMouseDevice || name == kMouseHandDevice; }
 
 // Settings for every kind; each maker reads only its own.
 struct DeviceOptions {
   MouseDeviceDef mouse;
+  HandSpringDef mouseHand;  // the hand of "mouse-hand"
   SdlJoystickDef joystick;
   UdpBridgeDef udp;
   ScriptedDevice::PoseFunction scriptedPose;              // empty: hold still at the origin
@@ -53,7 +60,7 @@ class DeviceFactory {
  public:
   using Maker = std::function<std::unique_ptr<HapticDevice>(const DeviceOptions&)>;
 
-  DeviceFactory();  // the five built-in devices
+  DeviceFactory();  // the six built-in devices
 
   // A new name (or a replacement for an existing one).
   void add(const std::string& name, const std::string& description, Maker make);
