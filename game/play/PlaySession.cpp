@@ -75,6 +75,7 @@ std::unique_ptr<haptics::HapticDevice> PlaySession::makeDevice(const PlaySession
     haptics::DeviceChoice choice = haptics::DeviceFactory().makeAndOpen(def.device, def.deviceOptions);
     if (!choice.device) throw std::runtime_error(def.device + ": " + choice.error);
     player = std::move(choice.device);
+    if (def.device == haptics::kJoystickDevice) joystick_ = static_cast<haptics::SdlJoystickDevice*>(player.get());
   }
   player_ = player.get();
   if (!def.watchAutopilot) return player;
@@ -148,8 +149,10 @@ void PlaySession::wheel(double notches) {
   sendPointer(false);
 }
 
+bool PlaySession::rumble(double strength) { return joystick_ != nullptr && joystick_->rumble(strength); }
+
 haptics::Vec3 PlaySession::pointerScene() const {
-  if (autopilotHolds()) {
+  if (autopilotHolds() || handFeel()) {
     const haptics::Triple& p = snapshot().proxyPosition;
     return {p[0], p[1], p[2]};
   }

@@ -7,6 +7,7 @@
 #include "game/ui/app/App.h"
 #include "game/ui/app/ScriptedMouse.h"
 #include "game/ui/screens/LevelSelectScreen.h"
+#include "game/ui/screens/PlayScreen.h"
 
 namespace hemiroll::game {
 
@@ -59,11 +60,17 @@ std::vector<ScreenTourStop> runScreenTour(App& app, const ScreenTourDef& def) {
 
   ScriptedMouse mouse;
   const auto start = std::chrono::steady_clock::now();
+  bool edgeTaken = !def.captureEdge;
   for (;;) {
     const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (t >= def.playSeconds) break;
     mouse.step(app, t);
     app.frame();
+    const auto* play = dynamic_cast<const PlayScreen*>(app.screens().top());
+    if (!edgeTaken && play != nullptr && play->pulse().shown()) {
+      stop(app, stops, "edge");
+      edgeTaken = true;
+    }
   }
   stop(app, stops);  // play
 
