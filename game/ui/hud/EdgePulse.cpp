@@ -42,9 +42,12 @@ void EdgePulse::draw() const {
   dl->AddRectFilledMultiColor(ImVec2(0, size.y - band), ImVec2(size.x, size.y), clear, clear, solid, solid);
   dl->AddRectFilledMultiColor(ImVec2(0, 0), ImVec2(band, size.y), solid, clear, clear, solid);
   dl->AddRectFilledMultiColor(ImVec2(size.x - band, 0), ImVec2(size.x, size.y), clear, solid, solid, clear);
-  const char* words = "The mass point is about to slide off the face: ease off";
+  const char* words = "Sliding off the face: ease off!";
   const ImVec2 text = ImGui::CalcTextSize(words);
-  const ImVec2 at((size.x - text.x) * 0.5f, band + 64.0f * scale);
+  const float centre = anchorX_ >= 0.0f ? anchorX_ : size.x * 0.5f;
+  const float bottom = anchorY_ >= 0.0f ? anchorY_ - 12.0f * scale : band + text.y + 12.0f * scale;
+  const ImVec2 at(std::clamp(centre - text.x * 0.5f, band, std::max(band, size.x - band - text.x)),
+                  std::max(band + 6.0f * scale, bottom - text.y));
   dl->AddRectFilled(ImVec2(at.x - 10 * scale, at.y - 5 * scale), ImVec2(at.x + text.x + 10 * scale, at.y + text.y + 5 * scale),
                     IM_COL32(120, 10, 10, std::min(230, alpha + 30)), 6.0f * scale);
   dl->AddText(at, IM_COL32(255, 240, 230, 255), words);

@@ -229,7 +229,9 @@ void PlayScreen::update(double dt) {
   buildScene(s);
   hud_.update(s, session_->judging().judge());
   const platform::PixelSize window = host_.window().windowSize();
-  hud_.setKeepClear(hemisphereRect(scene_, static_cast<float>(window.width), static_cast<float>(window.height)));
+  const WindowRect hemisphere = hemisphereRect(scene_, static_cast<float>(window.width), static_cast<float>(window.height));
+  hud_.setKeepClear(hemisphere);
+  pulse_.setAnchor(hemisphere.x + 0.5f * hemisphere.width, hemisphere.y);
   showGoal();
   hud_.setPrompt(prompt());
   playSounds(s);
@@ -424,8 +426,10 @@ void PlayScreen::showForceCues(const haptics::ServoSnapshot& s, double dt) {
   }
   host_.audio().setForceTone(settings.forceTone && held ? strain : -1.0);
   if (settings.rumble) session_->rumble(held ? strainRumble(strain) : 0.0);
+  const physics::ForceDrivenState x = physics::forceStateOf(s.state);
+  const physics::Vec3 onPoint(s.handForce[0], s.handForce[1], s.handForce[2]);
   const bool warn = settings.fallWarning && held &&
-                    forecastFaceExit(physics::forceStateOf(s.state), params.radius).warn;
+                    forecastFaceExit(x, params.radius, faceAcceleration(x, params, onPoint)).warn;
   pulse_.update(warn, dt);
 }
 

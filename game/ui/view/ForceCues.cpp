@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <tuple>
 
 namespace hemiroll::game {
 
@@ -25,12 +24,23 @@ StrainRing strainRing(double strain, double hemisphereRadius) {
   StrainRing ring;
   const double r = std::isfinite(hemisphereRadius) && hemisphereRadius > 0.0 ? hemisphereRadius : 0.0;
   ring.radius = r * (kRingMinRadii + (kRingMaxRadii - kRingMinRadii) * std::sqrt(s));
-  constexpr std::array<float, 4> kCalm{0.35f, 0.65f, 1.0f, 0.8f}, kWarm{1.0f, 0.85f, 0.2f, 0.95f},
-      kHot{1.0f, 0.2f, 0.15f, 1.0f};
-  constexpr double kWarmAt = 0.15, kHotAt = 0.4;
-  const auto& [from, to, t] = s < kWarmAt ? std::tuple{kCalm, kWarm, s / kWarmAt}
-                                          : std::tuple{kWarm, kHot, std::min(1.0, (s - kWarmAt) / (kHotAt - kWarmAt))};
-  for (int i = 0; i < 4; ++i) ring.colour[static_cast<std::size_t>(i)] = mix(from[i], to[i], t);
+  // Saturated stops all the way (a straight blend of blue into yellow
+  // passes through grey, which reads as nothing): blue, green, yellow, red.
+  struct Stop {
+    double at;
+    std::array<float, 4> colour;
+  };
+  constexpr Stop kStops[] = {{0.0, {0.15f, 0.45f, 1.0f, 0.9f}},
+                             {0.075, {0.1f, 0.85f, 0.3f, 0.9f}},
+                             {0.15, {1.0f, 0.85f, 0.2f, 0.95f}},
+                             {0.4, {1.0f, 0.2f, 0.15f, 1.0f}}};
+  ring.colour = kStops[3].colour;
+  for (int k = 0; k + 1 < 4; ++k) {
+    if (s > kStops[k + 1].at) continue;
+    const double t = (s - kStops[k].at) / (kStops[k + 1].at - kStops[k].at);
+    for (std::size_t i = 0; i < 4; ++i) ring.colour[i] = mix(kStops[k].colour[i], kStops[k + 1].colour[i], t);
+    break;
+  }
   return ring;
 }
 

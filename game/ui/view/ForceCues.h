@@ -19,10 +19,11 @@ double couplingStrain(double forceNewtons, double pointMass, double gravity);
 // The ring drawn round the proxy: its radius grows with the square root of
 // the strain (its area with the force, so small forces show), from
 // kRingMinRadii to kRingMaxRadii hemisphere radii; its colour runs from
-// calm blue (no force) through yellow (0.15) to red (0.4 and more: a face
-// tilted over 20 degrees' worth of pull).
-inline constexpr double kRingMinRadii = 0.12;
-inline constexpr double kRingMaxRadii = 0.6;
+// calm blue (no force) through green (0.075) and yellow (0.15) to red (0.4
+// and more: a face tilted over 20 degrees' worth of pull), saturated all
+// the way.
+inline constexpr double kRingMinRadii = 0.22;  // clear of the mass point (0.12 R) it surrounds when calm
+inline constexpr double kRingMaxRadii = 0.7;
 struct StrainRing {
   double radius = 0.0;                    // [m]
   std::array<float, 4> colour{};          // rgba

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -29,24 +30,30 @@ TEST(ForceCues, StrainIsTheForceOverTheMassPointsWeightClamped) {
 }
 
 // Radius: its area follows the force (radius from the square root of the
-// strain), between the stated fractions of R; colour: blue, then yellow at
-// 0.15, red from 0.4. Never NaN, whatever comes in.
+// strain), between the stated fractions of R; colour: blue, green at
+// 0.075, yellow at 0.15, red from 0.4, never a washed-out grey on the way
+// (the largest channel at least 0.5 above the smallest). Never NaN,
+// whatever comes in.
 TEST(ForceCues, TheRingGrowsAndReddensWithTheStrainAndStaysFinite) {
   const double R = 0.04;
   EXPECT_NEAR(strainRing(0.0, R).radius, kRingMinRadii * R, 1e-15);
   EXPECT_NEAR(strainRing(1.0, R).radius, kRingMaxRadii * R, 1e-15);
   EXPECT_NEAR(strainRing(0.25, R).radius, (kRingMinRadii + 0.5 * (kRingMaxRadii - kRingMinRadii)) * R, 1e-15);
   double last = 0.0;
-  for (double s = 0.0; s <= 1.0; s += 0.01) {
+  for (double s = 0.0; s <= 1.0; s += 0.005) {
     const StrainRing ring = strainRing(s, R);
     EXPECT_GE(ring.radius, last);
     last = ring.radius;
+    const auto [lo, hi] = std::minmax({ring.colour[0], ring.colour[1], ring.colour[2]});
+    EXPECT_GE(hi - lo, 0.5f) << "strain " << s << " is greyish";
   }
+  const StrainRing green = strainRing(0.075, R);
+  EXPECT_GT(green.colour[1], green.colour[0] + 0.5f);
   const StrainRing calm = strainRing(0.0, R), warm = strainRing(0.15, R), hot = strainRing(0.4, R);
   EXPECT_GT(calm.colour[2], calm.colour[0]);  // blue
   EXPECT_NEAR(warm.colour[0], 1.0f, 1e-6);    // yellow
   EXPECT_NEAR(warm.colour[1], 0.85f, 1e-6);
-  EXPECT_EQ(hot.colour, strainRing(1.0, R).colour);  // red from 0.4 on
+  for (std::size_t i = 0; i < 4; ++i) EXPECT_NEAR(hot.colour[i], strainRing(1.0, R).colour[i], 1e-6);  // red from 0.4 on
   EXPECT_GT(hot.colour[0], 3 * hot.colour[1]);
   for (double s : {kNan, kInf, -kInf, -3.0, 7.0}) {
     const StrainRing ring = strainRing(s, R);
