@@ -152,7 +152,8 @@ void PlaySession::wheel(double notches) {
 bool PlaySession::rumble(double strength) { return joystick_ != nullptr && joystick_->rumble(strength); }
 
 haptics::Vec3 PlaySession::pointerScene() const {
-  if (autopilotHolds() || handFeel()) {
+  // The hand is known once the loop reads it; before, it rests on the pointer.
+  if (autopilotHolds() || (handFeel() && rig_.loop().running())) {
     const haptics::Triple& p = snapshot().proxyPosition;
     return {p[0], p[1], p[2]};
   }
