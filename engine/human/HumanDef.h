@@ -11,11 +11,14 @@ namespace hemiroll::human {
 
 // What the hand holds. A mouse renders no force: nothing pushes the hand.
 // A haptic device renders the coupling force: it pushes the hand at once,
-// with no neural delay, through the limb's own mechanics.
-enum class HandDevice { Mouse, Haptic };
+// with no neural delay, through the limb's own mechanics. MouseHand: the
+// hand moves a mouse (nothing pushes it), and the game simulates a second
+// hand between the mouse and the proxy that the force pushes (the game's
+// "mouse-hand" feel; the bot, game/trial/HumanBot, runs that hand).
+enum class HandDevice { Mouse, Haptic, MouseHand };
 
 const char* handDeviceName(HandDevice device);
-// "mouse" or "haptic"; false for anything else.
+// "mouse", "haptic" or "mouse-hand"; false for anything else.
 bool parseHandDevice(const char* name, HandDevice& out);
 
 // The hand and arm as a point mass held by a spring and a damper towards

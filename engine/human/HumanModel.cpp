@@ -88,12 +88,20 @@ HandPose HumanModel::act(const ScreenView& now, const Vec3& deviceForce) {
   return {limb_.position(), limb_.velocity()};
 }
 
-const char* handDeviceName(HandDevice device) { return device == HandDevice::Haptic ? "haptic" : "mouse"; }
+const char* handDeviceName(HandDevice device) {
+  switch (device) {
+    case HandDevice::Haptic: return "haptic";
+    case HandDevice::MouseHand: return "mouse-hand";
+    case HandDevice::Mouse: break;
+  }
+  return "mouse";
+}
 
 bool parseHandDevice(const char* name, HandDevice& out) {
   const std::string_view n(name);
   if (n == "mouse") out = HandDevice::Mouse;
   else if (n == "haptic") out = HandDevice::Haptic;
+  else if (n == "mouse-hand") out = HandDevice::MouseHand;
   else return false;
   return true;
 }

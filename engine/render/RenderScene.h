@@ -77,6 +77,12 @@ struct RenderScene {
   bool springOn = false;                     // coupling engaged: the spring is drawn
   Vec3d force{};                             // force on the mass point, base frame [N]
   double forceScale = 0.01;                  // arrow length per newton [m/N]
+  // A flat ring round the proxy on its horizontal plane, seen through
+  // everything (the game's strain ring: its size and colour follow the
+  // coupling force, game/ui/view/ForceCues.h). Drawn only with the proxy.
+  bool showProxyRing = false;
+  double proxyRingRadius = 0.0;              // outer radius [m]
+  std::array<float, 4> proxyRingColour{};    // rgba
 
   // The task.
   std::vector<TargetMarker> targets;

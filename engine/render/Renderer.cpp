@@ -30,6 +30,8 @@ constexpr double kShadowRadii = 0.9;      // [R]
 constexpr float kXrayAlpha = 0.55f;        // floor lines seen through the solids
 constexpr std::size_t kXrayTraceVertices = 512;  // the trace's newest 256 segments go through the solids
 constexpr std::size_t kSpringVertices = 512;  // appendSpringCoil: 8 turns x 12 segments x 2
+constexpr int kRingSegments = 48;
+constexpr std::size_t kRingVertices = 6 * kRingSegments;  // appendFlatRing
 // Room for the trace plus the target/zone outlines and a spring coil.
 constexpr std::size_t kExtraLineVertices = 8192;
 constexpr std::size_t kExamplePathVertices = 2048;  // scene.example_path's 2000 points, dashed: 2000 vertices
@@ -79,6 +81,8 @@ Renderer::Renderer(const RendererDef& def) : def_(def) {
   lines_ = GpuMesh::makeDynamic(Primitive::Lines, lineCapacity);
   decals_ = GpuMesh::makeDynamic(Primitive::Triangles, kDecalVertices);
   spring_ = GpuMesh::makeDynamic(Primitive::Lines, kSpringVertices);
+  ring_ = GpuMesh::makeDynamic(Primitive::Triangles, kRingVertices);
+  ringScratch_.reserve(kRingVertices);
   lineScratch_.reserve(lineCapacity);
   springScratch_.reserve(kSpringVertices);
   decalScratch_.reserve(kDecalVertices);
@@ -138,6 +142,17 @@ void Renderer::render(const RenderScene& scene, int width, int height) {
   const std::size_t traceVertices = lines_.count() - outlineVertices_;
   const std::size_t recent = std::min(traceVertices, kXrayTraceVertices);
   lines_.drawRange(lines_.count() - recent, recent);
+  // The strain ring last, through everything: it sits at the proxy's
+  // height, where the tilted face would hide half of it.
+  if (s.showProxy && s.showProxyRing) {
+    ringScratch_.clear();
+    const std::array<float, 4>& c = s.proxyRingColour;
+    const double outer = s.proxyRingRadius, width = std::max(0.04 * s.radius, 0.12 * outer);
+    appendFlatRing(s.proxyPosition, std::max(0.0, outer - width), outer, kRingSegments, Rgba{c[0], c[1], c[2], c[3]},
+                   ringScratch_);
+    ring_.update(ringScratch_.data(), ringScratch_.size());
+    drawMesh(ring_, Eigen::Matrix4f::Identity(), kWhite, false);
+  }
 }
 
 // The floor is the clear colour and the sky a second, scissored clear above

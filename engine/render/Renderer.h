@@ -83,8 +83,8 @@ class Renderer {
     int model, viewProjection, normalMatrix, lit, tint, lightDirection, eye;
   } u_{};
   GpuMesh hemisphere_, sphere_, arrow_, shadow_, grid_, proxy_;
-  GpuMesh decals_, lines_, spring_;    // dynamic
-  std::vector<Vertex> decalScratch_, lineScratch_, springScratch_;
+  GpuMesh decals_, lines_, spring_, ring_;    // dynamic
+  std::vector<Vertex> decalScratch_, lineScratch_, springScratch_, ringScratch_;
   std::size_t outlineVertices_ = 0;    // lines_ holds the outlines first (the example path first of all), then the trace
   std::size_t examplePathVertices_ = 0;
   struct PlacedProp {

@@ -123,6 +123,19 @@ void appendExamplePath(const RenderScene& scene, std::size_t maxVertices, std::v
     out.insert(out.end(), {flat(p[i - 1][0], p[i - 1][1], 0, kExamplePathColor), flat(p[i][0], p[i][1], 0, kExamplePathColor)});
 }
 
+void appendFlatRing(const Vec3d& centre, double inner, double outer, int segments, Rgba colour, std::vector<Vertex>& out) {
+  if (!(outer > inner) || !(inner >= 0.0) || segments < 3) return;
+  auto at = [&](int k, double r) {
+    const double phi = 2.0 * M_PI * k / segments;
+    return makeVertex(float(centre[0] + r * std::cos(phi)), float(centre[1] + r * std::sin(phi)), float(centre[2]), 0, 0, 1,
+                      colour);
+  };
+  for (int k = 0; k < segments; ++k) {
+    const Vertex a = at(k, inner), b = at(k, outer), c = at(k + 1, inner), d = at(k + 1, outer);
+    out.insert(out.end(), {a, b, d, a, d, c});
+  }
+}
+
 void appendSpringCoil(const Vec3d& a, const Vec3d& b, double coilRadius, int turns, std::vector<Vertex>& out) {
   const double d[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
   const double length = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);

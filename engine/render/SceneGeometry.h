@@ -42,6 +42,9 @@ void appendTraceLines(const ContactTrace& trace, double now, std::vector<Vertex>
 void appendExamplePath(const RenderScene& scene, std::size_t maxVertices, std::vector<Vertex>& out);
 // A helix of `turns` turns and radius `coilRadius` from a to b [m].
 void appendSpringCoil(const Vec3d& a, const Vec3d& b, double coilRadius, int turns, std::vector<Vertex>& out);
+// A flat horizontal ring (triangles) round `centre`, from inner to outer
+// radius [m], in `segments` pieces: 6 vertices each.
+void appendFlatRing(const Vec3d& centre, double inner, double outer, int segments, Rgba colour, std::vector<Vertex>& out);
 // Floor grid lines around the origin: every 10 cm (darker) within
 // [-extent, extent]^2, every 1 cm (faint) within [-fineExtent, fineExtent]^2.
 // Fine lines far from the hemisphere would only alias, and under a software

@@ -60,6 +60,13 @@ bool SceneSanitizer::sanitize(const RenderScene& in, RenderScene& out) {
   out.showProxy = in.showProxy && finite(in.proxyPosition);
   out.proxyPosition = out.showProxy ? in.proxyPosition : Vec3d{};
   out.springOn = in.springOn && out.showProxy;
+  bool ringColourOk = true;
+  for (float c : in.proxyRingColour) ringColourOk = ringColourOk && std::isfinite(c);
+  out.showProxyRing = in.showProxyRing && out.showProxy && std::isfinite(in.proxyRingRadius) &&
+                      in.proxyRingRadius > 0.0 && ringColourOk;
+  out.proxyRingRadius = out.showProxyRing ? in.proxyRingRadius : 0.0;
+  out.proxyRingColour = out.showProxyRing ? in.proxyRingColour : std::array<float, 4>{};
+  if (in.showProxyRing && !out.showProxyRing && out.showProxy) clean = false;
   const bool forceOk = finite(in.force) && std::isfinite(in.forceScale);
   out.force = forceOk ? in.force : Vec3d{};
   out.forceScale = forceOk ? in.forceScale : 0.0;

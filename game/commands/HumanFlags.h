@@ -4,7 +4,7 @@
 //   --human-delay S       visual delay [s] (default 0.2)
 //   --human-interval S    shortest time between corrections [s] (default 0.25)
 //   --human-noise X       signal-dependent motor noise, SD per unit of move size (default 0.1)
-//   --human-device D      mouse (default) or haptic
+//   --human-device D      mouse (default), mouse-hand (the game's simulated hand between mouse and proxy) or haptic
 //   --human-aids          the game's aids on: the hint at a person's bandwidth, the force cue
 
 #include <string>
@@ -22,7 +22,8 @@ inline constexpr const char* kHumanFlagsUsage =
     "  --human-delay S    the human model's visual delay [s] (default 0.2)\n"
     "  --human-interval S its shortest time between two corrections [s] (default 0.25)\n"
     "  --human-noise X    its motor noise, SD per unit of move size (default 0.1)\n"
-    "  --human-device D   what its hand holds: mouse (default) or haptic\n"
+    "  --human-device D   what its hand holds: mouse (default), mouse-hand (the mouse through the\n"
+    "                     game's simulated hand) or haptic\n"
     "  --human-aids       give it the game's aids (the hint, the force cue)\n";
 
 }  // namespace hemiroll::game

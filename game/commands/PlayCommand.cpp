@@ -163,6 +163,7 @@ int tour(App& app, const PlayOptions& o) {
   ScreenTourDef def;
   def.level = o.level;
   def.playSeconds = o.autoplay > 0.0 ? o.autoplay : 3.0;
+  def.captureEdge = true;
   for (const ScreenTourStop& s : runScreenTour(app, def)) {
     const std::string file = o.tourDir + "/" + s.screen + ".png";
     render::writePng(file, s.image);
@@ -188,7 +189,8 @@ std::string playUsage() {
          "  --watch             the autopilot plays LEVEL (click or the take-hold key takes over);\n"
          "                      with --autoplay, the autopilot plays instead of the scripted mouse\n"
          "  --tour DIR          title, settings, level select (LEVEL picked), play, pause, results,\n"
-         "                      watch, hint and start as PNGs in DIR (--autoplay sets the seconds played)\n";
+         "                      watch, hint and start as PNGs in DIR (--autoplay sets the seconds played;\n"
+         "                      edge.png too if the edge warning came on while it played)\n";
 }
 
 std::string playNoDisplayMessage(const std::string& why) {

@@ -64,14 +64,18 @@ PlaySession::PlaySession(script::LoadedLevel& level, const PlaySessionDef& def)
 std::unique_ptr<haptics::HapticDevice> PlaySession::makeDevice(const PlaySessionDef& def,
                                                                const haptics::ServoLoopDef& loop) {
   std::unique_ptr<haptics::HapticDevice> player;
-  if (def.device == haptics::kMouseDevice) {
-    auto mouse = std::make_unique<haptics::MouseDevice>(def.deviceOptions.mouse);
+  if (haptics::isMouseDevice(def.device)) {
+    auto mouse = std::make_unique<haptics::MouseDevice>(
+        def.device == haptics::kMouseHandDevice
+            ? haptics::mouseHandDef(def.deviceOptions.mouse, def.deviceOptions.mouseHand)
+            : def.deviceOptions.mouse);
     mouse_ = mouse.get();
     player = std::move(mouse);
   } else {
     haptics::DeviceChoice choice = haptics::DeviceFactory().makeAndOpen(def.device, def.deviceOptions);
     if (!choice.device) throw std::runtime_error(def.device + ": " + choice.error);
     player = std::move(choice.device);
+    if (def.device == haptics::kJoystickDevice) joystick_ = static_cast<haptics::SdlJoystickDevice*>(player.get());
   }
   player_ = player.get();
   if (!def.watchAutopilot) return player;
@@ -145,8 +149,11 @@ void PlaySession::wheel(double notches) {
   sendPointer(false);
 }
 
+bool PlaySession::rumble(double strength) { return joystick_ != nullptr && joystick_->rumble(strength); }
+
 haptics::Vec3 PlaySession::pointerScene() const {
-  if (autopilotHolds()) {
+  // The hand is known once the loop reads it; before, it rests on the pointer.
+  if (autopilotHolds() || (handFeel() && rig_.loop().running())) {
     const haptics::Triple& p = snapshot().proxyPosition;
     return {p[0], p[1], p[2]};
   }

@@ -133,6 +133,13 @@ class PlaySession {
   // Every safety stop of this trial, in order.
   const std::vector<SafetyStop>& stops() const { return stops_; }
   const std::string& deviceName() const { return deviceName_; }
+  // The mouse with the hand feel ("mouse-hand"): the proxy is the simulated
+  // hand, not the pointer.
+  bool handFeel() const { return deviceName_ == haptics::kMouseHandDevice; }
+  // UI thread: rumble the player's joystick at `strength` in [0, 1] (0
+  // stops it); false when the device has no motors to rumble (not a
+  // joystick, or SDL says it has none).
+  bool rumble(double strength);
   const haptics::HapticDevice& device() const { return *player_; }
   // UI thread, mouse only (ignored for other devices): the pointer moved by
   // (dx, dy) [window px].
@@ -176,7 +183,8 @@ class PlaySession {
   std::filesystem::path replayFile() const { return rig_.replayFile(); }
   const std::string& replayError() const { return rig_.replayError(); }
   // Where the pointer has put the proxy now, scene frame [m] (what the game
-  // draws in place of the system cursor). While the autopilot holds, where it does.
+  // draws in place of the system cursor). While the autopilot holds, where it
+  // does; with the hand feel, where the simulated hand is (the loop's latest).
   haptics::Vec3 pointerScene() const;
 
   // Watching the autopilot: true until the player takes over.
@@ -220,6 +228,7 @@ class PlaySession {
   // so declared before it).
   haptics::HapticDevice* player_ = nullptr;  // the person's device
   haptics::MouseDevice* mouse_ = nullptr;    // player_ when it is the mouse
+  haptics::SdlJoystickDevice* joystick_ = nullptr;  // player_ when it is the joystick
   // Watching: the autopilot's hand and the switch between it and player_.
   HandoffBotDevice* autopilotHand_ = nullptr;
   TakeoverDevice* takeover_ = nullptr;

@@ -76,6 +76,13 @@ void HumanBot::init(const script::BotLevelInfo& info, std::int64_t seed) {
   }
   model_.emplace(person, options_.technique, info.params.radius, info.dt, static_cast<std::uint64_t>(seed));
   holding_ = false;
+  tick_ = info.dt;
+  mouseHand_.reset();
+  if (person.device == human::HandDevice::MouseHand) {
+    if (const std::string bad = haptics::validateHandSpring(options_.mouseHand); !bad.empty())
+      throw script::ScriptError("human: mouse-hand: " + bad);
+    mouseHand_.emplace(options_.mouseHand);
+  }
   coach_.reset();
   if (options_.aids) {
     coach_ = std::make_unique<HintCoach>();
@@ -88,6 +95,7 @@ script::BotAction HumanBot::act(const script::BotObservation& obs) {
   if (!holding_) {  // takes hold where the mass point is, as a player clicking on it
     holding_ = true;
     model_->takeHold(physics::vec3Of(obs.mass));
+    if (mouseHand_) mouseHand_->reset(physics::vec3Of(obs.mass));
   }
   human::ScreenView view = screenViewOf(obs);
   if (coach_) {
@@ -95,7 +103,13 @@ script::BotAction HumanBot::act(const script::BotObservation& obs) {
     view.forceCueShown = true;
     view.forceCue = physics::vec3Of(obs.force);
   }
-  const human::HandPose hand = model_->act(view, physics::vec3Of(obs.deviceForce));
+  human::HandPose hand = model_->act(view, physics::vec3Of(obs.deviceForce));
+  if (mouseHand_) {
+    // The person's hand moved the mouse; the game's hand, pulled by it and
+    // pushed by the force the device renders, holds the proxy.
+    mouseHand_->step(hand.position, hand.velocity, physics::vec3Of(obs.deviceForce), tick_);
+    hand = {mouseHand_->position(), mouseHand_->velocity()};
+  }
   script::BotAction action;
   action.position = physics::tripleOf(hand.position);
   action.velocity = physics::tripleOf(hand.velocity);

@@ -10,6 +10,7 @@
 #include <optional>
 #include <string>
 
+#include "engine/haptics/HandSpring.h"
 #include "engine/human/HumanModel.h"
 #include "engine/human/Practice.h"
 #include "engine/script/BotPolicy.h"
@@ -32,6 +33,9 @@ struct HumanBotOptions {
   // in the memory's "practice_trials". Outside a session nothing is learnt.
   bool learns = true;
   human::PracticeDef practice;
+  // On the mouse-hand device (human.device MouseHand): the game's simulated
+  // hand between the person's mouse and the proxy (MouseDevice's hand feel).
+  haptics::HandSpringDef mouseHand;
 };
 
 // The memory entries the human model keeps (script::BotMemory).
@@ -58,6 +62,9 @@ class HumanBot final : public script::BotPolicy {
   std::optional<human::HumanModel> model_;
   std::unique_ptr<HintCoach> coach_;
   bool holding_ = false;
+  // MouseHand: the simulated hand the person's mouse pulls (scene frame).
+  std::optional<haptics::HandSpring> mouseHand_;
+  double tick_ = 0.001;  // [s]
 };
 
 // What the screen shows a player of this observation (without the aids).

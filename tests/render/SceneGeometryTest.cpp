@@ -136,5 +136,22 @@ TEST(SceneGeometryTest, ZonesFillAndOutline) {
   }
 }
 
+// The strain ring: flat at the centre's height, every vertex on the inner
+// or the outer circle, two triangles a segment; nothing for a bad width.
+TEST(SceneGeometryTest, AFlatRingLiesBetweenItsTwoRadiiAtTheCentresHeight) {
+  std::vector<Vertex> out;
+  appendFlatRing({0.01, -0.02, 0.05}, 0.004, 0.006, 48, Rgba{1, 0, 0, 1}, out);
+  ASSERT_EQ(out.size(), 6u * 48u);
+  for (const Vertex& v : out) {
+    EXPECT_FLOAT_EQ(v.position[2], 0.05f);
+    const double r = std::hypot(v.position[0] - 0.01, v.position[1] + 0.02);
+    EXPECT_TRUE(std::abs(r - 0.004) < 1e-6 || std::abs(r - 0.006) < 1e-6) << r;
+  }
+  out.clear();
+  appendFlatRing({0, 0, 0}, 0.006, 0.004, 48, Rgba{1, 0, 0, 1}, out);
+  appendFlatRing({0, 0, 0}, -1.0, 0.004, 48, Rgba{1, 0, 0, 1}, out);
+  EXPECT_TRUE(out.empty());
+}
+
 }  // namespace
 }  // namespace hemiroll::render

@@ -83,5 +83,31 @@ TEST(SceneSanitizerTest, BadMarkersAreSkippedAndABadForceIsZero) {
   EXPECT_EQ(out.camera.zoom, 1.0);
 }
 
+// The strain ring goes with the proxy, and a NaN size or colour leaves it out.
+TEST(SceneSanitizerTest, TheProxyRingNeedsTheProxyAndAFiniteSizeAndColour) {
+  SceneSanitizer sanitizer;
+  RenderScene out;
+  RenderScene in = goodScene();
+  in.showProxyRing = true;
+  in.proxyRingRadius = 0.01;
+  in.proxyRingColour = {1.0f, 0.5f, 0.0f, 1.0f};
+  EXPECT_TRUE(sanitizer.sanitize(in, out));
+  EXPECT_TRUE(out.showProxyRing);
+  EXPECT_EQ(out.proxyRingRadius, 0.01);
+  in.proxyRingRadius = kNaN;
+  EXPECT_FALSE(sanitizer.sanitize(in, out));
+  EXPECT_FALSE(out.showProxyRing);
+  in.proxyRingRadius = 0.01;
+  in.proxyRingColour[3] = std::numeric_limits<float>::quiet_NaN();
+  EXPECT_FALSE(sanitizer.sanitize(in, out));
+  EXPECT_FALSE(out.showProxyRing);
+  in = goodScene();
+  in.showProxyRing = true;
+  in.proxyRingRadius = 0.01;
+  in.showProxy = false;
+  sanitizer.sanitize(in, out);
+  EXPECT_FALSE(out.showProxyRing);
+}
+
 }  // namespace
 }  // namespace hemiroll::render

@@ -4,6 +4,8 @@
 // names; code that only names a device (a headless trial at the bridge, the
 // settings file) takes the name from here without linking SDL.
 
+#include <string>
+
 namespace hemiroll::haptics {
 
 inline constexpr const char* kMouseDevice = "mouse";
@@ -16,5 +18,10 @@ inline constexpr const char* kSimulatedHandDevice = "simulated-hand";
 // one list the settings, the screens and the play session use (a level's
 // per_device mappings also take "bot": task::kMappedDevices).
 inline constexpr const char* kPlayerDevices[] = {kMouseDevice, kJoystickDevice, kUdpDevice};
+// The mouse with the "hand" feel (Settings::mouseFeel): the settings offer
+// it as a way of playing the mouse, not as a device of its own.
+inline constexpr const char* kMouseHandDevice = "mouse-hand";
+// Either of the two: the UI feeds the pointer.
+inline bool isMouseDevice(const std::string& name) { return name == kMouseDevice || name == kMouseHandDevice; }
 
 }  // namespace hemiroll::haptics

@@ -14,11 +14,21 @@
 // the loop's simulation time, which stops while play is paused. A pointer
 // standing still is a valid pose, so every read is fresh once a position has
 // arrived (nothing to go stale: there is no force to hold).
+//
+// The "hand" feel (issue 26; the factory's "mouse-hand"): the proxy is not
+// the pointer but a simulated hand (HandSpring) that the pointer pulls
+// through a spring and the coupling force pushes, as a real device pushes the
+// hand holding it; the physics is the same, only the hand is simulated. The
+// device then renders force - to that hand - so its spec says so and the
+// safety layer clamps and ramps what it gets (kMouseHandSpec). The hand runs
+// in read() on the device's monotonic clock (it follows the pointer while
+// the physics stands still too), from the force of the previous tick.
 
 #include <array>
 #include <atomic>
 #include <cstdint>
 
+#include "engine/haptics/HandSpring.h"
 #include "engine/haptics/HapticDevice.h"
 #include "engine/haptics/MonotonicClock.h"
 #include "engine/haptics/TripleBuffer.h"
@@ -32,10 +42,21 @@ struct MouseDeviceDef {
   // maxForce 0: nothing is rendered. maxStiffness is not used without force
   // output; workspaceRadius matches PointerMappingDef's default reach.
   DeviceSpec spec{"mouse", 0.0, 1000.0, 0.1, false};
+  // The hand feel: the proxy is this simulated hand (mouseHandDef sets it).
+  bool hand = false;
+  HandSpringDef handSpring;
 };
+
+// The hand feel's spec: it renders force to the simulated hand, at most a
+// desk device's 3 N (DeviceSpec's default, the bots' too, so that the human
+// model's measurements and the window clamp alike).
+inline constexpr DeviceSpec kMouseHandSpec{"mouse-hand", 3.0, 1000.0, 0.1, true};
+// `base` with the hand feel on (its spec kMouseHandSpec).
+MouseDeviceDef mouseHandDef(const MouseDeviceDef& base = {}, const HandSpringDef& hand = {});
 
 class MouseDevice final : public HapticDevice {
  public:
+  // Throws std::invalid_argument naming the field for a bad hand.
   explicit MouseDevice(const MouseDeviceDef& def = {});
 
   const DeviceSpec& spec() const override { return def_.spec; }
@@ -69,6 +90,8 @@ class MouseDevice final : public HapticDevice {
   std::uint64_t lastSerial_ = 0, lastJumps_ = 0;
   VelocityEstimator velocity_;
   Vec3 lastForce_ = Vec3::Zero();
+  HandSpring hand_;
+  double handTime_ = -1.0;  // the clock's time of the hand's last step [s]; < 0: not placed yet
 };
 
 }  // namespace hemiroll::haptics

@@ -7,6 +7,7 @@
 #include "game/ui/app/App.h"
 #include "game/ui/app/ScriptedMouse.h"
 #include "game/ui/screens/LevelSelectScreen.h"
+#include "game/ui/screens/PlayScreen.h"
 
 namespace hemiroll::game {
 
@@ -31,14 +32,22 @@ void frameFor(App& app, double seconds) {
 
 // A fresh scripted mouse stroking for that long (from its own start), a
 // frame after each step.
-void strokeFor(App& app, double seconds) {
+// With edgeStops, the first frame that shows the edge warning is also kept
+// (as "edge"): it comes only when the scripted mouse happens to cause a fall.
+void strokeFor(App& app, double seconds, std::vector<ScreenTourStop>* edgeStops = nullptr) {
   ScriptedMouse mouse;
   const auto start = std::chrono::steady_clock::now();
+  bool edgeTaken = edgeStops == nullptr;
   for (;;) {
     const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (t >= seconds) break;
     mouse.step(app, t);
     app.frame();
+    const auto* play = dynamic_cast<const PlayScreen*>(app.screens().top());
+    if (!edgeTaken && play != nullptr && play->pulse().shown()) {
+      stop(app, *edgeStops, "edge");
+      edgeTaken = true;
+    }
   }
 }
 
@@ -72,7 +81,7 @@ void tourMenus(App& app, const ScreenTourDef& def, std::vector<ScreenTourStop>& 
 // The trial played by the mouse, paused, quit to its results, and its
 // replay; back on the results screen.
 void tourTrial(App& app, const ScreenTourDef& def, std::vector<ScreenTourStop>& stops) {
-  strokeFor(app, def.playSeconds);
+  strokeFor(app, def.playSeconds, def.captureEdge ? &stops : nullptr);
   stop(app, stops);  // play
 
   app.inject(platform::keyDownEvent("Escape"));

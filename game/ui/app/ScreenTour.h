@@ -24,6 +24,10 @@ struct ScreenTourDef {
   // waiting for the take-hold ("start"); take hold, play, let go: the
   // physics waits and says how to go on ("letgo").
   bool autopilot = true;
+  // While the scripted mouse plays: the first frame with the edge warning on
+  // (the pulse before the mass point leaves the face), as "edge", when one
+  // comes (`hemiroll play --tour`; off for the tests, whose stops are fixed).
+  bool captureEdge = false;
 };
 
 struct ScreenTourStop {

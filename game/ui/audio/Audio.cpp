@@ -10,6 +10,8 @@
 #include <iterator>
 #include <numbers>
 
+#include "game/ui/view/ForceCues.h"
+
 namespace hemiroll::game {
 
 namespace {
@@ -102,6 +104,8 @@ void Audio::setProximity(double closeness) {
   proximity_.store(std::isfinite(closeness) ? std::clamp(closeness, 0.0, 1.0) : 0.0);
 }
 
+void Audio::setForceTone(double strain) { forceStrain_.store(std::isfinite(strain) ? std::min(strain, 1.0) : -1.0); }
+
 void Audio::setVolume(double volume) { volume_.store(std::isfinite(volume) ? std::clamp(volume, 0.0, 1.0) : 0.0); }
 
 void Audio::callback(void* self, std::uint8_t* stream, int bytes) {
@@ -121,10 +125,21 @@ void Audio::synthesize(float* out, int frames) {
   const double toneFrequency = 220.0 * std::pow(3.0, proximity);
   const double toneTarget = proximity > 0.0 ? 0.08 : 0.0;
   const double dt = 1.0 / sampleRate_;
+  // The force tone: quieter than the proximity tone (it sounds all the
+  // time); its frequency and level glide with a time constant of 20 ms, so
+  // that a force that jumps slides the pitch instead of clicking.
+  const double strain = forceStrain_.load();
+  const double forceTarget = strain >= 0.0 ? 0.05 : 0.0;
+  const double forcePitch = strainPitch(std::max(strain, 0.0));
+  const double glide = 1.0 - std::exp(-dt / 0.02);
   for (int i = 0; i < frames; ++i) {
     toneLevel_ += (toneTarget - toneLevel_) * 0.001;
     tonePhase_ = std::fmod(tonePhase_ + kTwoPi * toneFrequency * dt, kTwoPi);
     double sample = toneLevel_ * std::sin(tonePhase_);
+    forceLevel_ += (forceTarget - forceLevel_) * glide;
+    forceFrequency_ += (forcePitch - forceFrequency_) * glide;
+    forcePhase_ = std::fmod(forcePhase_ + kTwoPi * forceFrequency_ * dt, kTwoPi);
+    sample += forceLevel_ * std::sin(forcePhase_);
     if (cue_ >= 0) {
       const CueShape& shape = kShapes[cue_];
       for (int n = 0; n < shape.count; ++n) {

@@ -2,7 +2,8 @@
 // The game's sounds, synthesized (no asset files to lose): a success chime
 // (rising triad, like the paper's success sound), a failure tone (falling),
 // engage/disengage clicks, and a gentle tone whose pitch rises as the state
-// nears tolerance. Played through SDL audio; the UI thread only sets atomics
+// nears tolerance; and the force tone (issue 26), quieter, whose pitch
+// follows the coupling force for a player who cannot feel it. Played through SDL audio; the UI thread only sets atomics
 // and SDL's audio thread synthesizes, so the game never waits for sound.
 //
 // Audio failure never stops the game: without a device (no sound card, a
@@ -48,6 +49,11 @@ class Audio {
   void play(Cue cue);
   // 0 = silent; (0, 1]: the tone's closeness to tolerance (1 = inside).
   void setProximity(double closeness);
+  // The force tone: its pitch for a strain in [0, 1] (ForceCues.h's
+  // strainPitch: 180 Hz to 720 Hz); a negative strain (or NaN) silences it.
+  // Pitch and level glide (a few tens of ms), so that a jumping force never
+  // clicks.
+  void setForceTone(double strain);
   void setVolume(double volume);
   double volume() const { return volume_.load(); }
   // Cues requested so far (tests check that play events happen).
@@ -65,6 +71,7 @@ class Audio {
   double sampleRate_;
   std::atomic<double> volume_;
   std::atomic<double> proximity_{0.0};
+  std::atomic<double> forceStrain_{-1.0};
   std::atomic<int> pendingCue_{-1};
   std::atomic<std::uint64_t> cuesPlayed_{0};
   // Audio thread only.
@@ -72,6 +79,9 @@ class Audio {
   double cueTime_ = 0.0;
   double tonePhase_ = 0.0;
   double toneLevel_ = 0.0;
+  double forcePhase_ = 0.0;
+  double forceLevel_ = 0.0;
+  double forceFrequency_ = 180.0;  // [Hz], gliding to the strain's pitch
 };
 
 }  // namespace hemiroll::game

@@ -24,7 +24,10 @@
 #include "game/ui/hud/HudLayout.h"
 #include "game/ui/screens/MedalTimes.h"
 #include "game/trial/DeviceProfiles.h"
+#include "game/ui/view/ForceCues.h"
 #include "game/ui/view/RenderSceneBuilder.h"
+#include "game/trial/FaceExitForecast.h"
+#include "engine/physics/StateKinematics.h"
 
 namespace hemiroll::game {
 
@@ -40,8 +43,11 @@ void PlayScreen::begin() {
   session_.reset();
   try {
     PlaySessionDef def;
-    def.device = host_.settings().device;
+    def.device = playDeviceName(host_.settings());
     def.deviceOptions.joystick.index = host_.settings().joystickIndex;
+    // A gamepad with motors but no force feedback plays when its rumble may
+    // stand in for the force.
+    def.deviceOptions.joystick.acceptRumble = host_.settings().rumble;
     def.deviceOptions.udp.port = static_cast<std::uint16_t>(host_.settings().udpPort);
     if (def.device == haptics::kUdpDevice && !host_.settings().deviceProfile.empty())
       useDeviceProfile(def, loadDeviceProfile(host_.settings().deviceProfile));
@@ -56,11 +62,12 @@ void PlayScreen::begin() {
     session_.reset();
     return;
   }
-  const bool mouse = host_.settings().device == haptics::kMouseDevice;
+  const bool mouse = haptics::isMouseDevice(session_->deviceName());
   hud_.reset();
+  pulse_.clear();
   goalStage_ = -2;
   const physics::CouplingDef coupling = mode_->coupling(level_.def);
-  hud_.setLabels(mode_->title(level_.def), host_.settings().device,
+  hud_.setLabels(mode_->title(level_.def), session_->deviceName(),
                  coupling.visualOnly ? "visual only" : physics::forceMethodName(coupling.method), mouse,
                  level_.def.params.radius);
   hud_.setTakeHoldKey(host_.settings().keys.keyName(KeyAction::TakeHold));
@@ -96,7 +103,7 @@ void PlayScreen::enter() {
     begin();
   }
   // The menus above this screen (pause, results) need the system cursor back.
-  if (session_ && session_->deviceName() == haptics::kMouseDevice) host_.window().capturePointer(true);
+  if (session_ && haptics::isMouseDevice(session_->deviceName())) host_.window().capturePointer(true);
 }
 
 void PlayScreen::leave() { host_.window().capturePointer(false); }
@@ -111,6 +118,7 @@ FrameNeed PlayScreen::frameNeed() const {
 
 void PlayScreen::pause() {
   if (!session_ || session_->finished()) return;
+  silenceForceCues();
   session_->pause();
   host_.screens().push(std::make_unique<PauseScreen>(host_, *this));
 }
@@ -221,10 +229,13 @@ void PlayScreen::update(double dt) {
   buildScene(s);
   hud_.update(s, session_->judging().judge());
   const platform::PixelSize window = host_.window().windowSize();
-  hud_.setKeepClear(hemisphereRect(scene_, static_cast<float>(window.width), static_cast<float>(window.height)));
+  const WindowRect hemisphere = hemisphereRect(scene_, static_cast<float>(window.width), static_cast<float>(window.height));
+  hud_.setKeepClear(hemisphere);
+  pulse_.setAnchor(hemisphere.x + 0.5f * hemisphere.width, hemisphere.y);
   showGoal();
   hud_.setPrompt(prompt());
   playSounds(s);
+  showForceCues(s, dt);
   if (safetyStop()) return;
   if (session_->finished()) endTrial();
 }
@@ -335,7 +346,7 @@ void PlayScreen::showGoal() {
 std::string PlayScreen::prompt() const {
   if (session_->autopilotHolds() || session_->finished() || !session_->waitingFor().empty()) return "";
   const std::string key = host_.settings().keys.keyName(KeyAction::TakeHold);
-  const std::string how = session_->deviceName() == haptics::kMouseDevice ? "Click or press " + key : "Press " + key;
+  const std::string how = haptics::isMouseDevice(session_->deviceName()) ? "Click or press " + key : "Press " + key;
   if (session_->awaitingTakeHold()) return how + " to take hold\nthe clock starts then";
   const bool armed = session_->snapshot().engagement == haptics::Engagement::Armed;
   switch (session_->frozen()) {
@@ -394,23 +405,59 @@ void PlayScreen::playSounds(const haptics::ServoSnapshot& s) {
   audio.setProximity(s.engagement == haptics::Engagement::Engaged ? closeness : 0.0);
 }
 
+// The substitutes for the force a mouse cannot render (issue 26), each as
+// the settings have it: the strain ring round the proxy, the force tone,
+// rumble on a joystick with motors, and the pulse before the mass point
+// leaves the face (FaceExitForecast on the latest state, while the physics
+// runs with the proxy held).
+void PlayScreen::showForceCues(const haptics::ServoSnapshot& s, double dt) {
+  const Settings& settings = host_.settings();
+  const bool held = s.engagement == haptics::Engagement::Engaged && !session_->paused() &&
+                    session_->frozen() == Freeze::None && !session_->autopilotHolds();
+  const physics::HemisphereParams& params = level_.def.params;
+  const double force = std::sqrt(s.handForce[0] * s.handForce[0] + s.handForce[1] * s.handForce[1] +
+                                 s.handForce[2] * s.handForce[2]);
+  const double strain = couplingStrain(force, params.pointMass, params.gravity);
+  scene_.showProxyRing = settings.strainRing && scene_.springOn;
+  if (scene_.showProxyRing) {
+    const StrainRing ring = strainRing(strain, params.radius);
+    scene_.proxyRingRadius = ring.radius;
+    scene_.proxyRingColour = ring.colour;
+  }
+  host_.audio().setForceTone(settings.forceTone && held ? strain : -1.0);
+  if (settings.rumble) session_->rumble(held ? strainRumble(strain) : 0.0);
+  const physics::ForceDrivenState x = physics::forceStateOf(s.state);
+  const physics::Vec3 onPoint(s.handForce[0], s.handForce[1], s.handForce[2]);
+  const bool warn = settings.fallWarning && held &&
+                    forecastFaceExit(x, params.radius, faceAcceleration(x, params, onPoint)).warn;
+  pulse_.update(warn, dt);
+}
+
+void PlayScreen::silenceForceCues() {
+  host_.audio().setForceTone(-1.0);
+  if (session_) session_->rumble(0.0);
+  pulse_.clear();
+}
+
 // A watchdog stopped the loop (force already off, the physics standing
 // still): pause and say why, and how to go on.
 bool PlayScreen::safetyStop() {
   if (session_->fault() == haptics::SafetyFault::None || session_->finished()) return false;
   host_.audio().setProximity(0.0);
+  silenceForceCues();
   session_->pause();
   const std::string key = host_.settings().keys.keyName(KeyAction::TakeHold);
   host_.screens().push(std::make_unique<PauseScreen>(
       host_, *this,
       std::string("Safety stop: ") + haptics::safetyFaultName(session_->fault()) +
           ". The force is off and the hemisphere waits where it is. Continue, then take hold again (" +
-          (session_->deviceName() == haptics::kMouseDevice ? "click or " + key : key) + ") to play on."));
+          (haptics::isMouseDevice(session_->deviceName()) ? "click or " + key : key) + ") to play on."));
   return true;
 }
 
 void PlayScreen::endTrial() {
   host_.audio().setProximity(0.0);
+  silenceForceCues();
   TrialResult result = session_->finish();
   host_.audio().play(result.outcome == task::TrialOutcome::Success ? Cue::Success : Cue::Failure);
   // The last frame stays on screen behind the results, with what decided it
@@ -447,6 +494,7 @@ void PlayScreen::paint() {
   hud_.draw(host_.fps());
   compass_.draw(&hud_.windowRects());
   inset_.draw(&hud_.windowRects());
+  pulse_.draw();
   if (!session_->waitingFor().empty()) {
     beginCentredPanel("waiting for the device", 640);
     ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1), "Waiting for the %s", session_->deviceName().c_str());

@@ -27,6 +27,7 @@
 #include "engine/render/RenderScene.h"
 #include "engine/script/LevelLoader.h"
 #include "game/ui/settings/KeyBindings.h"
+#include "game/ui/hud/EdgePulse.h"
 #include "game/ui/hud/FloorInset.h"
 #include "game/ui/hud/HintCompass.h"
 #include "game/ui/hud/PlayHud.h"
@@ -68,6 +69,7 @@ class PlayScreen final : public Screen {
   bool restartAllowed() const { return mode_->restartAllowed(); }
   const PlayHud& hud() const { return hud_; }
   const HintCompass& compass() const { return compass_; }
+  const EdgePulse& pulse() const { return pulse_; }
   const std::string& error() const { return error_; }
 
  private:
@@ -80,6 +82,8 @@ class PlayScreen final : public Screen {
   void buildScene(const haptics::ServoSnapshot& s);
   void showAutopilot();
   void playSounds(const haptics::ServoSnapshot& s);
+  void showForceCues(const haptics::ServoSnapshot& s, double dt);
+  void silenceForceCues();
   bool safetyStop();
   void showGoal();
   std::string prompt() const;
@@ -97,6 +101,7 @@ class PlayScreen final : public Screen {
   PlayHud hud_;
   HintCompass compass_;  // the autopilot's hint in screen directions
   FloorInset inset_;     // the targets and zones round the contact point, magnified
+  EdgePulse pulse_;      // the warning before the mass point leaves the face
   render::RenderScene scene_;
   render::ContactTrace trace_;
   haptics::Engagement lastEngagement_ = haptics::Engagement::Disengaged;

@@ -106,6 +106,16 @@ void SettingsScreen::paint() {
       s.mouseMmPerPixel = std::clamp(static_cast<double>(mm), kMouseMmPerPixel[0], kMouseMmPerPixel[1]);
     wrappedTextDisabled("how far the proxy moves per pixel of mouse motion: lower is finer, higher reaches further "
                         "(0.25 spans a desk device's 20 cm in 800 pixels)");
+    ImGui::AlignTextToFramePadding();
+    ImGui::TextUnformatted("mouse feel:");
+    ImGui::SameLine();
+    if (ImGui::RadioButton("direct", s.mouseFeel == MouseFeel::Direct)) s.mouseFeel = MouseFeel::Direct;
+    ImGui::SameLine();
+    if (ImGui::RadioButton("hand", s.mouseFeel == MouseFeel::Hand)) s.mouseFeel = MouseFeel::Hand;
+    wrappedTextDisabled(s.mouseFeel == MouseFeel::Hand
+                            ? "hand: the proxy is a simulated hand (0.3 kg, 300 N/m, 15 N s/m) that the mouse pulls "
+                              "on a spring and the force pushes back, as a force device pushes your hand"
+                            : "direct: the proxy is where the mouse puts it");
   } else if (s.device == haptics::kJoystickDevice) {
     ImGui::InputInt("joystick index", &s.joystickIndex);
     s.joystickIndex = std::clamp(s.joystickIndex, 0, 63);
@@ -128,6 +138,19 @@ void SettingsScreen::paint() {
     wrappedTextDisabled("the device's peak force, stiffness and workspace (devices/NAME.lua): the safety layer holds "
                         "every trial to them");
   }
+
+  ImGui::Separator();
+  ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1), "Force cues");
+  wrappedTextDisabled("what stands in for the force you cannot feel with a mouse");
+  ImGui::Checkbox("strain ring round the proxy", &s.strainRing);
+  ImGui::SameLine(ImGui::GetContentRegionAvail().x * 0.55f);
+  ImGui::Checkbox("force tone", &s.forceTone);
+  ImGui::Checkbox("edge warning", &s.fallWarning);
+  ImGui::SameLine(ImGui::GetContentRegionAvail().x * 0.55f);
+  ImGui::Checkbox("rumble (gamepad)", &s.rumble);
+  wrappedTextDisabled("ring: grows and turns red as the coupling pulls harder (red: as hard as 0.4 of the mass "
+                      "point's weight); tone: its pitch rises with the pull; edge warning: the screen's edge "
+                      "pulses red before the mass point slides off the face");
 
   ImGui::Separator();
   ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1), "Force method");

@@ -1,5 +1,6 @@
 #include "game/ui/settings/Settings.h"
 
+#include "engine/haptics/devices/DeviceNames.h"
 #include "engine/task/ProtocolDef.h"
 
 namespace hemiroll::game {
@@ -13,6 +14,11 @@ physics::CouplingDef couplingFor(const Settings& s, const physics::CouplingDef& 
   o.damping = s.damping;
   o.alpha = s.alpha;
   return task::overriddenCoupling(o, level);
+}
+
+std::string playDeviceName(const Settings& s) {
+  if (s.device == haptics::kMouseDevice && s.mouseFeel == MouseFeel::Hand) return haptics::kMouseHandDevice;
+  return s.device;
 }
 
 const char* methodLabel(int method) {

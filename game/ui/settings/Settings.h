@@ -12,6 +12,12 @@
 
 namespace hemiroll::game {
 
+// How the mouse moves the proxy: the proxy is the pointer (Direct), or a
+// simulated hand the pointer pulls through a spring and the coupling force
+// pushes, as a force device pushes the hand that holds it (Hand: the
+// factory's "mouse-hand", engine/haptics/HandSpring.h).
+enum class MouseFeel { Direct, Hand };
+
 struct Settings {
   // Input device: "mouse", "joystick" (SDL force feedback) or "udp" (a
   // haptic device behind the UDP bridge, docs/UDP_BRIDGE.md).
@@ -31,6 +37,16 @@ struct Settings {
   // The mouse's strokes: proxy millimetres per pixel of motion (the
   // PointerMapping's scale; 0.25 mm/px spans a desk device's 20 cm in 800 px).
   double mouseMmPerPixel = 0.25;
+  MouseFeel mouseFeel = MouseFeel::Direct;
+  // Substitutes for the force a mouse cannot render (issue 26), each shown
+  // whatever the device (a force device's player may want them too): a ring
+  // round the proxy that grows and reddens with the coupling force, a quiet
+  // tone whose pitch follows it, a red pulse at the screen's edge before the
+  // mass point leaves the face, and, on a joystick that has motors, rumble.
+  bool strainRing = true;
+  bool forceTone = true;
+  bool fallWarning = true;
+  bool rumble = true;
   bool vsync = true;
   // Frames per second while playing, at most (vsync or not): the window
   // sleeps out the rest, leaving the CPU to the 1 kHz servo thread. Menus
@@ -58,6 +74,9 @@ inline constexpr double kUiScale[2] = {0.5, 3.0};           // [-]
 // The coupling the play session uses: the level's, or the player's override
 // applied to it (validated by the servo loop when posted).
 physics::CouplingDef couplingFor(const Settings& settings, const physics::CouplingDef& level);
+// The device the play session opens (a DeviceFactory name): the settings'
+// device, the mouse as "mouse-hand" with the hand feel.
+std::string playDeviceName(const Settings& settings);
 const char* methodLabel(int method);  // "M1", "M2", "M3", "visual"
 
 }  // namespace hemiroll::game

@@ -20,6 +20,7 @@ using Json = nlohmann::json;
 
 constexpr const char* kMethods[] = {"M1", "M2", "M3", "visual"};
 constexpr const char* kCameras[] = {"follow", "orbit", "top"};
+constexpr const char* kMouseFeels[] = {"direct", "hand"};  // MouseFeel's order
 
 template <std::size_t N>
 int indexOf(const char* const (&names)[N], const std::string& name) {
@@ -185,6 +186,13 @@ LoadedSettings loadSettings(const std::filesystem::path& file) {
   r.number("volume", s.volume, 0.0, 1.0, "a volume in 0..1");
   r.number("mouse_mm_per_px", s.mouseMmPerPixel, kMouseMmPerPixel[0], kMouseMmPerPixel[1],
            "a mouse sensitivity in 0.02..2 mm per pixel");
+  int feel = static_cast<int>(s.mouseFeel);
+  r.choice("mouse_feel", kMouseFeels, feel);
+  s.mouseFeel = static_cast<MouseFeel>(feel);
+  r.boolean("strain_ring", s.strainRing);
+  r.boolean("force_tone", s.forceTone);
+  r.boolean("fall_warning", s.fallWarning);
+  r.boolean("rumble", s.rumble);
   r.boolean("vsync", s.vsync);
   r.integer("frame_cap_fps", s.frameCap, kFrameCapFps[0], kFrameCapFps[1], "a frame cap in 20..240 fps");
   r.number("ui_scale", s.uiScale, kUiScale[0], kUiScale[1], "an interface scale in 0.5..3");
@@ -214,6 +222,11 @@ std::string settingsJson(const Settings& s) {
   json["alpha"] = s.alpha;
   json["volume"] = s.volume;
   json["mouse_mm_per_px"] = s.mouseMmPerPixel;
+  json["mouse_feel"] = kMouseFeels[s.mouseFeel == MouseFeel::Hand ? 1 : 0];
+  json["strain_ring"] = s.strainRing;
+  json["force_tone"] = s.forceTone;
+  json["fall_warning"] = s.fallWarning;
+  json["rumble"] = s.rumble;
   json["vsync"] = s.vsync;
   json["frame_cap_fps"] = s.frameCap;
   json["ui_scale"] = s.uiScale;

@@ -5,6 +5,7 @@
 //   {"version": 1, "device": "mouse", "udp_port": 47110, "device_profile": "touch", "joystick_index": 0,
 //    "override_coupling": false, "method": "M3", "stiffness_N_per_m": 250,
 //    "damping_N_s_per_m": 10, "alpha": 2, "volume": 0.6, "mouse_mm_per_px": 0.25,
+//    "mouse_feel": "direct", "strain_ring": true, "force_tone": true, "fall_warning": true, "rumble": true,
 //    "vsync": true, "frame_cap_fps": 60, "ui_scale": 1,
 //    "camera": "follow", "zoom": 1, "ghost": true, "orbit_yaw_rad": -0.6,
 //    "orbit_pitch_rad": 0.55, "participant": "player",

@@ -122,7 +122,7 @@ TEST(RunOptions, ReadsTheHumanModelsFlagsAndRefusesABadDevice) {
   EXPECT_EQ(r.options.human.human.device, human::HandDevice::Haptic);
   EXPECT_TRUE(r.options.human.aids);
   EXPECT_THAT(parseRunOptions({"l.lua", "--bot", "human", "--human-device", "glove"}).error,
-              HasSubstr("--human-device needs mouse or haptic, not 'glove'"));
+              HasSubstr("--human-device needs mouse, mouse-hand or haptic, not 'glove'"));
   EXPECT_THAT(parseRunOptions({"l.lua", "--bot", "human", "--human-delay", "-1"}).error,
               HasSubstr("--human-delay needs a delay from 0 to 2 s"));
 }

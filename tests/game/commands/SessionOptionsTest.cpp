@@ -60,7 +60,7 @@ TEST(SessionOptions, MistakesAreOneSentence) {
       {{"p.lua", "q.lua", "--participant", "x"}, "unexpected argument 'q.lua'"},
       {{"p.lua", "--participants", "3"}, "--participants needs --bot"},
       {{"p.lua", "--participants", "0", "--bot", "human"}, "--participants needs a number of participants from 1 to 1000"},
-      {{"p.lua", "--participant", "x", "--human-device", "glove"}, "--human-device needs mouse or haptic, not 'glove'"},
+      {{"p.lua", "--participant", "x", "--human-device", "glove"}, "--human-device needs mouse, mouse-hand or haptic, not 'glove'"},
   };
   for (const auto& [args, expected] : cases) EXPECT_THAT(parseSessionOptions(args).error, HasSubstr(expected));
   EXPECT_TRUE(parseSessionOptions({"--help"}).options.help);

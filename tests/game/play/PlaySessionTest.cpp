@@ -184,6 +184,38 @@ TEST(PlaySessionTest, TakingHoldPutsTheProxyOnTheMassPointAndStartsTheClock) {
   session.finish();
 }
 
+// The mouse's hand feel: the factory's "mouse-hand" opens; it renders force
+// (to its simulated hand); the proxy drawn is the pointer until the loop
+// reads the hand, then the hand the loop read (not the pointer).
+TEST(PlaySessionTest, TheHandFeelDrawsTheSimulatedHandOnceTheLoopReadsIt) {
+  script::LoadedLevel level = script::LevelLoader().loadFile(HEMIROLL_SOURCE_DIR "/levels/tutorial_01_tilt_and_return.lua");
+  PlaySessionDef def;
+  def.requestRealtime = false;
+  def.device = haptics::kMouseHandDevice;
+  PlaySession session(level, def);
+  EXPECT_TRUE(session.handFeel());
+  EXPECT_EQ(session.deviceName(), "mouse-hand");
+  EXPECT_TRUE(session.device().spec().hasForceOutput);
+  const physics::Vec3 massPoint =
+      physics::massPointPosition(physics::forceStateOf(session.snapshot().state), level.def.params.radius);
+  session.start();
+  EXPECT_LT((session.pointerScene() - massPoint).norm(), 1e-12);  // the pointer, on the mass point
+  session.click();
+  bool engaged = false;
+  for (int i = 0; i < 100 && !engaged; ++i) {
+    std::this_thread::sleep_for(10ms);
+    session.frame();
+    engaged = session.snapshot().engagement == haptics::Engagement::Engaged;
+  }
+  ASSERT_TRUE(engaged);
+  session.pointerMotion(40, 0);  // 1 cm at 0.25 mm/px: the hand follows on its spring
+  std::this_thread::sleep_for(50ms);
+  session.frame();
+  const haptics::Triple& proxy = session.snapshot().proxyPosition;
+  EXPECT_EQ(session.pointerScene(), haptics::Vec3(proxy[0], proxy[1], proxy[2]));
+  session.finish();
+}
+
 // The proxy is where the strokes put it: it starts on the mass point, moves
 // by the motion turned with the camera, and does not move on its own while
 // the hemisphere (and a camera following it) rolls away.

@@ -82,6 +82,28 @@ TEST(HumanBot, TheSameSeedPlaysTheSameTrialAndAnotherSeedAnother) {
   EXPECT_NE(a.ticks, c.ticks);
 }
 
+// On the mouse-hand device the person's mouse pulls the game's simulated
+// hand, which the force pushes: the same seed plays the same trial, and not
+// the trial of the plain mouse (the hand is in the loop). It wins tutorial
+// 01 as the mouse does (20 of 20 seeds, docs/HUMAN_MODEL.md).
+TEST(HumanBot, OnTheMouseHandTheGamesHandSitsBetweenMouseAndProxy) {
+  HumanBotOptions hand;
+  hand.human.device = human::HandDevice::MouseHand;
+  const TrialResult a = play("tutorial_01_tilt_and_return.lua", 3, hand);
+  const TrialResult b = play("tutorial_01_tilt_and_return.lua", 3, hand);
+  const TrialResult mouse = play("tutorial_01_tilt_and_return.lua", 3);
+  EXPECT_EQ(a.outcome, TrialOutcome::Success) << a.reason;
+  EXPECT_EQ(a.ticks, b.ticks);
+  EXPECT_EQ(a.time, b.time);
+  EXPECT_NE(a.ticks, mouse.ticks);
+  HumanBotOptions bad = hand;
+  bad.mouseHand.mass = 0.0;
+  const TrialResult refused = play("tutorial_01_tilt_and_return.lua", 3, bad);
+  EXPECT_EQ(refused.outcome, TrialOutcome::Failure);
+  EXPECT_NE(refused.reason.find("mouse-hand: hand mass must be a positive number of kg"), std::string::npos)
+      << refused.reason;
+}
+
 TEST(HumanBot, SeesTheTaskAsTheScreenShowsIt) {
   script::BotObservation obs;
   obs.time = 1.5;

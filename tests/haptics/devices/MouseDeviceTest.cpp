@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "engine/haptics/ServoLoop.h"
+#include "tests/support/AllocationCounter.h"
 
 namespace hemiroll::haptics {
 namespace {
@@ -94,6 +95,76 @@ TEST(MouseDeviceTest, AServoLoopDrivenByAUiThreadRendersNothing) {
   EXPECT_EQ(s.engagement, Engagement::Engaged);
   EXPECT_EQ(s.renderedForce, (Triple{0.0, 0.0, 0.0}));
   EXPECT_EQ(m.lastForce(), Vec3::Zero());
+}
+
+// The hand feel: the proxy is a simulated hand the pointer pulls and the
+// force pushes. With the pointer still and a constant force sent, the
+// reading settles F / k from the pointer (k the hand's stated stiffness),
+// the same on every run (the fake clock: 1 ms a read).
+TEST(MouseDeviceTest, TheHandFeelSettlesOffThePointerByForceOverStiffness) {
+  auto run = [] {
+    MouseDevice m(mouseHandDef(fakeClockDef()));
+    gNow = 0;
+    m.setPointer(Vec3(0.0, 0.0, 0.04));
+    m.read(0.0);
+    m.sendForce(Vec3(0.6, -0.3, 0.0));
+    DeviceReading r;
+    for (int k = 1; k <= 2000; ++k) {
+      gNow = k * 1'000'000;
+      r = m.read(0.0);
+    }
+    return r;
+  };
+  const DeviceReading r = run();
+  const double k = HandSpringDef{}.stiffness;
+  EXPECT_NEAR(r.position.x(), 0.6 / k, 1e-12);
+  EXPECT_NEAR(r.position.y(), -0.3 / k, 1e-12);
+  EXPECT_NEAR(r.position.z(), 0.04, 1e-12);
+  EXPECT_NEAR(r.velocity.norm(), 0.0, 1e-9);
+  const DeviceReading again = run();
+  EXPECT_EQ(r.position, again.position);
+  EXPECT_TRUE(MouseDevice(mouseHandDef()).spec().hasForceOutput);  // it renders force: to the hand
+}
+
+// A jump of the pointer (the proxy put on the mass point) takes the hand
+// there at rest and says so (newPath), instead of a fling; a broken hand is
+// refused naming the field (the factory's test makes it by its name).
+TEST(MouseDeviceTest, TheHandFeelJumpsWithThePointerAndIsMadeByName) {
+  MouseDevice m(mouseHandDef(fakeClockDef()));
+  gNow = 0;
+  m.setPointer(Vec3(0.0, 0.0, 0.0));
+  m.read(0.0);
+  gNow = 1'000'000;
+  m.setPointer(Vec3(0.03, 0.0, 0.0), 0, true);
+  const DeviceReading r = m.read(0.0);
+  EXPECT_EQ(r.position, Vec3(0.03, 0.0, 0.0));
+  EXPECT_EQ(r.velocity, Vec3::Zero());
+  EXPECT_TRUE(r.newPath);
+
+  HandSpringDef bad;
+  bad.mass = -1.0;
+  try {
+    MouseDevice broken(mouseHandDef({}, bad));
+    ADD_FAILURE() << "a negative hand mass was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("mouse-hand: hand mass"), std::string::npos) << e.what();
+  }
+}
+
+// Its read() is on the servo thread: no allocation there.
+TEST(MouseDeviceTest, TheHandFeelReadsWithoutAllocating) {
+  MouseDevice m(mouseHandDef(fakeClockDef()));
+  gNow = 0;
+  m.setPointer(Vec3(0.0, 0.0, 0.04));
+  m.read(0.0);
+  ASSERT_TRUE(test::allocationCounterWorks());
+  test::AllocationCounter counter(test::AllocationCounter::Threads::Calling);
+  for (int k = 1; k <= 100; ++k) {
+    gNow = k * 1'000'000;
+    m.sendForce(Vec3(0.1, 0.0, 0.0));
+    m.read(0.0);
+  }
+  EXPECT_EQ(counter.count(), 0);
 }
 
 }  // namespace

@@ -8,6 +8,8 @@ namespace hemiroll::haptics {
 DeviceFactory::DeviceFactory() {
   add(kMouseDevice, "the pointer on a horizontal plane, wheel for height; forces shown, not felt",
       [](const DeviceOptions& o) { return std::make_unique<MouseDevice>(o.mouse); });
+  add(kMouseHandDevice, "the mouse through a simulated hand: the pointer pulls it, the coupling force pushes it",
+      [](const DeviceOptions& o) { return std::make_unique<MouseDevice>(mouseHandDef(o.mouse, o.mouseHand)); });
   add(kJoystickDevice, "a force-feedback joystick through SDL_Haptic (constant-force effect)",
       [](const DeviceOptions& o) { return std::make_unique<SdlJoystickDevice>(o.joystick); });
   add(kUdpDevice, "a real haptic device driven by an external program over the UDP bridge",

@@ -1,6 +1,7 @@
 #pragma once
 // Devices by name (DeviceNames.h), for the command line, levels and settings:
 //   "mouse"           MouseDevice          (the UI feeds it; no force output)
+//   "mouse-hand"      MouseDevice          (the pointer pulls a simulated hand the force pushes)
 //   "joystick"        SdlJoystickDevice    (SDL_Haptic constant force)
 //   "udp"             UdpBridgeDevice      (a real device behind the bridge)
 //   "scripted"        ScriptedDevice       (a pose function; holds still by default)
@@ -28,6 +29,7 @@ namespace hemiroll::haptics {
 // Settings for every kind; each maker reads only its own.
 struct DeviceOptions {
   MouseDeviceDef mouse;
+  HandSpringDef mouseHand;  // the hand of "mouse-hand"
   SdlJoystickDef joystick;
   UdpBridgeDef udp;
   ScriptedDevice::PoseFunction scriptedPose;              // empty: hold still at the origin
@@ -46,7 +48,7 @@ class DeviceFactory {
  public:
   using Maker = std::function<std::unique_ptr<HapticDevice>(const DeviceOptions&)>;
 
-  DeviceFactory();  // the five built-in devices
+  DeviceFactory();  // the six built-in devices
 
   // A new name (or a replacement for an existing one).
   void add(const std::string& name, const std::string& description, Maker make);

@@ -74,7 +74,7 @@ bool SdlJoystickDevice::open() {
     effect_ = SDL_HapticNewEffect(haptic_, &e);
     if (effect_ < 0 || SDL_HapticRunEffect(haptic_, effect_, 1) != 0)
       return fail("cannot start a constant-force effect on '" + name_ + "': " + SDL_GetError());
-  } else if (def_.requireForceFeedback) {
+  } else if (def_.requireForceFeedback && !(def_.acceptRumble && SDL_JoystickHasRumble(joystick_) == SDL_TRUE)) {
     return fail("'" + name_ +
                 "' has no force feedback (SDL_Haptic cannot drive it); set requireForceFeedback = false to use "
                 "it as an input-only device");
@@ -188,6 +188,13 @@ const char* SdlJoystickDevice::error() const {
     case Health::Disconnected: return disconnectedError_.c_str();
   }
   return "SDL joystick: unknown state";
+}
+
+bool SdlJoystickDevice::rumble(double strength) {
+  if (joystick_ == nullptr || SDL_JoystickHasRumble(joystick_) != SDL_TRUE) return false;
+  const double s = std::isfinite(strength) ? std::clamp(strength, 0.0, 1.0) : 0.0;
+  const auto level = static_cast<Uint16>(std::lround(s * 0xFFFF));
+  return SDL_JoystickRumble(joystick_, level, level, 150) == 0;
 }
 
 }  // namespace hemiroll::haptics

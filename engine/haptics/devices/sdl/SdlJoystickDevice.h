@@ -45,6 +45,10 @@ struct SdlJoystickDef {
   JoystickMappingDef mapping;
   VelocityFilterDef velocity;
   bool requireForceFeedback = true;   // false: a joystick without SDL_Haptic works as input only
+  // With requireForceFeedback: a stick without SDL_Haptic is still taken
+  // (input only) when it can rumble (a gamepad): rumble() then stands in
+  // for the force it cannot render.
+  bool acceptRumble = false;
   double updateRate = 1000.0;         // device thread: axis polls and effect updates per second [Hz]
   // SDL levels are relative; maxForce is the force [N] that full level stands
   // for, a nominal figure for desktop force-feedback sticks (1-3 N at the
@@ -67,6 +71,11 @@ class SdlJoystickDevice final : public HapticDevice {
   const char* error() const override;
 
   const std::string& joystickName() const { return name_; }
+  // The thread that owns SDL (the UI's), after open(): rumble the stick's
+  // motors at `strength` in [0, 1] for the next 150 ms (call it every frame
+  // to keep it going; 0 stops it). False when the stick has no rumble.
+  // SDL's joystick lock serialises it with the device thread.
+  bool rumble(double strength);
 
  private:
   struct Pose {

@@ -103,6 +103,44 @@ TEST_F(AudioTest, TheToneRisesAsTheStateNearsTolerance) {
   EXPECT_NEAR(near, 2 * 660.0, 4);
 }
 
+// The force tone's pitch follows the strain: 180 Hz at none, 720 Hz at
+// full (strainPitch), measured by zero crossings over the steady second.
+TEST_F(AudioTest, TheForceTonesPitchFollowsTheStrain) {
+  auto crossings = [](double strain) {
+    Audio audio;
+    audio.setForceTone(strain);
+    std::vector<float> buffer(96000);
+    audio.synthesize(buffer.data(), static_cast<int>(buffer.size()));
+    return zeroCrossings(std::vector<float>(buffer.begin() + 48000, buffer.end()));
+  };
+  EXPECT_NEAR(crossings(0.0), 2 * 180.0, 4);
+  EXPECT_NEAR(crossings(0.5), 2 * 360.0, 4);
+  EXPECT_NEAR(crossings(1.0), 2 * 720.0, 4);
+  EXPECT_NEAR(crossings(5.0), 2 * 720.0, 4);  // clamped
+}
+
+// No clicks: a force that jumps from none to full, and the tone switched
+// off, change the waveform by no more than its own slope allows. A sine of
+// amplitude A at f moves at most 2 pi f A / rate per sample: 720 Hz at the
+// tone's 0.05 x volume 0.6 at 48 kHz is 0.0028; a click (a step) would be
+// up to the whole amplitude, 0.03.
+TEST_F(AudioTest, TheForceToneGlidesWithoutClicks) {
+  Audio audio;
+  std::vector<float> buffer(48000);
+  audio.setForceTone(0.0);
+  audio.synthesize(buffer.data(), 24000);
+  audio.setForceTone(1.0);  // a jump of the force
+  audio.synthesize(buffer.data() + 24000, 12000);
+  audio.setForceTone(-1.0);  // switched off
+  audio.synthesize(buffer.data() + 36000, 12000);
+  double largest = 0.0;
+  for (std::size_t i = 1; i < buffer.size(); ++i)
+    largest = std::max(largest, std::abs(static_cast<double>(buffer[i]) - buffer[i - 1]));
+  EXPECT_LT(largest, 2 * M_PI * 720.0 * 0.05 * 0.6 / 48000.0 * 1.05);
+  EXPECT_GT(peak(std::vector<float>(buffer.begin() + 30000, buffer.begin() + 36000)), 0.02);  // it sounded
+  EXPECT_LT(peak(std::vector<float>(buffer.end() - 2000, buffer.end())), 1e-4);             // and stopped
+}
+
 TEST(AudioDeviceTest, OpensOnSdlsDummyDriver) {
   setenv("SDL_AUDIODRIVER", "dummy", 1);
   Audio audio;

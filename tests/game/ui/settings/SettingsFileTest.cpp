@@ -43,6 +43,11 @@ TEST(SettingsFileTest, EveryFieldRoundTrips) {
   s.mouseMmPerPixel = 0.125;
   s.frameCap = 144;
   s.uiScale = 1.25;
+  s.mouseFeel = MouseFeel::Hand;
+  s.strainRing = false;
+  s.forceTone = false;
+  s.fallWarning = false;
+  s.rumble = false;
   ASSERT_TRUE(s.keys.bind(KeyAction::TakeHold, platform::keyFromName("H")));
   ASSERT_TRUE(s.keys.bind(KeyAction::OrbitLeft, platform::keyFromName("Keypad 4")));
   const auto file = dir.path() / "nested" / "settings.json";
@@ -59,6 +64,12 @@ TEST(SettingsFileTest, EveryFieldRoundTrips) {
   EXPECT_EQ(back.settings.mouseMmPerPixel, 0.125);
   EXPECT_EQ(back.settings.frameCap, 144);
   EXPECT_EQ(back.settings.uiScale, 1.25);
+  EXPECT_EQ(back.settings.mouseFeel, MouseFeel::Hand);
+  EXPECT_FALSE(back.settings.strainRing);
+  EXPECT_FALSE(back.settings.forceTone);
+  EXPECT_FALSE(back.settings.fallWarning);
+  EXPECT_FALSE(back.settings.rumble);
+  EXPECT_THAT(settingsJson(s), HasSubstr("\"mouse_feel\": \"hand\""));
   EXPECT_THAT(settingsJson(s), HasSubstr("\"orbit_left\": \"Keypad 4\""));
   // SI units in the key names.
   EXPECT_THAT(settingsJson(s), HasSubstr("\"stiffness_N_per_m\": 123.25"));
@@ -90,6 +101,27 @@ TEST(SettingsFileTest, ABadValueKeepsItsDefaultAndIsNamed) {
                           "'stiffness_N_per_m'", "'frame_cap_fps'", "'ui_scale'", "'mouse_mm_per_px'"})
     EXPECT_THAT(all, HasSubstr(key));
   EXPECT_THAT(all, HasSubstr("'follow', 'orbit' or 'top'"));
+}
+
+// The force substitutes and the mouse's feel: a bad value keeps the default
+// and the note names the key and what it must be.
+TEST(SettingsFileTest, BadForceCueSettingsAreRefusedWithTheirKeyNamed) {
+  test::TempDirectory dir;
+  const std::string file = dir.write("settings.json",
+                                     R"({"mouse_feel": "glove", "strain_ring": 1, "force_tone": "loud",
+                                         "fall_warning": null, "rumble": [true]})");
+  const LoadedSettings loaded = loadSettings(file);
+  EXPECT_EQ(loaded.settings.mouseFeel, MouseFeel::Direct);
+  EXPECT_TRUE(loaded.settings.strainRing);
+  EXPECT_TRUE(loaded.settings.forceTone);
+  EXPECT_TRUE(loaded.settings.fallWarning);
+  EXPECT_TRUE(loaded.settings.rumble);
+  std::string all;
+  for (const std::string& n : loaded.notes) all += n + "\n";
+  EXPECT_THAT(all, HasSubstr("'mouse_feel' must be 'direct' or 'hand'; kept the default"));
+  for (const char* key : {"strain_ring", "force_tone", "fall_warning", "rumble"})
+    EXPECT_THAT(all, HasSubstr("'" + std::string(key) + "' must be true or false; kept the default"));
+  EXPECT_EQ(loaded.notes.size(), 5u) << all;
 }
 
 // Keys by name: an unknown name, Escape, or a key an earlier action already

@@ -40,5 +40,15 @@ TEST(Settings, TheOverrideSetsMethodAndEveryGain) {
   }
 }
 
+// The hand feel opens the factory's "mouse-hand"; other devices as they are.
+TEST(Settings, TheHandFeelPlaysTheFactorysMouseHand) {
+  Settings s;
+  EXPECT_EQ(playDeviceName(s), "mouse");
+  s.mouseFeel = MouseFeel::Hand;
+  EXPECT_EQ(playDeviceName(s), "mouse-hand");
+  s.device = "joystick";
+  EXPECT_EQ(playDeviceName(s), "joystick");
+}
+
 }  // namespace
 }  // namespace hemiroll::game

@@ -13,13 +13,19 @@ namespace {
 
 TEST(DeviceFactoryTest, EveryBuiltInDeviceIsMadeByItsName) {
   const DeviceFactory f;
-  EXPECT_EQ(f.names(), (std::vector<std::string>{"mouse", "joystick", "udp", "scripted", "simulated-hand"}));
+  EXPECT_EQ(f.names(), (std::vector<std::string>{"mouse", "mouse-hand", "joystick", "udp", "scripted", "simulated-hand"}));
   for (const std::string& name : f.names()) {
     const DeviceChoice c = f.make(name);
     ASSERT_TRUE(c.device) << name << ": " << c.error;
     EXPECT_EQ(c.error, "");
   }
   EXPECT_FALSE(f.make("mouse").device->spec().hasForceOutput);
+  // The mouse's hand feel renders force, to the simulated hand it reads.
+  EXPECT_TRUE(f.make(kMouseHandDevice).device->spec().hasForceOutput);
+  EXPECT_STREQ(f.make(kMouseHandDevice).device->spec().name, "mouse-hand");
+  DeviceOptions bad;
+  bad.mouseHand.stiffness = 0.0;
+  EXPECT_EQ(f.make(kMouseHandDevice, bad).error, "device 'mouse-hand': mouse-hand: hand stiffness must be a positive number of N/m");
   EXPECT_STREQ(f.make("udp").device->spec().name, "udp bridge");
 }
 
@@ -41,7 +47,7 @@ TEST(DeviceFactoryTest, EveryPlayerDeviceIsMadeAndMappable) {
 TEST(DeviceFactoryTest, UnknownNamesListTheKnownOnes) {
   const DeviceChoice c = DeviceFactory().make("phantom");
   EXPECT_FALSE(c.device);
-  EXPECT_EQ(c.error, "unknown device 'phantom'; known devices: mouse, joystick, udp, scripted, simulated-hand");
+  EXPECT_EQ(c.error, "unknown device 'phantom'; known devices: mouse, mouse-hand, joystick, udp, scripted, simulated-hand");
 }
 
 TEST(DeviceFactoryTest, OpenFailuresComeBackAsTheDevicesSentence) {

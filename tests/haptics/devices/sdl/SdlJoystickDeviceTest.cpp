@@ -3,7 +3,9 @@
 #include <SDL.h>
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <string>
 #include <thread>
@@ -103,6 +105,56 @@ TEST_F(SdlJoystickDeviceTest, InputOnlyStickFollowsItsAxesAndReportsAnUnplug) {
   EXPECT_NE(std::string(d.error()).find("was disconnected"), std::string::npos) << d.error();
   d.close();
   SDL_JoystickClose(hand);
+}
+
+// A gamepad without SDL_Haptic but with motors: taken (input only) when
+// rumble may stand in for the force, and rumble() reaches its motors at the
+// strength asked for (SDL's virtual joystick records what it is sent).
+std::atomic<int> gRumbleLow{-1}, gRumbleHigh{-1};
+int recordRumble(void*, Uint16 low, Uint16 high) {
+  gRumbleLow = low;
+  gRumbleHigh = high;
+  return 0;
+}
+
+TEST_F(SdlJoystickDeviceTest, AGamepadThatRumblesIsTakenAndRumblesAtTheStrengthAsked) {
+  SDL_VirtualJoystickDesc desc{};
+  desc.version = SDL_VIRTUAL_JOYSTICK_DESC_VERSION;
+  desc.type = SDL_JOYSTICK_TYPE_GAMECONTROLLER;
+  desc.naxes = 3;
+  desc.nbuttons = 4;
+  desc.Rumble = &recordRumble;
+  const int index = SDL_JoystickAttachVirtualEx(&desc);
+  ASSERT_GE(index, 0) << SDL_GetError();
+  SdlJoystickDef def;
+  def.index = index;
+  EXPECT_FALSE(SdlJoystickDevice(def).open());  // force required, rumble not accepted: refused as before
+  def.acceptRumble = true;
+  SdlJoystickDevice d(def);
+  ASSERT_TRUE(d.open()) << (d.error() ? d.error() : "");
+  EXPECT_FALSE(d.spec().hasForceOutput);
+  EXPECT_TRUE(d.rumble(0.5));
+  EXPECT_EQ(gRumbleLow.load(), 32768);
+  EXPECT_EQ(gRumbleHigh.load(), 32768);
+  EXPECT_TRUE(d.rumble(7.0));  // clamped to full
+  EXPECT_EQ(gRumbleLow.load(), 65535);
+  EXPECT_TRUE(d.rumble(std::nan("")));  // nothing known: off
+  EXPECT_EQ(gRumbleLow.load(), 0);
+  d.close();
+  SDL_JoystickDetachVirtual(index);
+}
+
+TEST_F(SdlJoystickDeviceTest, AStickWithoutMotorsSaysItCannotRumble) {
+  const int index = SDL_JoystickAttachVirtual(SDL_JOYSTICK_TYPE_GAMECONTROLLER, 3, 4, 0);
+  ASSERT_GE(index, 0) << SDL_GetError();
+  SdlJoystickDef def;
+  def.index = index;
+  def.requireForceFeedback = false;
+  SdlJoystickDevice d(def);
+  ASSERT_TRUE(d.open()) << (d.error() ? d.error() : "");
+  EXPECT_FALSE(d.rumble(0.5));
+  d.close();
+  SDL_JoystickDetachVirtual(index);
 }
 
 }  // namespace
