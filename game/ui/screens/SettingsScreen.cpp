@@ -80,18 +80,7 @@ void SettingsScreen::paintKeys() {
   if (!keyNote_.empty()) wrappedTextDisabled(keyNote_);
 }
 
-void SettingsScreen::paint() {
-  Settings& s = host_.settings();
-  beginCentredPanel("settings", 620);
-  ImGui::SetWindowFontScale(1.6f);
-  ImGui::Text("Settings");
-  ImGui::SetWindowFontScale(1.0f);
-  // Half the panel for a slider, the rest for its label: the longest label
-  // ("stiffness k_r [N/m]", "mouse: mm per pixel") then fits beside it.
-  ImGui::PushItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
-
-  ImGui::Separator();
-  ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1), "Device");
+void SettingsScreen::paintDevice(Settings& s) {
   bool first = true;
   for (const char* device : haptics::kPlayerDevices) {
     if (!first) ImGui::SameLine();
@@ -138,9 +127,9 @@ void SettingsScreen::paint() {
     wrappedTextDisabled("the device's peak force, stiffness and workspace (devices/NAME.lua): the safety layer holds "
                         "every trial to them");
   }
+}
 
-  ImGui::Separator();
-  ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1), "Force cues");
+void SettingsScreen::paintForceCues(Settings& s) {
   wrappedTextDisabled("what stands in for the force you cannot feel with a mouse");
   ImGui::Checkbox("strain ring round the proxy", &s.strainRing);
   ImGui::SameLine(ImGui::GetContentRegionAvail().x * 0.55f);
@@ -151,9 +140,9 @@ void SettingsScreen::paint() {
   wrappedTextDisabled("ring: grows and turns red as the coupling pulls harder (red: as hard as 0.4 of the mass "
                       "point's weight); tone: its pitch rises with the pull; edge warning: the screen's edge "
                       "pulses red before the mass point slides off the face");
+}
 
-  ImGui::Separator();
-  ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1), "Force method");
+void SettingsScreen::paintForceMethod(Settings& s) {
   ImGui::Checkbox("override the level's method and gains", &s.overrideCoupling);
   ImGui::BeginDisabled(!s.overrideCoupling);
   static constexpr const char* kMethods[] = {"M1", "M2", "M3 (the paper's)", "visual only"};
@@ -167,22 +156,18 @@ void SettingsScreen::paint() {
     const std::string problem = physics::validateCoupling(couplingFor(s, physics::CouplingDef{}));
     if (!problem.empty()) wrappedText(ImVec4(1, 0.5f, 0.4f, 1), problem);
   }
+}
 
-  ImGui::Separator();
-  ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1), "Keys");
-  paintKeys();
-
-  ImGui::Separator();
-  ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1), "Audio");
+void SettingsScreen::paintAudio(Settings& s) {
   float volume = static_cast<float>(s.volume);
   if (ImGui::SliderFloat("volume", &volume, 0.0f, 1.0f, "%.2f")) {
     s.volume = volume;
     host_.audio().setVolume(volume);
   }
   if (!host_.audio().available()) wrappedTextDisabled(host_.audio().note());
+}
 
-  ImGui::Separator();
-  ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1), "Graphics");
+void SettingsScreen::paintGraphics(Settings& s) {
   bool vsync = s.vsync;
   if (ImGui::Checkbox("vsync", &vsync)) host_.setVsync(vsync);
   int cap = s.frameCap;
@@ -201,6 +186,41 @@ void SettingsScreen::paint() {
   float zoom = static_cast<float>(s.zoom);
   if (ImGui::SliderFloat("zoom", &zoom, 0.5f, 3.0f, "%.2f")) s.zoom = zoom;
   ImGui::Checkbox("race against your best run (a translucent ghost)", &s.ghost);
+}
+
+void SettingsScreen::paint() {
+  Settings& s = host_.settings();
+  beginCentredPanel("settings", 620);
+  ImGui::SetWindowFontScale(1.6f);
+  ImGui::Text("Settings");
+  ImGui::SetWindowFontScale(1.0f);
+  // Half the panel for a slider, the rest for its label: the longest label
+  // ("stiffness k_r [N/m]", "mouse: mm per pixel") then fits beside it.
+  ImGui::PushItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
+
+  ImGui::Separator();
+  ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1), "Device");
+  paintDevice(s);
+
+  ImGui::Separator();
+  ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1), "Force cues");
+  paintForceCues(s);
+
+  ImGui::Separator();
+  ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1), "Force method");
+  paintForceMethod(s);
+
+  ImGui::Separator();
+  ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1), "Keys");
+  paintKeys();
+
+  ImGui::Separator();
+  ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1), "Audio");
+  paintAudio(s);
+
+  ImGui::Separator();
+  ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.35f, 1), "Graphics");
+  paintGraphics(s);
 
   ImGui::Spacing();
   if (ImGui::Button("Back  (Esc)", ImVec2(-1, 0))) host_.screens().pop();

@@ -1,5 +1,5 @@
 #pragma once
-// Settings: device (the mouse's sensitivity), force method and gains (the
+// Settings: device (the mouse's sensitivity and feel), force cues, force method and gains (the
 // level's, or the player's override), keys (each play action's key: click
 // it, press the new one), audio volume, graphics (vsync, frame cap,
 // interface scale, camera, zoom). Changes apply at once
@@ -12,6 +12,7 @@
 #include <string>
 
 #include "game/ui/settings/KeyBindings.h"
+#include "game/ui/settings/Settings.h"
 #include "game/ui/screens/Screen.h"
 
 namespace hemiroll::game {
@@ -31,6 +32,12 @@ class SettingsScreen final : public Screen {
 
  private:
   void paintKeys();
+  // The panel's sections, in the order paint() shows them.
+  void paintDevice(Settings& s);
+  void paintForceCues(Settings& s);
+  void paintForceMethod(Settings& s);
+  void paintAudio(Settings& s);
+  void paintGraphics(Settings& s);
 
   std::optional<KeyAction> listening_;
   std::string keyNote_;  // what the last key change did (a swap, a refusal)
