@@ -28,7 +28,7 @@ void HintCompass::showStir(double proxyRight, double proxyUp, double paceRight, 
   shown_ = std::isfinite(proxyRight) && std::isfinite(proxyUp) && std::isfinite(paceRight) && std::isfinite(paceUp) &&
            std::isfinite(radius) && radius > 0.0 && std::isfinite(rate) && rate != 0.0;
   stir_ = shown_;
-  label_ = "stir";
+  label_ = "circle";
   proxyRight_ = shown_ ? proxyRight : 0.0;
   proxyUp_ = shown_ ? proxyUp : 0.0;
   right_ = shown_ ? paceRight : 0.0;
@@ -73,7 +73,7 @@ void HintCompass::draw(WindowRects* rects) const {
     drawStir(dl, c, radius);
     ImGui::SameLine();
     ImGui::BeginGroup();
-    ImGui::TextColored(ImVec4(0.3f, 0.95f, 0.55f, 1.0f), "stir: follow the green dot");
+    ImGui::TextColored(ImVec4(0.3f, 0.95f, 0.55f, 1.0f), "circle: follow the green dot");
     const double across = 2.0 * ringRadius_ * 1e3;  // [mm]
     ImGui::Text(across < 10.0 ? "%.1f mm circles," : "%.0f mm circles,", across);
     ImGui::Text("a turn every %.1f s,", 2.0 * M_PI / std::abs(rate_));
