@@ -321,7 +321,7 @@ void PlayScreen::showAutopilot() {
     hud_.setAutopilot(note.empty() ? "AUTOPILOT playing: click or " + takeHold + " to take over" : note);
   else if (showHint_)
     hud_.setAutopilot(note.empty() ? "hint (" + host_.settings().keys.keyName(KeyAction::Hint) +
-                                         "): stir round the green ring at the green dot's pace; settle on the green spot"
+                                         "): circle round the green ring at the green dot's pace; settle on the green spot"
                                    : note);
   else
     hud_.setAutopilot("");

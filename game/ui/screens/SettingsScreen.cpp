@@ -88,7 +88,7 @@ void SettingsScreen::paintDevice(Settings& s) {
     if (ImGui::RadioButton(device, s.device == device)) s.device = device;
   }
   if (s.device == haptics::kMouseDevice) {
-    wrappedTextDisabled("no force feedback: the coupling force is drawn as an arrow");
+    wrappedTextDisabled("no force feedback: the coupling force is drawn as an arrow (and the force cues below)");
     float mm = static_cast<float>(s.mouseMmPerPixel);
     if (ImGui::SliderFloat("mouse: mm per pixel", &mm, static_cast<float>(kMouseMmPerPixel[0]),
                            static_cast<float>(kMouseMmPerPixel[1]), "%.2f", ImGuiSliderFlags_Logarithmic))

@@ -119,7 +119,7 @@ TEST_F(AutopilotWatchTest, TheHintShowsThePlanAndMovesNothing) {
     planned = play->session()->hint(plan);
   }
   ASSERT_TRUE(planned) << play->session()->autopilotNote();
-  EXPECT_THAT(play->hud().autopilot(), HasSubstr("stir round the green ring"));
+  EXPECT_THAT(play->hud().autopilot(), HasSubstr("circle round the green ring"));
   app.frame();
   EXPECT_TRUE(play->compass().shown());
   // At a person's bandwidth (issue 26): once the autopilot stirs, the hint
