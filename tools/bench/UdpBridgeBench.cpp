@@ -17,6 +17,7 @@
 
 #include <atomic>
 #include <cstdlib>
+#include <optional>
 #include <thread>
 
 #include "engine/haptics/ServoLoop.h"
@@ -46,36 +47,56 @@ hapticclient::ClientOptions clientOptions(std::uint16_t port, double rate) {
   return options;
 }
 
+// One run of both benchmarks: a bridge on a free port, the client shaped by
+// `shape` on its own thread, the servo loop engaged until the client ends.
+// Empty (with the state skipped) when the bridge cannot open or no client
+// state arrives.
+struct BridgeRun {
+  hapticclient::ClientSummary summary;
+  UdpBridgeCounters counters;
+};
+
+template <class Shape>
+std::optional<BridgeRun> runBridge(benchmark::State& state, double clientRate, Shape shape) {
+  UdpBridgeDef bridgeDef;
+  bridgeDef.port = 0;
+  UdpBridgeDevice bridge(bridgeDef);
+  if (!bridge.open()) {
+    state.SkipWithError(bridge.error());
+    return std::nullopt;
+  }
+  hapticclient::ClientOptions options = clientOptions(bridge.port(), clientRate);
+  shape(options);
+  std::atomic<bool> stopClient{false};
+  BridgeRun run;
+  std::thread client([&] { run.summary = hapticclient::runClient(options, stopClient); });
+  if (!bridge.waitForClient(2.0)) {
+    stopClient = true;
+    client.join();
+    state.SkipWithError("the client sent nothing");
+    return std::nullopt;
+  }
+  ServoLoop loop(ServoLoopDef{}, bridge);
+  ServoCommand engage;
+  engage.kind = ServoCommandKind::Engage;
+  loop.post(engage);
+  loop.start();
+  client.join();
+  loop.stop();
+  run.counters = bridge.counters();
+  return run;
+}
+
 void BM_UdpBridgeRoundTrip(benchmark::State& state) {
   const double clientRate = static_cast<double>(state.range(0));
   for (auto _ : state) {
-    UdpBridgeDef bridgeDef;
-    bridgeDef.port = 0;
-    UdpBridgeDevice bridge(bridgeDef);
-    if (!bridge.open()) {
-      state.SkipWithError(bridge.error());
-      return;
-    }
-    hapticclient::ClientOptions options = clientOptions(bridge.port(), clientRate);
-    options.circleRadius = 0.005;
-    options.circleFrequency = 1.0;
-    std::atomic<bool> stopClient{false};
-    hapticclient::ClientSummary summary;
-    std::thread client([&] { summary = hapticclient::runClient(options, stopClient); });
-    if (!bridge.waitForClient(2.0)) {
-      stopClient = true;
-      client.join();
-      state.SkipWithError("the client sent nothing");
-      return;
-    }
-    ServoLoop loop(ServoLoopDef{}, bridge);
-    ServoCommand engage;
-    engage.kind = ServoCommandKind::Engage;
-    loop.post(engage);
-    loop.start();
-    client.join();
-    loop.stop();
-    const UdpBridgeCounters c = bridge.counters();
+    const auto run = runBridge(state, clientRate, [](hapticclient::ClientOptions& options) {
+      options.circleRadius = 0.005;
+      options.circleFrequency = 1.0;
+    });
+    if (!run) return;
+    const hapticclient::ClientSummary& summary = run->summary;
+    const UdpBridgeCounters& c = run->counters;
     state.counters["rtt_min_us"] = summary.rttMin * 1e6;
     state.counters["rtt_p50_us"] = summary.rttMedian * 1e6;
     state.counters["rtt_p99_us"] = summary.rttP99 * 1e6;
@@ -102,42 +123,22 @@ BENCHMARK(BM_UdpBridgeRoundTrip)->Arg(1000)->Arg(990)->Iterations(1)->Unit(bench
 void BM_UdpBridgeStepResponse(benchmark::State& state) {
   const double clientRate = static_cast<double>(state.range(0));
   for (auto _ : state) {
-    UdpBridgeDef bridgeDef;
-    bridgeDef.port = 0;
-    UdpBridgeDevice bridge(bridgeDef);
-    if (!bridge.open()) {
-      state.SkipWithError(bridge.error());
-      return;
-    }
-    hapticclient::ClientOptions options = clientOptions(bridge.port(), clientRate);
-    options.peakForce = 3.3;
-    options.handleMass = 0.05;
-    options.friction = 0.02;
-    options.resolution = 0.000055;
-    options.step = 0.002;
-    options.stepPeriod = 0.094;
-    std::atomic<bool> stopClient{false};
-    hapticclient::ClientSummary summary;
-    std::thread client([&] { summary = hapticclient::runClient(options, stopClient); });
-    if (!bridge.waitForClient(2.0)) {
-      stopClient = true;
-      client.join();
-      state.SkipWithError("the client sent nothing");
-      return;
-    }
-    ServoLoop loop(ServoLoopDef{}, bridge);
-    ServoCommand engage;
-    engage.kind = ServoCommandKind::Engage;
-    loop.post(engage);
-    loop.start();
-    client.join();
-    loop.stop();
+    const auto run = runBridge(state, clientRate, [](hapticclient::ClientOptions& options) {
+      options.peakForce = 3.3;
+      options.handleMass = 0.05;
+      options.friction = 0.02;
+      options.resolution = 0.000055;
+      options.step = 0.002;
+      options.stepPeriod = 0.094;
+    });
+    if (!run) return;
+    const hapticclient::ClientSummary& summary = run->summary;
     state.counters["step_p50_us"] = summary.stepMedian * 1e6;
     state.counters["step_p10_us"] = summary.stepP10 * 1e6;
     state.counters["step_p90_us"] = summary.stepP90 * 1e6;
     state.counters["step_max_us"] = summary.stepMax * 1e6;
     state.counters["steps"] = static_cast<double>(summary.steps);
-    state.counters["lost"] = static_cast<double>(bridge.counters().lost);
+    state.counters["lost"] = static_cast<double>(run->counters.lost);
   }
 }
 BENCHMARK(BM_UdpBridgeStepResponse)->Arg(1000)->Arg(990)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
