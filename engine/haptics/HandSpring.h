@@ -19,7 +19,7 @@ namespace hemiroll::haptics {
 
 // The figures are the human model's limb (engine/human/HumanDef.h LimbDef,
 // docs/HUMAN_MODEL.md: Mussa-Ivaldi et al. 1985, Tsuji et al. 1995), the
-// same as the haptic tests' HandModelDef: a relaxed hand holding a stylus.
+// hand of SimulatedHandDevice (HandModelDef): a relaxed hand holding a stylus.
 struct HandSpringDef {
   double mass = 0.3;          // [kg]
   double stiffness = 300.0;   // [N/m]

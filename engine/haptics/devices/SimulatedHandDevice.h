@@ -7,22 +7,20 @@
 //
 //   m_h a = k_h (r_intent - r) + b_h (v_intent - v) + F_rendered
 //
-// integrated with semi-implicit Euler from one read() to the next (the time
-// between two reads is the servo period); the force sent after a read acts
-// until the next one (zero-order hold, as on a real device).
+// integrated by HandSpring (semi-implicit Euler) from one read() to the next,
+// the intent sampled at each sub-step's start; the force sent after a read
+// acts until the next one (zero-order hold, as on a real device).
 
 #include <functional>
 
+#include "engine/haptics/HandSpring.h"
 #include "engine/haptics/HapticDevice.h"
 
 namespace hemiroll::haptics {
 
-struct HandModelDef {
-  double mass = 0.3;          // m_h, effective hand and device mass [kg]
-  double stiffness = 300.0;   // k_h, grip and arm stiffness [N/m]
-  double damping = 15.0;      // b_h [N s/m]; about 0.8 of critical for these values
-  double maxStep = 0.001;     // longest integration sub-step [s] (stability of the explicit part)
-};
+// The hand: the same spring-mass hand as the mouse's hand feel (mass, grip
+// and arm stiffness, damping, longest sub-step).
+using HandModelDef = HandSpringDef;
 
 class SimulatedHandDevice final : public HapticDevice {
  public:
@@ -43,15 +41,14 @@ class SimulatedHandDevice final : public HapticDevice {
   void sendForce(const Vec3& force) override { force_ = force; }
   const char* error() const override { return nullptr; }
 
-  const Vec3& position() const { return position_; }
-  const Vec3& velocity() const { return velocity_; }
+  const Vec3& position() const { return hand_.position(); }
+  const Vec3& velocity() const { return hand_.velocity(); }
 
  private:
   IntentFunction intent_;
-  HandModelDef hand_;
+  HandSpring hand_;
   DeviceSpec spec_;
   double time_;
-  Vec3 position_, velocity_ = Vec3::Zero();
   Vec3 force_ = Vec3::Zero();
 };
 
