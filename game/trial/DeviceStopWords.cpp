@@ -51,6 +51,7 @@ std::string deviceStopWords(haptics::SafetyFault fault, const BridgeFacts& b, co
     case SafetyFault::None: return "";
     case SafetyFault::DeviceError: return b.present ? bridgeWords(b) : "the device reported an error";
     case SafetyFault::StaleDevice:
+      if (b.present && b.clientGone) return bridgeWords(b);
       return "the device's position stopped updating for more than " + ms(l.staleLimit) +
              " (stale data): the device or its client stalled";
     case SafetyFault::NonFiniteForce:

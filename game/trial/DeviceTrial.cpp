@@ -103,7 +103,13 @@ void DeviceTrial::play(double wallLimit) {
 // gone when the silence outlasts goneAfter.
 void DeviceTrial::noteStop() {
   if (stop_ == haptics::SafetyFault::None) return;
-  if (stop_ == haptics::SafetyFault::DeviceError && facts_.stale) {
+  // Silence is seen by two watchdogs: the bridge's counts wall time, the
+  // loop's stale-data one counts ticks, which run ahead of the wall clock
+  // while the loop catches up after a stall. Whichever saw it first, the
+  // bridge tells a pause from a client that has gone.
+  const bool silence = (stop_ == haptics::SafetyFault::DeviceError || stop_ == haptics::SafetyFault::StaleDevice) &&
+                       facts_.stale;
+  if (silence) {
     const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(def_.goneAfter);
     while (bridge_->silentFor() < def_.goneAfter && std::chrono::steady_clock::now() < until)
       std::this_thread::sleep_for(std::chrono::milliseconds(5));

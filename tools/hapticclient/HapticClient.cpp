@@ -55,6 +55,7 @@ class ForceInbox {
       return;
     }
     if (!haveAnswer_ || udp::sequenceAfter(m.answers, lastAnswer_)) {
+      if (!haveAnswer_) firstAnswer_ = m.answers;
       ++s.statesAnswered;
       rtts_.push_back(static_cast<double>(now - static_cast<std::int64_t>(m.echoTimestampNs)) * 1e-9);
       haveAnswer_ = true;
@@ -79,11 +80,17 @@ class ForceInbox {
     s.rttMax = rtts_.empty() ? 0.0 : *std::max_element(rtts_.begin(), rtts_.end());
   }
 
+  // Whether `sequence` lies strictly between the first and the last state
+  // the bridge answered: the span in which it saw every gap.
+  bool withinAnswered(std::uint32_t sequence) const {
+    return haveAnswer_ && udp::sequenceAfter(sequence, firstAnswer_) && udp::sequenceAfter(lastAnswer_, sequence);
+  }
+
  private:
   std::vector<double> rtts_;
   udp::SequenceBook sequence_;  // the bridge's force datagrams
   bool haveAnswer_ = false;
-  std::uint32_t lastAnswer_ = 0;
+  std::uint32_t firstAnswer_ = 0, lastAnswer_ = 0;
 };
 
 DeviceModelDef deviceModelOf(const ClientOptions& o) {
@@ -153,6 +160,8 @@ ClientSummary runClient(const ClientOptions& o, const std::atomic<bool>& stop) {
   const auto periodNs = static_cast<std::int64_t>(std::llround(1e9 / o.rate));
   const auto total = static_cast<std::uint64_t>(std::llround(o.duration * o.rate));
   ForceInbox inbox(total);
+  std::vector<std::uint32_t> droppedSequences;
+  droppedSequences.reserve(std::min<std::uint64_t>(total, 600'000));
   std::uint8_t buffer[udp::kMaxDatagram];
   const std::int64_t start = clock.now();
   std::int64_t deadline = start;
@@ -176,7 +185,9 @@ ClientSummary runClient(const ClientOptions& o, const std::atomic<bool>& stop) {
       if (!within(t, o.pauseAt, o.pauseFor)) {
         OutgoingLink::Datagram d{};
         udp::encodeState(m, d.data());
+        const std::uint64_t droppedBefore = link.lost();
         link.push(d, now);
+        if (link.lost() != droppedBefore) droppedSequences.push_back(m.sequence);
         link.sendDue(now, [&](const OutgoingLink::Datagram& out) { socket.send(out.data(), out.size(), bridge); });
         if (half != lastHalf && k > 0) steps.stepSent(m.sequence, now);
         lastHalf = half;
@@ -205,6 +216,9 @@ ClientSummary runClient(const ClientOptions& o, const std::atomic<bool>& stop) {
   inbox.finish(s);
   finishSteps(steps, s);
   s.statesDropped = link.lost();
+  s.statesDroppedWhileAnswered = static_cast<std::uint64_t>(
+      std::count_if(droppedSequences.begin(), droppedSequences.end(),
+                    [&](std::uint32_t sequence) { return inbox.withinAnswered(sequence); }));
   s.statesReordered = link.reordered();
   return s;
 }

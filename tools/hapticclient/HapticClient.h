@@ -37,6 +37,10 @@ struct ClientSummary {
   // response (--step): from sending the first state after an edge to the
   // first force that answers it and differs by more than 0.02 N [s].
   std::uint64_t statesDropped = 0, statesReordered = 0;
+  // Of those dropped, the ones between the first and the last state the
+  // bridge answered: the drops the bridge could see as gaps (not those
+  // before it heard the client or after it stopped listening).
+  std::uint64_t statesDroppedWhileAnswered = 0;
   std::uint64_t steps = 0;
   double stepMedian = 0.0, stepP10 = 0.0, stepP90 = 0.0, stepMax = 0.0;
   bool exited = false;                // left at --exit-at

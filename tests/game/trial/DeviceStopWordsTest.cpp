@@ -38,6 +38,20 @@ TEST(DeviceStopWords, TheBridgesThreeDeviceErrorsAreTold) {
   EXPECT_THAT(deviceStopWords(SafetyFault::DeviceError, fault, {}), HasSubstr("the device reported a fault (status 7)"));
 }
 
+// The loop's stale-data watchdog can see a silent client before the
+// bridge's does; a client that has gone is still named as gone.
+TEST(DeviceStopWords, AStaleDeviceWhoseClientHasGoneIsNamedAsGone) {
+  BridgeFacts gone = bridge();
+  gone.stale = true;
+  gone.clientGone = true;
+  gone.silentFor = 0.3;
+  EXPECT_THAT(deviceStopWords(SafetyFault::StaleDevice, gone, {}),
+              HasSubstr("the device's client program has gone (no packet for 300 ms)"));
+  BridgeFacts paused = gone;
+  paused.clientGone = false;
+  EXPECT_THAT(deviceStopWords(SafetyFault::StaleDevice, paused, {}), HasSubstr("stopped updating"));
+}
+
 TEST(DeviceStopWords, EveryFaultHasItsOwnSentenceWithItsFigures) {
   StopLimits l;
   l.continuousForce = 0.88;
