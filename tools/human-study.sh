@@ -2,7 +2,8 @@
 # The human model's success table for docs/HUMAN_MODEL.md (issue 26): every
 # tutorial and the paper's task, on a mouse with and without the game's aids
 # at the visual delays 0.2 s and 0.25 s, and the paper's findings (the task
-# on a force device with M3 at alpha 2 and 4, and by sight alone). SEEDS
+# on a force device with M3 at alpha 2 and 4, the arm co-contracted and
+# relaxed, and by sight alone). SEEDS
 # seeds each (default 20). Prints markdown tables; takes tens of minutes
 # (an aided trial runs the autopilot beside the person for the hint).
 #   tools/human-study.sh [SEEDS] [BUILD_DIR]
@@ -33,4 +34,6 @@ echo "| the paper's task | won |"
 echo "|---|---|"
 echo "| force device, M3, alpha 2 | $(rate levels/paper_reaching.lua --human-device haptic) |"
 echo "| force device, M3, alpha 4 | $(rate "$tmp/paper_reaching_alpha4.lua" --human-device haptic) |"
+echo "| force device, alpha 2, relaxed arm | $(rate levels/paper_reaching.lua --human-device haptic --human-relaxed-arm) |"
+echo "| force device, alpha 4, relaxed arm | $(rate "$tmp/paper_reaching_alpha4.lua" --human-device haptic --human-relaxed-arm) |"
 echo "| by sight alone (mouse, no aids) | $(rate levels/paper_reaching.lua --human-device mouse) |"

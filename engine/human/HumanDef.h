@@ -30,6 +30,13 @@ struct LimbDef {
   double damping = 15.0;    // [N s/m]
 };
 
+// The same arm co-contracted: a person holding an unstable load stiffens
+// the arm by contracting antagonist muscles together, which resists a push
+// mechanically, with no feedback delay (docs/HUMAN_MODEL.md "The arm on a
+// force device": Hogan 1984, Burdet et al. 2001). The same mass; the relaxed
+// limb's damping ratio kept (15 x sqrt(1000 / 300)).
+inline constexpr LimbDef kCoContractedLimb{0.3, 1000.0, 27.4};
+
 struct HumanDef {
   static constexpr double kMinDelay = 0.2;       // [s]
   static constexpr double kMinInterval = 0.25;   // [s]
@@ -54,7 +61,18 @@ struct HumanDef {
   // The fastest the hand is carried to a new place [m/s].
   double maxSpeed = 0.5;             // [m/s]
   LimbDef limb;
+  // The arm that holds a force device, which pushes back: co-contracted
+  // from taking hold (the paper's subjects had practised a day). A mouse
+  // pushes nothing, so there is nothing to stiffen against: `limb` holds it.
+  LimbDef coContractedLimb = kCoContractedLimb;
+  bool coContracts = true;  // false: the relaxed `limb` on a force device too
   HandDevice device = HandDevice::Mouse;
 };
+
+// The limb that holds the device: co-contracted on a force device (unless
+// turned off), the relaxed limb on a mouse or the mouse-hand.
+inline const LimbDef& holdingLimb(const HumanDef& def) {
+  return def.device == HandDevice::Haptic && def.coContracts ? def.coContractedLimb : def.limb;
+}
 
 }  // namespace hemiroll::human

@@ -11,7 +11,7 @@ using physics::Vec3;
 
 HumanModel::HumanModel(const HumanDef& def, const TechniqueDef& technique, double radius, double tick,
                        std::uint64_t seed)
-    : def_(def), tick_(tick), delay_(def.visualDelay, tick), technique_(technique, radius), limb_(def.limb),
+    : def_(def), tick_(tick), delay_(def.visualDelay, tick), technique_(technique, radius), limb_(holdingLimb(def)),
       normal_(seed ^ 0x6875'6d61'6e00'0000ULL) {}
 
 void HumanModel::takeHold(const Vec3& at) {

@@ -6,6 +6,7 @@
 //   --human-noise X       signal-dependent motor noise, SD per unit of move size (default 0.1)
 //   --human-device D      mouse (default), mouse-hand (the game's simulated hand between mouse and proxy) or haptic
 //   --human-aids          the game's aids on: the hint at a person's bandwidth, the force cue
+//   --human-relaxed-arm   on a force device the arm stays relaxed (default: co-contracted)
 
 #include <string>
 
@@ -24,6 +25,8 @@ inline constexpr const char* kHumanFlagsUsage =
     "  --human-noise X    its motor noise, SD per unit of move size (default 0.1)\n"
     "  --human-device D   what its hand holds: mouse (default), mouse-hand (the mouse through the\n"
     "                     game's simulated hand) or haptic\n"
-    "  --human-aids       give it the game's aids (the hint, the force cue)\n";
+    "  --human-aids       give it the game's aids (the hint, the force cue)\n"
+    "  --human-relaxed-arm  on a force device its arm stays relaxed (300 N/m) instead of\n"
+    "                     co-contracted (1000 N/m, docs/HUMAN_MODEL.md)\n";
 
 }  // namespace hemiroll::game

@@ -17,6 +17,7 @@ const char* runUsage() {
          "                    [--autopilot-budget X] [--guidance KIND [--guidance-stiffness K]\n"
          "                    [--guidance-damping C]] [--human-delay S] [--human-interval S]\n"
          "                    [--human-noise X] [--human-device mouse|mouse-hand|haptic] [--human-aids]\n"
+         "                    [--human-relaxed-arm]\n"
          "       hemiroll run LEVEL.lua --realtime --device udp [--port N] [--device-profile NAME]\n"
          "\n"
          "Plays a level with a bot (a Lua module, e.g. scripts/bots/rose.lua) and prints one\n"

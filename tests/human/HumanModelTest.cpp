@@ -119,5 +119,38 @@ TEST(HumanModel, OnAHapticDeviceTheForcePushesTheHandAtOnceOnAMouseNothingDoes) 
   }
 }
 
+// The same person, seed and view with and without a steady push: the
+// decisions do not depend on the hand, so the difference between the two
+// hands is the limb's answer to the push alone. On a force device it moves
+// the hand on the very tick (a = F / m, no neural delay) and at rest stands
+// it off by F / 1000 N/m, the co-contracted arm's stiffness; a mouse's hand
+// is not pushed at all.
+TEST(HumanModel, OnAForceDeviceTheCoContractedArmYieldsAtOnceByForceOverItsStiffness) {
+  const Vec3 push(2.0, -1.0, 0.5);
+  for (const HandDevice device : {HandDevice::Haptic, HandDevice::Mouse}) {
+    HumanDef def;
+    def.device = device;
+    HumanModel pushed(def, TechniqueDef{}, 0.04, kTick, 7);
+    HumanModel free(def, TechniqueDef{}, 0.04, kTick, 7);
+    pushed.takeHold(Vec3(0.0, 0.0, 0.04));
+    free.takeHold(Vec3(0.0, 0.0, 0.04));
+    const HandPose first = pushed.act(wandering(0.0), push);
+    const HandPose firstFree = free.act(wandering(0.0), Vec3::Zero());
+    Vec3 offset = Vec3::Zero();
+    for (int i = 1; i < 4000; ++i) {
+      const double t = i * kTick;
+      offset = pushed.act(wandering(t), push).position - free.act(wandering(t), Vec3::Zero()).position;
+    }
+    if (device == HandDevice::Haptic) {
+      EXPECT_NEAR((first.velocity - firstFree.velocity - push * kTick / def.limb.mass).norm(), 0.0, 1e-12);
+      // 4 s is some 40 time constants of the damped arm (2 m / b = 0.022 s).
+      EXPECT_NEAR((offset - push / 1000.0).norm(), 0.0, 1e-9);
+    } else {
+      EXPECT_EQ(first.velocity, firstFree.velocity);
+      EXPECT_EQ(offset, Vec3::Zero());
+    }
+  }
+}
+
 }  // namespace
 }  // namespace hemiroll::human

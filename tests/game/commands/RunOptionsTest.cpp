@@ -121,6 +121,9 @@ TEST(RunOptions, ReadsTheHumanModelsFlagsAndRefusesABadDevice) {
   EXPECT_EQ(r.options.human.human.noise, 0.15);
   EXPECT_EQ(r.options.human.human.device, human::HandDevice::Haptic);
   EXPECT_TRUE(r.options.human.aids);
+  EXPECT_TRUE(r.options.human.human.coContracts);
+  EXPECT_FALSE(parseRunOptions({"l.lua", "--bot", "human", "--human-device", "haptic", "--human-relaxed-arm"})
+                   .options.human.human.coContracts);
   EXPECT_THAT(parseRunOptions({"l.lua", "--bot", "human", "--human-device", "glove"}).error,
               HasSubstr("--human-device needs mouse, mouse-hand or haptic, not 'glove'"));
   EXPECT_THAT(parseRunOptions({"l.lua", "--bot", "human", "--human-delay", "-1"}).error,
