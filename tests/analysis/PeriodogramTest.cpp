@@ -44,6 +44,7 @@ TEST(Periodogram, TheChirpZGridIsTheDirectSumOnRandomSignals) {
       {5961, 4, 0.05, 2385, true},  // a sweep window: 4 x 5961 = 4 x 3 x 1987, an awkward length
       {6001, 4, 1.0 / 15.0, 2401, false},
       {60001, 4, 0.02, 2000, true},  // 600 s at 100 Hz
+      {500, 4, 0.0, 1900, false},    // more frequencies than samples: the chirp beyond n
   };
   double worst = 0.0;
   for (const Case& c : cases) {
