@@ -12,6 +12,7 @@
 #
 # e.g. the binary of the previous commit against this one:
 #   tools/sweep-speed.sh 7 build/bench/sweep_bench old/hemiroll build/hemiroll
+# SWEEP_ARGS adds options to every sweep (e.g. SWEEP_ARGS="--lanes 1").
 set -euo pipefail
 usage="usage: tools/sweep-speed.sh ROUNDS SWEEP_BENCH HEMIROLL [HEMIROLL ...]"
 rounds=${1:?$usage}
@@ -30,6 +31,7 @@ trap 'rm -rf "$work"' EXIT
 
 median() { sort -g | awk '{v[NR] = $1} END {print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2}'; }
 
+echo "sweep options: --threads 1 --maps none ${SWEEP_ARGS:-}"
 echo "load before: $(cut -d' ' -f1-3 /proc/loadavg)"
 for ((r = 1; r <= rounds; ++r)); do
   "$bench" --benchmark_filter=BM_NaiveRk4Anchor --benchmark_format=csv 2>/dev/null |
@@ -39,7 +41,11 @@ for ((r = 1; r <= rounds; ++r)); do
     i=$((i + 1))
     rm -rf "$work/out"
     TIMEFORMAT='%3U %3S'
-    { time "$bin" sweep "$spec" --out "$work/out" --threads 1 --maps none > /dev/null 2>&1; } 2>> "$work/cpu.$i"
+    # shellcheck disable=SC2086  # SWEEP_ARGS is a list of options
+    if ! { time "$bin" sweep "$spec" --out "$work/out" --threads 1 --maps none ${SWEEP_ARGS:-} > /dev/null 2>&1; } 2>> "$work/cpu.$i"; then
+      echo "sweep-speed.sh: '$bin sweep $spec' failed (run it by hand to see why)" >&2
+      exit 1
+    fi
   done
 done
 echo "load after: $(cut -d' ' -f1-3 /proc/loadavg)"
