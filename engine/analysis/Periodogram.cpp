@@ -2,6 +2,7 @@
 
 #include <fftw3.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <map>
@@ -9,6 +10,7 @@
 #include <mutex>
 #include <numbers>
 #include <utility>
+#include <vector>
 
 namespace hemiroll::analysis {
 
@@ -61,6 +63,7 @@ struct FilterKey {
 struct Workspace {
   std::size_t length = 0;
   FftwBuffer signal, filter;
+  std::vector<std::complex<double>> chirp;  // c_j, j < max(n, count)
   FilterKey filterKey;  // what `filter` holds the transform of; empty: nothing
   void reserve(std::size_t n) {
     if (n <= length) return;
@@ -77,8 +80,31 @@ double chirpPhase(std::int64_t j, std::int64_t twiceL, int sign) {
   const std::int64_t r = (j * j) % twiceL;
   return -std::numbers::pi * sign * 2.0 * static_cast<double>(r) / static_cast<double>(twiceL);
 }
-std::complex<double> chirp(std::int64_t j, std::int64_t twiceL, int sign) {
-  return std::polar(1.0, chirpPhase(j, twiceL, sign));
+
+// Samples of exp(i phase) are made by complex products from an exact start
+// every kRestart samples (issue 32: a sin and cos per sample had been 5 % of
+// a sweep). A product errs by a few eps, so after k products a value errs by
+// about k eps (a linear phase) or k^2 eps / 2 (the chirp, whose ratio is
+// itself made by products): at most ~32^2 / 2 eps = 1e-13 here, far inside
+// the grid's tolerance (PeriodogramTest: 1e-10 of the largest power).
+constexpr std::size_t kRestart = 32;
+
+// c_j = exp(-i pi sign j^2 / L) for j = 0 .. count - 1. From j to j + 1 the
+// phase grows by -pi sign (2 j + 1) / L, and that step by -2 pi sign / L.
+void chirps(std::int64_t twiceL, int sign, std::size_t count, std::complex<double>* out) {
+  const std::complex<double> stepRatio = std::polar(1.0, -2.0 * std::numbers::pi * sign * 2.0 / static_cast<double>(twiceL));
+  std::complex<double> c, step;
+  for (std::size_t j = 0; j < count; ++j) {
+    if (j % kRestart == 0) {
+      const auto jj = static_cast<std::int64_t>(j);
+      c = std::polar(1.0, chirpPhase(jj, twiceL, sign));
+      const std::int64_t odd = (2 * jj + 1) % twiceL;
+      step = std::polar(1.0, -std::numbers::pi * sign * 2.0 * static_cast<double>(odd) / static_cast<double>(twiceL));
+    }
+    out[j] = c;
+    c *= step;
+    step *= stepRatio;
+  }
 }
 
 }  // namespace
@@ -104,29 +130,33 @@ void fftGridPowers(std::span<const std::complex<double>> samples, double dt, std
   fftw_complex* a = work.signal.get();
   fftw_complex* h = work.filter.get();
   const auto twiceL = static_cast<std::int64_t>(2 * fftLength);
-  // The shift that puts `start` on bin 0, exp(-2 pi i sign start m dt), and
-  // the chirp c_m, as one phase.
+  work.chirp.resize(std::max(n, count));
+  const std::complex<double>* c = work.chirp.data();
+  chirps(twiceL, sign, work.chirp.size(), work.chirp.data());
+  // The shift that puts `start` on bin 0, exp(-2 pi i sign start m dt), times
+  // the chirp c_m.
   const double turn = -2.0 * std::numbers::pi * (sign > 0 ? 1.0 : -1.0) * start * dt;
-  for (std::size_t m = 0; m < length; ++m) {
-    std::complex<double> z(0.0, 0.0);
-    if (m < n)
-      z = samples[m] * std::polar(1.0, turn * static_cast<double>(m) + chirpPhase(static_cast<std::int64_t>(m), twiceL, sign));
+  const std::complex<double> turnStep = std::polar(1.0, turn);
+  std::complex<double> shift;
+  for (std::size_t m = 0; m < n; ++m) {
+    if (m % kRestart == 0) shift = std::polar(1.0, turn * static_cast<double>(m));
+    const std::complex<double> z = samples[m] * (shift * c[m]);
     a[m][0] = z.real();
     a[m][1] = z.imag();
+    shift *= turnStep;
   }
+  for (std::size_t m = n; m < length; ++m) a[m][0] = a[m][1] = 0.0;
   const FilterKey key{length, fftLength, n, count, sign};
   if (!(work.filterKey == key)) {
     // conj(c_j) at j = 0 .. count - 1 and, wrapped round, j = -(n - 1) .. -1.
     for (std::size_t m = 0; m < length; ++m) h[m][0] = h[m][1] = 0.0;
     for (std::size_t j = 0; j < count; ++j) {
-      const std::complex<double> c = std::conj(chirp(static_cast<std::int64_t>(j), twiceL, sign));
-      h[j][0] = c.real();
-      h[j][1] = c.imag();
+      h[j][0] = c[j].real();
+      h[j][1] = -c[j].imag();
     }
     for (std::size_t j = 1; j < n; ++j) {
-      const std::complex<double> c = std::conj(chirp(static_cast<std::int64_t>(j), twiceL, sign));
-      h[length - j][0] = c.real();
-      h[length - j][1] = c.imag();
+      h[length - j][0] = c[j].real();
+      h[length - j][1] = -c[j].imag();
     }
     fftw_execute_dft(planOf(length, FFTW_FORWARD), h, h);
     work.filterKey = key;

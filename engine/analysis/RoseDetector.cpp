@@ -32,17 +32,21 @@ struct Leaf {
 };
 
 struct Path {
-  std::vector<double> x, y, rho, theta;
+  std::vector<double> rho, theta;
 };
 
+// The distance from (cx, cy); the angle about it only where asked: the
+// centre's search needs the distances alone, and the angles' atan2 were
+// most of its cost (issue 32).
 Path about(const std::vector<double>& x, const std::vector<double>& y, double cx, double cy) {
-  Path p{x, y, std::vector<double>(x.size()), std::vector<double>(x.size())};
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    p.rho[i] = std::hypot(x[i] - cx, y[i] - cy);
-    p.theta[i] = std::atan2(y[i] - cy, x[i] - cx);
-  }
-  p.theta = unwrapAngles(p.theta);
+  Path p{std::vector<double>(x.size()), {}};
+  for (std::size_t i = 0; i < x.size(); ++i) p.rho[i] = std::hypot(x[i] - cx, y[i] - cy);
   return p;
+}
+void addAngles(Path& p, const std::vector<double>& x, const std::vector<double>& y, double cx, double cy) {
+  p.theta.resize(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) p.theta[i] = std::atan2(y[i] - cy, x[i] - cx);
+  p.theta = unwrapAngles(p.theta);
 }
 
 double rhoDelta(const std::vector<double>& rho, double fraction) {
@@ -106,6 +110,7 @@ Path centredPath(const std::vector<double>& sx, const std::vector<double>& sy, d
     cx = tips.centreX, cy = tips.centreY;
     path = about(sx, sy, cx, cy);
   }
+  addAngles(path, sx, sy, cx, cy);
   return path;
 }
 
@@ -178,7 +183,8 @@ RoseFeatures detectRose(std::span<const double> time, std::span<const double> x,
   out.centreX = cx, out.centreY = cy;
 
   const double rhoMedian = median(path.rho);
-  const double modulation = (quantile(path.rho, 0.95) - quantile(path.rho, 0.05)) / rhoMedian;
+  const double rhoRange = quantile(path.rho, 0.95) - quantile(path.rho, 0.05);  // rhoDelta's, taken once
+  const double modulation = rhoRange / rhoMedian;
   if (!(modulation >= def.minModulation)) {
     out.reason = "no rose: the distance from the centre varies by only " + shortNumber(100.0 * modulation) +
                  " % (a circle or a still point has no leaves; needs " + shortNumber(100.0 * def.minModulation) + " %)";
@@ -195,7 +201,7 @@ RoseFeatures detectRose(std::span<const double> time, std::span<const double> x,
     return out;
   }
 
-  const std::vector<Leaf> leaves = leavesOf(path, findExtrema(path.rho, rhoDelta(path.rho, def.hysteresis)));
+  const std::vector<Leaf> leaves = leavesOf(path, findExtrema(path.rho, def.hysteresis * rhoRange));
   double total = 0.0;
   for (const Leaf& l : leaves) total += l.angle;
   out.sense = total >= 0.0 ? 1 : -1;

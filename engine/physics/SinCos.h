@@ -139,10 +139,15 @@ struct LaneIntsOf {
 template <class T>
 inline SinCosOf<T> reducedSinCos(T x) {
   using LaneInts = typename LaneIntsOf<T>::type;
-  const T n = (x * kTwoOverPi + kRoundingShift) - kRoundingShift;
+  const T shifted = x * kTwoOverPi + kRoundingShift;
+  const T n = shifted - kRoundingShift;
   const T r = ((x - n * kPiOver2Hi) - n * kPiOver2Mid) - n * kPiOver2Lo;
   const T s = sinKernel(r), c = cosKernel(r);
-  const LaneInts quadrant = __builtin_convertvector(n, LaneInts) & 3;
+  // n mod 4 from the shifted sum's bits: its exponent puts the unit in the
+  // last mantissa bit, so the mantissa is 2^51 + n (|n| < 2^51 here), whose
+  // low two bits are n & 3. A bit cast, where converting n to integers has
+  // no vector instruction below AVX-512DQ (GCC converted lane by lane).
+  const LaneInts quadrant = __builtin_bit_cast(LaneInts, shifted) & 3;
   const LaneInts swap = (quadrant & 1) != 0;
   const T sinAbs = swap ? c : s, cosAbs = swap ? s : c;
   return {(quadrant & 2) != 0 ? -sinAbs : sinAbs, ((quadrant + 1) & 2) != 0 ? -cosAbs : cosAbs};

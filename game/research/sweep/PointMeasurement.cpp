@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "engine/physics/StateLayout.h"
 #include "game/research/sim/RoseLockstepRun.h"
@@ -84,7 +85,15 @@ class PointRecorder {
     // The face normal's vertical component is cos(u_o) cos(v_o): eq. (6)
     // with psi about the vertical (SweepTest checks it against Orientation).
     const double cosTilt = std::cos(row.state[slot::u_o]) * std::cos(row.state[slot::v_o]);
-    maxTilt_ = std::max(maxTilt_, std::acos(std::clamp(cosTilt, -1.0, 1.0)));
+    // acos only where the tilt may be a new maximum (issue 32: acos per row
+    // was ~1 % of a sweep). acos falls with slope at least 1 in magnitude,
+    // so a cosine more than 1e-9 above the least seen has an angle at least
+    // 1e-9 below that one's, far beyond acos's rounding (an ulp, ~4e-16 at
+    // pi): skipping it cannot change the maximum's bits.
+    if (cosTilt <= leastCosTilt_ + 1e-9) {
+      maxTilt_ = std::max(maxTilt_, std::acos(std::clamp(cosTilt, -1.0, 1.0)));
+      leastCosTilt_ = std::min(leastCosTilt_, cosTilt);
+    }
   }
 
   PointMeasurement finish(const task::SweepDef& def, const RunSummary& summary) const {
@@ -108,6 +117,7 @@ class PointRecorder {
  private:
   std::vector<double> time_, massX_, massY_, contactX_, contactY_, psi_;
   double maxTilt_ = 0.0;
+  double leastCosTilt_ = std::numeric_limits<double>::infinity();
 };
 
 PointMeasurement measureScenario(const task::SweepDef& def, const task::ScenarioDef& scenario,
