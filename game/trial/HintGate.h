@@ -13,7 +13,6 @@
 // gives up, but the hint is the technique (HintSmoother), not the
 // planner's plan, and never costs that work.
 
-#include <cstdint>
 #include <string>
 
 #include "engine/autopilot/Reachability.h"
