@@ -3,9 +3,9 @@
 # tutorial and the paper's task, on a mouse with and without the game's aids
 # at the visual delays 0.2 s and 0.25 s, and the paper's findings (the task
 # on a force device with M3 at alpha 2 and 4, the arm co-contracted and
-# relaxed, and by sight alone). SEEDS
-# seeds each (default 20). Prints markdown tables; takes tens of minutes
-# (an aided trial runs the autopilot beside the person for the hint).
+# relaxed, and by sight alone). SEEDS seeds each (default 20). Prints
+# markdown tables; takes some minutes (an aided trial costs about what an
+# unaided one does: HintGate, not the autopilot, gates the hint).
 #   tools/human-study.sh [SEEDS] [BUILD_DIR]
 set -euo pipefail
 cd "$(dirname "$0")/.."

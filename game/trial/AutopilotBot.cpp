@@ -38,16 +38,7 @@ script::BotAction AutopilotBot::act(const script::BotObservation& obs) {
   input_.engaged = obs.engaged;
   input_.forceShare = obs.forceShare;
   input_.stage = obs.stage;
-  autopilot::Goal& goal = input_.goal;
-  goal.target = obs.target;
-  goal.tolerance = obs.tolerance;
-  goal.set = obs.targetSet;
-  goal.omegaNormSet = obs.omegaNormSet;
-  goal.omegaNormTarget = obs.omegaNormTarget;
-  goal.omegaNormTolerance = obs.omegaNormTolerance;
-  goal.hold = obs.holdTime;
-  goal.zoneCount = std::min(obs.zoneCount, autopilot::Goal::kMaxZones);
-  for (int i = 0; i < goal.zoneCount; ++i) goal.zones[static_cast<std::size_t>(i)] = obs.zones[static_cast<std::size_t>(i)];
+  input_.goal = goalOf(obs);
   const autopilot::ProxyCommand command = autopilot_->act(input_);
   script::BotAction action;
   action.position = physics::tripleOf(command.position);
@@ -64,6 +55,20 @@ void AutopilotBot::letGoOfProxy() {
 std::string AutopilotBot::giveUpReason() const {
   if (!autopilot_ || autopilot_->failure().empty()) return {};
   return "autopilot: " + autopilot_->failure();
+}
+
+autopilot::Goal goalOf(const script::BotObservation& obs) {
+  autopilot::Goal goal;
+  goal.target = obs.target;
+  goal.tolerance = obs.tolerance;
+  goal.set = obs.targetSet;
+  goal.omegaNormSet = obs.omegaNormSet;
+  goal.omegaNormTarget = obs.omegaNormTarget;
+  goal.omegaNormTolerance = obs.omegaNormTolerance;
+  goal.hold = obs.holdTime;
+  goal.zoneCount = std::min(obs.zoneCount, autopilot::Goal::kMaxZones);
+  for (int i = 0; i < goal.zoneCount; ++i) goal.zones[static_cast<std::size_t>(i)] = obs.zones[static_cast<std::size_t>(i)];
+  return goal;
 }
 
 haptics::GuideSample guideSampleOf(AutopilotBot& autopilot, const script::BotObservation& obs) {

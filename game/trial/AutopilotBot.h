@@ -46,6 +46,9 @@ class AutopilotBot final : public script::BotPolicy {
   autopilot::AutopilotInput input_;
 };
 
+// The current stage's bands as the autopilot reads them from `obs`.
+autopilot::Goal goalOf(const script::BotObservation& obs);
+
 // The autopilot's answer to `obs` as a plan for haptic guidance (or a hint):
 // where it would put the proxy now. Not valid once it has given up.
 haptics::GuideSample guideSampleOf(AutopilotBot& autopilot, const script::BotObservation& obs);

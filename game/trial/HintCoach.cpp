@@ -1,31 +1,20 @@
 #include "game/trial/HintCoach.h"
 
-#include "engine/autopilot/Autopilot.h"
-#include "game/trial/AutopilotBot.h"
-
 namespace hemiroll::game {
 
-HintCoach::HintCoach(const HintCoachDef& def) : def_(def), smoother_(def.centreLag) {}
-HintCoach::~HintCoach() = default;
+HintCoach::HintCoach(const HintCoachDef& def) : def_(def), smoother_(def.smoother) {}
 
-void HintCoach::init(const script::BotLevelInfo& info, std::int64_t seed) {
-  AutopilotBotOptions options;
-  // Half the planning effort: the hint is a coarse cue a person follows
-  // late, and 0.5 still wins every shipped level (0.25 loses tutorial 02).
-  options.budget = 0.5;
-  options.holdsProxy = false;  // the person holds the proxy; the plan is a hint
-  autopilot_ = std::make_unique<AutopilotBot>(options);
-  autopilot_->init(info, seed);
+void HintCoach::init(const script::BotLevelInfo& info, std::int64_t /*seed*/) {
+  gate_.init(info);
   dt_ = info.dt;
   smoother_.reset(info.params.radius);
 }
 
-std::string HintCoach::giveUpReason() const { return autopilot_ ? autopilot_->giveUpReason() : std::string(); }
+std::string HintCoach::giveUpReason() const { return gate_.reason(); }
 
 human::HintCue HintCoach::hint(const script::BotObservation& obs) {
-  if (!autopilot_ || !autopilot_->giveUpReason().empty()) return {};
-  autopilot_->act(obs);
-  return smoother_.cue(*autopilot_, obs, dt_);
+  const bool planned = gate_.open(obs);
+  return smoother_.cue(obs, dt_, planned);
 }
 
 }  // namespace hemiroll::game

@@ -98,6 +98,24 @@ TEST(HumanBot, WithTheAidsItTracesTheHintsRingAndWinsTutorialFive) {
   EXPECT_GT(bot.model()->stats().hintCorrections, 10);
 }
 
+// The hint drawn ahead (HintSmoother) wins the paper's task for a person a
+// quarter second late: measured 20 of 20 on seeds 1-20 and 19 of 20 on
+// 21-40 (docs/HUMAN_MODEL.md); drawn for now, with its centre low-passed
+// over a second, it won seeds 1-5 only 3 times.
+TEST(HumanBot, WithTheAidsItWinsThePapersTaskAQuarterSecondLate) {
+  HumanBotOptions options;
+  options.aids = true;
+  options.human.visualDelay = 0.25;
+  int won = 0;
+  std::string lost;
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    const TrialResult r = play("paper_reaching.lua", seed, options);
+    if (r.outcome == TrialOutcome::Success) ++won;
+    else lost += " seed " + std::to_string(seed) + ": " + r.reason + ";";
+  }
+  EXPECT_GE(won, 4) << lost;
+}
+
 TEST(HumanBot, TheSameSeedPlaysTheSameTrialAndAnotherSeedAnother) {
   const TrialResult a = play("tutorial_01_tilt_and_return.lua", 3);
   const TrialResult b = play("tutorial_01_tilt_and_return.lua", 3);

@@ -1,0 +1,34 @@
+#include "game/trial/HintGate.h"
+
+#include "engine/physics/StateKinematics.h"
+#include "engine/script/ScriptError.h"
+#include "game/trial/AutopilotBot.h"
+
+namespace hemiroll::game {
+
+void HintGate::init(const script::BotLevelInfo& info) {
+  if (info.coupling.visualOnly)
+    throw script::ScriptError("autopilot: a visual-only coupling hides the method that drives the model");
+  params_ = info.params;
+  workspace_.centre = physics::vec3Of(info.workspaceCentre);
+  workspace_.radius = info.workspaceRadius;
+  planned_ = false;
+  reason_.clear();
+}
+
+bool HintGate::open(const script::BotObservation& obs) {
+  if (!reason_.empty()) return false;
+  // As Autopilot::takeGoal checks it: the heading comes after the rest of
+  // the stage, so it rules nothing out.
+  autopilot::Goal goal = goalOf(obs);
+  goal.set[11] = false;
+  reason_ = autopilot::unreachableReason(goal, params_, workspace_);
+  if (!reason_.empty()) {
+    reason_ = "autopilot: " + reason_;
+    return false;
+  }
+  planned_ = planned_ || obs.engaged;
+  return planned_;
+}
+
+}  // namespace hemiroll::game
