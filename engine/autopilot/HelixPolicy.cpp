@@ -58,6 +58,7 @@ void HelixPolicy::land(double landRate, double despinGain, const LandingShape& s
   shape_ = shape;
   landingTime_ = 0.0;
   regulating_ = false;
+  brakeLeft_ = 0.0;
   // A circle that never started has nothing to fade: settle at once, without
   // the steering offset's step (a kick a light mass point feels).
   if (phase_ == HelixPhase::Travel && radius_ <= 0.0) {
@@ -67,8 +68,16 @@ void HelixPolicy::land(double landRate, double despinGain, const LandingShape& s
   phase_ = HelixPhase::Land;
 }
 
+void HelixPolicy::brake(double amplitude, double rate, double lock) {
+  travel();
+  brakeAmplitude_ = amplitude;
+  brakeRate_ = rate;
+  brakeLeft_ = lock;
+}
+
 void HelixPolicy::travel() {
   phase_ = HelixPhase::Travel;
+  brakeLeft_ = 0.0;
   regulating_ = false;
   detourZone_ = -1;
   shape_ = {};
@@ -82,6 +91,7 @@ void HelixPolicy::reshape(const LandingShape& shape) {
 
 void HelixPolicy::settleNow() {
   phase_ = HelixPhase::Settle;
+  brakeLeft_ = 0.0;
   shape_ = {};
   landingTime_ = 0.0;
   radius_ = 0.0;
@@ -226,24 +236,33 @@ Vec3 HelixPolicy::proxyFor(const physics::ForceDrivenState& x) {
     proxy = last_ + step;
   } else {
     Vec2 error = Vec2::Zero();
-    if (goal_.contactSet()) {
+    const bool braking = brakeLeft_ > 0.0;
+    if (goal_.contactSet() && !braking) {
       error = contactTarget() - up.point;
       if (!goal_.set[7]) error.x() = 0.0;
       if (!goal_.set[8]) error.y() = 0.0;
     }
     const Vec2 steer = physics::limitedTo(params_.steerGain * physics::turnedBy(error, params_.steerAngle), params_.steerLimit);
     const bool circling = phase_ == HelixPhase::Travel;
-    const double rate = circling ? params_.amplitude : params_.landRate;  // [m/s] of radius change
-    const double want = circling ? params_.amplitude : 0.0;
+    const double amplitude = braking ? brakeAmplitude_ : params_.amplitude;
+    const double pace = braking ? brakeRate_ : params_.rate;
+    const double rate = circling ? amplitude : params_.landRate;  // [m/s] of radius change
+    const double want = circling ? amplitude : 0.0;
     radius_ += std::clamp(want - radius_, -rate * dt_, rate * dt_);
-    phaseAngle_ = std::remainder(phaseAngle_ + params_.rate * dt_, 2.0 * M_PI);
+    phaseAngle_ = std::remainder(phaseAngle_ + pace * dt_, 2.0 * M_PI);
     proxy = Vec3(x[u_a] + steer.x() + radius_ * std::cos(phaseAngle_),
                  x[v_a] + steer.y() + radius_ * std::sin(phaseAngle_), R);
 
     motion_.centre = Vec2(x[u_a] + steer.x(), x[v_a] + steer.y());
     motion_.radius = radius_;
-    motion_.rate = params_.rate;
+    motion_.rate = pace;
     if (phase_ == HelixPhase::Land && radius_ <= 0.0) phase_ = HelixPhase::Settle;
+    // The brake stops dead: the spin it leaves is the stop's (SpinBrake.h).
+    if (braking && (brakeLeft_ -= dt_) <= 0.0) {
+      brakeLeft_ = 0.0;
+      radius_ = 0.0;
+      phase_ = HelixPhase::Settle;
+    }
   }
   // last_ keeps the path; the landing shape rides on it.
   last_ = proxy;

@@ -96,6 +96,11 @@ class HelixPolicy {
   void startAt(const physics::Vec3& proxy);
   void land(double landRate, double despinGain = 0.0, const LandingShape& shape = {});
   void travel();
+  // The spin brake (SpinBrake.h): circle the contact at `amplitude` and
+  // `rate` (the sign is the sense) with no steering for `lock` seconds, then
+  // stop dead and settle.
+  void brake(double amplitude, double rate, double lock);
+  bool braking() const { return brakeLeft_ > 0.0; }
   // A new landing shape from now on, the phase unchanged (a landing corrected
   // on its way).
   void reshape(const LandingShape& shape);
@@ -103,6 +108,7 @@ class HelixPolicy {
   // Settle with the regulator (SettleRegulator.h) where it has a gain:
   // the proxy is moved to hold the rest rather than glided over it.
   void setSettleGain(const SettleGain& gain) { settleGain_ = gain; }
+  const SettleGain& settleGain() const { return settleGain_; }
   // Only where the proxy is the autopilot's own: under guidance or a hint
   // another hand holds it, and the regulator's model is not the plant.
   void enableRegulator(bool on) { regulatorOn_ = on; }
@@ -146,6 +152,8 @@ class HelixPolicy {
   LandingShape shape_;
   double despinAngle_ = 0.0;
   double landingTime_ = 0.0;  // since landing started [s]
+  double brakeLeft_ = 0.0;    // the brake's circling still to go (0: not braking) [s]
+  double brakeAmplitude_ = 0.0, brakeRate_ = 0.0;
   int detourZone_ = -1;       // the zone being passed (-1: none)
   physics::Vec2 waypoint_ = physics::Vec2::Zero();
   HelixMotion motion_;
