@@ -178,6 +178,7 @@ bool Autopilot::takeGoal(const AutopilotInput& input) {
   turningPsi_ = false;
   goal_.set[11] = false;
   policy_.setGoal(goal_);
+  policy_.regulateLean(!given_.set[11]);
   failure_ = unreachableReason(goal_, def_.params, def_.workspace);
   if (!failure_.empty()) return false;
   if (goal_.contactSet())

@@ -204,7 +204,18 @@ Vec3 HelixPolicy::proxyFor(const physics::ForceDrivenState& x) {
   const double R = constants_->params.radius;
   const UprightContact up = uprightContact(*constants_, x);
   Vec3 proxy;
-  if (phase_ == HelixPhase::Settle && leansOnly()) {
+  const bool mayRegulate = phase_ == HelixPhase::Settle && settleGain_.valid && regulatorOn_ && goal_.zoneCount == 0 &&
+                           (regulating_ || nearRest(x, up.tilt));
+  if (mayRegulate && regulateLean_ && leansOnly()) {
+    // A lean asked for: the regulator holds the rest at that lean (on the
+    // paper's light shell the glide below left the hemisphere rocking at
+    // 0.1-0.15 rad/s round upright, outside an |omega| band of 0.02).
+    using namespace physics::force_slot;
+    const Vec2 want(goal_.set[u_o] ? -goal_.target[u_o] : -x[u_o], goal_.set[v_o] ? goal_.target[v_o] : x[v_o]);
+    const double t = std::min(want.norm(), 1.2);
+    const Vec2 lean = t > 1e-12 ? Vec2(std::sin(t) / want.norm() * want) : Vec2::Zero();
+    proxy = regulatedSettle(x, lean, up.point + R * t * (t > 1e-12 ? Vec2(want / want.norm()) : Vec2::Zero()));
+  } else if (phase_ == HelixPhase::Settle && leansOnly()) {
     // Glide to the lean's goal at the settle's speed, as below.
     const Vec3 goal = leanGoal(x);
     motion_.goal = goal.head<2>();
@@ -212,9 +223,11 @@ Vec3 HelixPolicy::proxyFor(const physics::ForceDrivenState& x) {
     const double most = params_.glideSpeed * dt_;
     if (step.norm() > most) step *= most / step.norm();
     proxy = last_ + step;
-  } else if (phase_ == HelixPhase::Settle && settleGain_.valid && regulatorOn_ && goal_.zoneCount == 0 &&
-             (regulating_ || nearRest(x, up.tilt))) {
-    proxy = regulatedSettle(x, up.point, landingPoint(up.point));
+  } else if (mayRegulate && !leansOnly()) {
+    const Vec2 land = landingPoint(up.point);
+    const Vec2 away = land - up.point;
+    const double tilt = away.norm() / R;
+    proxy = regulatedSettle(x, tilt > 1e-12 ? Vec2(std::sin(tilt) / away.norm() * away) : Vec2::Zero(), land);
   } else if (phase_ == HelixPhase::Settle) {
     regulating_ = false;
     const Vec2 land = detour(Vec2(x[u_a], x[v_a]), landingPoint(up.point));
@@ -288,18 +301,15 @@ bool HelixPolicy::nearRest(const physics::ForceDrivenState& x, double tilt) cons
   return tilt < kRegulateTilt && std::hypot(x[w_x], x[w_y]) < kRegulateRocking;
 }
 
-Vec3 HelixPolicy::regulatedSettle(const physics::ForceDrivenState& x, const Vec2& upright, const Vec2& land) {
+Vec3 HelixPolicy::regulatedSettle(const physics::ForceDrivenState& x, const Vec2& lean, const Vec2& goal) {
   // The regulator's path starts where the proxy is (less what rides on it).
   if (!regulating_) {
     last_ = given_ - added_;
     regulating_ = true;
   }
-  const Vec2 away = land - upright;
-  const double tilt = away.norm() / constants_->params.radius;
-  const Vec2 lean = tilt > 1e-12 ? Vec2(std::sin(tilt) / away.norm() * away) : Vec2::Zero();
   // At most the planner's proxy speed (Autopilot's deliverable()).
   const Vec2 step = settleStep(settleGain_, *constants_, x, given_.head<2>(), lean, kRegulatedSpeed * dt_);
-  motion_.goal = land;
+  motion_.goal = goal;
   return {last_.x() + step.x(), last_.y() + step.y(), settleGain_.proxyHeight};
 }
 

@@ -112,6 +112,11 @@ class HelixPolicy {
   // Only where the proxy is the autopilot's own: under guidance or a hint
   // another hand holds it, and the regulator's model is not the plant.
   void enableRegulator(bool on) { regulatorOn_ = on; }
+  // Whether a stage that asks for a lean (and no contact point) is held
+  // there by the regulator, or glided to as before (Autopilot: not in a
+  // stage with a psi band, where it made the generated tasks' second stages
+  // 1-7 s slower).
+  void regulateLean(bool on) { regulateLean_ = on; }
 
   // The proxy for the next tick, from the state after the last one.
   physics::Vec3 proxyFor(const physics::ForceDrivenState& x);
@@ -136,9 +141,11 @@ class HelixPolicy {
   bool leansOnly() const;
   physics::Vec3 leanGoal(const physics::ForceDrivenState& x);
   bool nearRest(const physics::ForceDrivenState& x, double tilt) const;
-  // The regulated settle: the rest leaning from c_up to the landing point.
-  physics::Vec3 regulatedSettle(const physics::ForceDrivenState& x, const physics::Vec2& upright,
-                                const physics::Vec2& land);
+  // The regulated settle: the rest with horizontal face normal `lean`
+  // (from c_up to the landing point, or the lean a stage asks for); `goal`
+  // is what the hint shows.
+  physics::Vec3 regulatedSettle(const physics::ForceDrivenState& x, const physics::Vec2& lean,
+                                const physics::Vec2& goal);
 
   const physics::ModelConstants* constants_;
   HelixParams params_;
@@ -162,6 +169,7 @@ class HelixPolicy {
   physics::Vec3 added_ = physics::Vec3::Zero();  // what the despin circle and the shape added to it
   bool regulating_ = false;                      // the regulator has the proxy (its path starts at given_)
   bool regulatorOn_ = true;
+  bool regulateLean_ = true;
 };
 
 }  // namespace hemiroll::autopilot
