@@ -113,9 +113,8 @@ class HelixPolicy {
   // another hand holds it, and the regulator's model is not the plant.
   void enableRegulator(bool on) { regulatorOn_ = on; }
   // Whether a stage that asks for a lean (and no contact point) is held
-  // there by the regulator, or glided to as before (Autopilot: not in a
-  // stage with a psi band, where it made the generated tasks' second stages
-  // 1-7 s slower).
+  // there by the regulator, or glided to as before (Autopilot.cpp, takeGoal:
+  // not in a stage with a psi band and no hold).
   void regulateLean(bool on) { regulateLean_ = on; }
 
   // The proxy for the next tick, from the state after the last one.
