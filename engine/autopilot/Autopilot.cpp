@@ -64,7 +64,8 @@ Autopilot::Autopilot(const AutopilotDef& def)
   policy_.enableRegulator(def_.handStiffens);
   work_ = policy_;
   stats_.decisionWall.reserve(4096);
-  if (def_.plannerThread) worker_ = std::make_unique<PlannerWorker>([this](const PlanJob& j) { return plan(j); });
+  if (def_.plannerThread)
+    worker_ = std::make_unique<PlannerWorker>([this](const PlanJob& j) { return plan(j); }, def_.plannerNice);
 }
 
 Autopilot::~Autopilot() = default;
@@ -177,6 +178,12 @@ bool Autopilot::takeGoal(const AutopilotInput& input) {
   turningPsi_ = false;
   goal_.set[11] = false;
   policy_.setGoal(goal_);
+  // A stage with a psi band that is only passed through (no hold) glides to
+  // its lean: faster (the generated tasks' second stages: regulated, 1-7 s
+  // slower on 9 of 10 seeds). One that must stay there (a hold) needs the
+  // regulator (two such tasks at the paper's bands: won in 15 and 27 s,
+  // gliding not in 120 s).
+  policy_.regulateLean(!given_.set[11] || given_.hold > 0.0);
   failure_ = unreachableReason(goal_, def_.params, def_.workspace);
   if (!failure_.empty()) return false;
   if (goal_.contactSet())
@@ -201,14 +208,23 @@ void Autopilot::startTurningPsi(double time) {
 
 void Autopilot::exchangeWithWorker(const AutopilotInput& input) {
   Decision ready;
-  if (!pending_ && worker_->take(ready) && ready.generation == generation_) {
-    pending_ = ready;
-    refineNext_ = refineNext_ || ready.wantsRefinement;
+  if (!pending_ && worker_->take(ready)) {
+    if (ready.generation == generation_) {
+      pending_ = ready;
+      refineNext_ = refineNext_ || ready.wantsRefinement;
+    } else {
+      stale_.fetch_add(1, std::memory_order_relaxed);
+    }
   }
   if (pending_ && input.time >= pending_->applyAt - 0.5 * def_.dt) {
     // Applied at the moment it was planned for; one that came too late
     // (the plan took longer than its lead) is dropped.
-    if (input.time - pending_->applyAt <= 0.005) apply(*pending_);
+    if (input.time - pending_->applyAt <= 0.005) {
+      apply(*pending_);
+      applied_.fetch_add(1, std::memory_order_relaxed);
+    } else {
+      late_.fetch_add(1, std::memory_order_relaxed);
+    }
     pending_.reset();
   }
   if (!pending_ && input.time >= nextDecision_ - 1e-9) {
@@ -262,6 +278,8 @@ void Autopilot::apply(const Decision& d) {
     policy_.travel();
   else if (d.action == Decision::Action::Reshape && policy_.phase() != HelixPhase::Travel)
     policy_.reshape(d.shape);
+  else if (d.action == Decision::Action::Brake && policy_.phase() == HelixPhase::Settle)
+    startBrake(policy_, d.brake);
 }
 
 Autopilot::Decision Autopilot::plan(const PlanJob& job) {
@@ -285,7 +303,9 @@ Autopilot::Decision Autopilot::plan(const PlanJob& job) {
   if (job.resetTimers) lastSteer_ = -1e9;
   if (job.holdSteer) lastSteer_ = input.time;
   ++stats_.decisions;
-  if (work_.phase() == HelixPhase::Travel) {
+  if (work_.braking()) {
+    // The brake runs its course (seconds); the settle after it is verified.
+  } else if (work_.phase() == HelixPhase::Travel) {
     if (input.time - lastSteer_ >= def_.steerPeriod - 1e-9) steer(input);
     tryLanding(input);
   } else {
@@ -614,12 +634,42 @@ void Autopilot::verifyLanding(const AutopilotInput& input) {
     return;
   }
   // Still near: the landing drifted from its plan (a small shove, or real
-  // time's hand-over). Search a new shape for the rest of it, from here.
+  // time's hand-over). At rest with only the spin left, the brake takes it
+  // out; else search a new shape for the rest of the landing, from here.
   const bool atRest = planGoal_.set[4] || planGoal_.set[5] || planGoal_.set[6] || planGoal_.omegaNormSet;
+  if (atRest && tryBrake(input)) return;
   if (atRest && input.time >= nextRefinement_ && mayRefine()) {
     nextRefinement_ = input.time + def_.refineRetryPeriod;
     refineLanding(input, def_.landHorizon, true);
   }
+}
+
+bool Autopilot::tryBrake(const AutopilotInput& input) {
+  using namespace physics::force_slot;
+  if (!def_.spinBrake || !def_.handStiffens || work_.phase() != HelixPhase::Settle) return false;
+  // The spin the rest keeps is w_z only near rest (SpinBrake.h); the
+  // regulator's own gate (HelixPolicy.cpp) says what near is.
+  const double tilt = uprightContact(constants_, input.state).tilt;
+  if (tilt > 0.1 || std::hypot(input.state[w_x], input.state[w_y]) > 0.2) return false;
+  const double band = planGoal_.set[w_z] ? planGoal_.tolerance[w_z] : planGoal_.omegaNormSet ? planGoal_.omegaNormTolerance : 0.0;
+  const double spin = input.state[w_z] - (planGoal_.set[w_z] ? planGoal_.target[w_z] : 0.0);
+  if (band <= 0.0 || std::abs(spin) < 0.5 * band) return false;
+  if (!brakeTable_) {
+    const SpinBrakeDef def;
+    brakeTable_ = spinBrakeTableFor(def_.params, def_.coupling, work_.params(), work_.settleGain(), def_.dt, def);
+    // Its rollouts count towards planning's budget like any other.
+    plannedTicks_.fetch_add(std::llround((brakeTable_->rows + 1) * (def.lock + def.settle) / def_.dt),
+                            std::memory_order_relaxed);
+  }
+  const SpinBrakeCommand command = spinBrakeFor(*brakeTable_, spin);
+  if (!command.valid) return false;
+  HelixPolicy braked = work_;
+  startBrake(braked, command);
+  if (!rollout(braked, input, command.lock + def_.landHorizon, true).success) return false;
+  work_ = braked;
+  decision_.action = Decision::Action::Brake;
+  decision_.brake = command;
+  return true;
 }
 
 }  // namespace hemiroll::autopilot

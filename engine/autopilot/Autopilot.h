@@ -45,6 +45,7 @@
 #include "engine/autopilot/Goal.h"
 #include "engine/autopilot/HelixPolicy.h"
 #include "engine/autopilot/PlantModel.h"
+#include "engine/autopilot/SpinBrake.h"
 #include "engine/autopilot/Reachability.h"
 
 namespace hemiroll::physics {
@@ -88,6 +89,16 @@ struct AutopilotDef {
   // planLead: in real time a plan that wants one asks for it, and the next
   // plan is made this far ahead and given 80 % of it to search.
   double refineLead = 1.5;  // [s]
+  // The planning thread's nice value (Linux). 19 yields to everything, the
+  // servo thread under the normal scheduler included, where a device that
+  // renders force is stopped by a tick 20 ms late. But then any other
+  // program at the normal priority starves the planner (a nice-19 thread
+  // gets 15/1039 of a core it shares with one): watched in the window with
+  // one core kept busy, a quarter to half of its plans came back late and
+  // were dropped, and the hemisphere hovered on its target (AUTOPILOT.md,
+  // "Real time"). So where its own hand renders no force (watching, whose
+  // late ticks are ridden out) the companion plans at 0.
+  int plannerNice = 19;
   // The autopilot holds the proxy itself, so its hand may stiffen or soften
   // the coupling (HelixParams::stiffen, stiffeningFor). Off where another
   // hand holds the proxy and the plan is only a guide or a hint.
@@ -95,6 +106,10 @@ struct AutopilotDef {
   // Settle with the regulator (SettleRegulator.h): it comes to rest and
   // stays. Off: the glide of before, which passes through tight bands.
   bool regulatedSettle = true;
+  // Take a rest's spin out with the brake (SpinBrake.h) when a landing has
+  // come to rest on its target with only the spin out of its band, instead
+  // of searching landing shapes for what is left of the landing.
+  bool spinBrake = true;
   // Planning's work per trial (issue 33): at most budget x
   // (planningRolloutSeconds + planningRolloutSecondsPerSimulatedSecond x the
   // simulated time since the first act), counted in seconds the planner's
@@ -125,6 +140,14 @@ struct AutopilotInput {
 struct ProxyCommand {
   physics::Vec3 position = physics::Vec3::Zero();  // scene [m]
   physics::Vec3 velocity = physics::Vec3::Zero();  // scene [m/s]
+};
+
+// Real-time plans (AutopilotDef::plannerThread) and what became of them:
+// applied at their moment, or dropped because they came back after it (the
+// planning thread starved or the plan too long for its lead) or were made
+// for a goal since replaced. Any thread may read them.
+struct RealTimePlanCounts {
+  std::uint64_t applied = 0, late = 0, stale = 0;
 };
 
 // What the planner did, for the issue note and the benchmark.
@@ -158,6 +181,10 @@ class Autopilot {
   const std::string& failure() const { return failure_; }
   // Read it only while no plan is running (headless, or after the trial).
   const PlannerStats& stats() const { return stats_; }
+  RealTimePlanCounts realTimePlans() const {
+    return {applied_.load(std::memory_order_relaxed), late_.load(std::memory_order_relaxed),
+            stale_.load(std::memory_order_relaxed)};
+  }
   // The running law as of the last act (act's thread).
   const HelixPolicy& policy() const { return policy_; }
   // Whether the autopilot's own hand holds the proxy from now on
@@ -166,12 +193,13 @@ class Autopilot {
 
   // What one plan decides, applied to the running policy.
   struct Decision {
-    enum class Action { None, Land, Travel, Reshape };
+    enum class Action { None, Land, Travel, Reshape, Brake };
     bool steer = false;
     double steerAngle = 0.0, amplitude = 0.0;
     Action action = Action::None;
     double landRate = 0.0, despin = 0.0;
     LandingShape shape;
+    SpinBrakeCommand brake;        // Action::Brake
     std::uint64_t generation = 0;  // the goal it was made for
     double applyAt = 0.0;          // the time of the state it was made for [s]
     // Real time: a landing-shape search is due but this plan had no time
@@ -226,6 +254,9 @@ class Autopilot {
   // settling already) instead of starting a landing.
   bool refineLanding(const AutopilotInput& input, double horizon, bool reshape);
   void verifyLanding(const AutopilotInput& input);
+  // At rest on the target with only the spin out of its band: the brake
+  // that takes it out, if a rollout says the bands then hold.
+  bool tryBrake(const AutopilotInput& input);
   // False (and the decision asks for time) when this plan may not search.
   bool mayRefine();
   // Each policy rolled out through the model from input, all together in
@@ -279,6 +310,7 @@ class Autopilot {
   double lastSteer_ = -1e9;
   double nextLandingTry_ = 0.0;  // [s]
   std::uint64_t refinements_ = 0;
+  std::optional<SpinBrakeTable> brakeTable_;  // the planner's: made at the first brake considered
   double nextRefinement_ = 0.0;  // [s]
   physics::Vec3 lastProxy_ = physics::Vec3::Zero();
   std::string failure_;
@@ -291,6 +323,7 @@ class Autopilot {
   bool refineNext_ = false;  // act's side: the next real-time plan gets refineLead
   std::unique_ptr<PlannerWorker> worker_;
   std::optional<Decision> pending_;  // a real-time decision waiting for its moment
+  std::atomic<std::uint64_t> applied_{0}, late_{0}, stale_{0};  // RealTimePlanCounts
 };
 
 }  // namespace hemiroll::autopilot

@@ -58,6 +58,7 @@ void HelixPolicy::land(double landRate, double despinGain, const LandingShape& s
   shape_ = shape;
   landingTime_ = 0.0;
   regulating_ = false;
+  brakeLeft_ = 0.0;
   // A circle that never started has nothing to fade: settle at once, without
   // the steering offset's step (a kick a light mass point feels).
   if (phase_ == HelixPhase::Travel && radius_ <= 0.0) {
@@ -67,8 +68,16 @@ void HelixPolicy::land(double landRate, double despinGain, const LandingShape& s
   phase_ = HelixPhase::Land;
 }
 
+void HelixPolicy::brake(double amplitude, double rate, double lock) {
+  travel();
+  brakeAmplitude_ = amplitude;
+  brakeRate_ = rate;
+  brakeLeft_ = lock;
+}
+
 void HelixPolicy::travel() {
   phase_ = HelixPhase::Travel;
+  brakeLeft_ = 0.0;
   regulating_ = false;
   detourZone_ = -1;
   shape_ = {};
@@ -82,6 +91,7 @@ void HelixPolicy::reshape(const LandingShape& shape) {
 
 void HelixPolicy::settleNow() {
   phase_ = HelixPhase::Settle;
+  brakeLeft_ = 0.0;
   shape_ = {};
   landingTime_ = 0.0;
   radius_ = 0.0;
@@ -194,7 +204,18 @@ Vec3 HelixPolicy::proxyFor(const physics::ForceDrivenState& x) {
   const double R = constants_->params.radius;
   const UprightContact up = uprightContact(*constants_, x);
   Vec3 proxy;
-  if (phase_ == HelixPhase::Settle && leansOnly()) {
+  const bool mayRegulate = phase_ == HelixPhase::Settle && settleGain_.valid && regulatorOn_ && goal_.zoneCount == 0 &&
+                           (regulating_ || nearRest(x, up.tilt));
+  if (mayRegulate && regulateLean_ && leansOnly()) {
+    // A lean asked for: the regulator holds the rest at that lean (on the
+    // paper's light shell the glide below left the hemisphere rocking at
+    // 0.1-0.15 rad/s round upright, outside an |omega| band of 0.02).
+    using namespace physics::force_slot;
+    const Vec2 want(goal_.set[u_o] ? -goal_.target[u_o] : -x[u_o], goal_.set[v_o] ? goal_.target[v_o] : x[v_o]);
+    const double t = std::min(want.norm(), 1.2);
+    const Vec2 lean = t > 1e-12 ? Vec2(std::sin(t) / want.norm() * want) : Vec2::Zero();
+    proxy = regulatedSettle(x, lean, up.point + R * t * (t > 1e-12 ? Vec2(want / want.norm()) : Vec2::Zero()));
+  } else if (phase_ == HelixPhase::Settle && leansOnly()) {
     // Glide to the lean's goal at the settle's speed, as below.
     const Vec3 goal = leanGoal(x);
     motion_.goal = goal.head<2>();
@@ -202,9 +223,11 @@ Vec3 HelixPolicy::proxyFor(const physics::ForceDrivenState& x) {
     const double most = params_.glideSpeed * dt_;
     if (step.norm() > most) step *= most / step.norm();
     proxy = last_ + step;
-  } else if (phase_ == HelixPhase::Settle && settleGain_.valid && regulatorOn_ && goal_.zoneCount == 0 &&
-             (regulating_ || nearRest(x, up.tilt))) {
-    proxy = regulatedSettle(x, up.point, landingPoint(up.point));
+  } else if (mayRegulate && !leansOnly()) {
+    const Vec2 land = landingPoint(up.point);
+    const Vec2 away = land - up.point;
+    const double tilt = away.norm() / R;
+    proxy = regulatedSettle(x, tilt > 1e-12 ? Vec2(std::sin(tilt) / away.norm() * away) : Vec2::Zero(), land);
   } else if (phase_ == HelixPhase::Settle) {
     regulating_ = false;
     const Vec2 land = detour(Vec2(x[u_a], x[v_a]), landingPoint(up.point));
@@ -226,24 +249,33 @@ Vec3 HelixPolicy::proxyFor(const physics::ForceDrivenState& x) {
     proxy = last_ + step;
   } else {
     Vec2 error = Vec2::Zero();
-    if (goal_.contactSet()) {
+    const bool braking = brakeLeft_ > 0.0;
+    if (goal_.contactSet() && !braking) {
       error = contactTarget() - up.point;
       if (!goal_.set[7]) error.x() = 0.0;
       if (!goal_.set[8]) error.y() = 0.0;
     }
     const Vec2 steer = physics::limitedTo(params_.steerGain * physics::turnedBy(error, params_.steerAngle), params_.steerLimit);
     const bool circling = phase_ == HelixPhase::Travel;
-    const double rate = circling ? params_.amplitude : params_.landRate;  // [m/s] of radius change
-    const double want = circling ? params_.amplitude : 0.0;
+    const double amplitude = braking ? brakeAmplitude_ : params_.amplitude;
+    const double pace = braking ? brakeRate_ : params_.rate;
+    const double rate = circling ? amplitude : params_.landRate;  // [m/s] of radius change
+    const double want = circling ? amplitude : 0.0;
     radius_ += std::clamp(want - radius_, -rate * dt_, rate * dt_);
-    phaseAngle_ = std::remainder(phaseAngle_ + params_.rate * dt_, 2.0 * M_PI);
+    phaseAngle_ = std::remainder(phaseAngle_ + pace * dt_, 2.0 * M_PI);
     proxy = Vec3(x[u_a] + steer.x() + radius_ * std::cos(phaseAngle_),
                  x[v_a] + steer.y() + radius_ * std::sin(phaseAngle_), R);
 
     motion_.centre = Vec2(x[u_a] + steer.x(), x[v_a] + steer.y());
     motion_.radius = radius_;
-    motion_.rate = params_.rate;
+    motion_.rate = pace;
     if (phase_ == HelixPhase::Land && radius_ <= 0.0) phase_ = HelixPhase::Settle;
+    // The brake stops dead: the spin it leaves is the stop's (SpinBrake.h).
+    if (braking && (brakeLeft_ -= dt_) <= 0.0) {
+      brakeLeft_ = 0.0;
+      radius_ = 0.0;
+      phase_ = HelixPhase::Settle;
+    }
   }
   // last_ keeps the path; the landing shape rides on it.
   last_ = proxy;
@@ -269,18 +301,15 @@ bool HelixPolicy::nearRest(const physics::ForceDrivenState& x, double tilt) cons
   return tilt < kRegulateTilt && std::hypot(x[w_x], x[w_y]) < kRegulateRocking;
 }
 
-Vec3 HelixPolicy::regulatedSettle(const physics::ForceDrivenState& x, const Vec2& upright, const Vec2& land) {
+Vec3 HelixPolicy::regulatedSettle(const physics::ForceDrivenState& x, const Vec2& lean, const Vec2& goal) {
   // The regulator's path starts where the proxy is (less what rides on it).
   if (!regulating_) {
     last_ = given_ - added_;
     regulating_ = true;
   }
-  const Vec2 away = land - upright;
-  const double tilt = away.norm() / constants_->params.radius;
-  const Vec2 lean = tilt > 1e-12 ? Vec2(std::sin(tilt) / away.norm() * away) : Vec2::Zero();
   // At most the planner's proxy speed (Autopilot's deliverable()).
   const Vec2 step = settleStep(settleGain_, *constants_, x, given_.head<2>(), lean, kRegulatedSpeed * dt_);
-  motion_.goal = land;
+  motion_.goal = goal;
   return {last_.x() + step.x(), last_.y() + step.y(), settleGain_.proxyHeight};
 }
 

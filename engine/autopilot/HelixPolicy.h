@@ -96,6 +96,11 @@ class HelixPolicy {
   void startAt(const physics::Vec3& proxy);
   void land(double landRate, double despinGain = 0.0, const LandingShape& shape = {});
   void travel();
+  // The spin brake (SpinBrake.h): circle the contact at `amplitude` and
+  // `rate` (the sign is the sense) with no steering for `lock` seconds, then
+  // stop dead and settle.
+  void brake(double amplitude, double rate, double lock);
+  bool braking() const { return brakeLeft_ > 0.0; }
   // A new landing shape from now on, the phase unchanged (a landing corrected
   // on its way).
   void reshape(const LandingShape& shape);
@@ -103,9 +108,14 @@ class HelixPolicy {
   // Settle with the regulator (SettleRegulator.h) where it has a gain:
   // the proxy is moved to hold the rest rather than glided over it.
   void setSettleGain(const SettleGain& gain) { settleGain_ = gain; }
+  const SettleGain& settleGain() const { return settleGain_; }
   // Only where the proxy is the autopilot's own: under guidance or a hint
   // another hand holds it, and the regulator's model is not the plant.
   void enableRegulator(bool on) { regulatorOn_ = on; }
+  // Whether a stage that asks for a lean (and no contact point) is held
+  // there by the regulator, or glided to as before (Autopilot.cpp, takeGoal:
+  // not in a stage with a psi band and no hold).
+  void regulateLean(bool on) { regulateLean_ = on; }
 
   // The proxy for the next tick, from the state after the last one.
   physics::Vec3 proxyFor(const physics::ForceDrivenState& x);
@@ -130,9 +140,11 @@ class HelixPolicy {
   bool leansOnly() const;
   physics::Vec3 leanGoal(const physics::ForceDrivenState& x);
   bool nearRest(const physics::ForceDrivenState& x, double tilt) const;
-  // The regulated settle: the rest leaning from c_up to the landing point.
-  physics::Vec3 regulatedSettle(const physics::ForceDrivenState& x, const physics::Vec2& upright,
-                                const physics::Vec2& land);
+  // The regulated settle: the rest with horizontal face normal `lean`
+  // (from c_up to the landing point, or the lean a stage asks for); `goal`
+  // is what the hint shows.
+  physics::Vec3 regulatedSettle(const physics::ForceDrivenState& x, const physics::Vec2& lean,
+                                const physics::Vec2& goal);
 
   const physics::ModelConstants* constants_;
   HelixParams params_;
@@ -146,6 +158,8 @@ class HelixPolicy {
   LandingShape shape_;
   double despinAngle_ = 0.0;
   double landingTime_ = 0.0;  // since landing started [s]
+  double brakeLeft_ = 0.0;    // the brake's circling still to go (0: not braking) [s]
+  double brakeAmplitude_ = 0.0, brakeRate_ = 0.0;
   int detourZone_ = -1;       // the zone being passed (-1: none)
   physics::Vec2 waypoint_ = physics::Vec2::Zero();
   HelixMotion motion_;
@@ -154,6 +168,7 @@ class HelixPolicy {
   physics::Vec3 added_ = physics::Vec3::Zero();  // what the despin circle and the shape added to it
   bool regulating_ = false;                      // the regulator has the proxy (its path starts at given_)
   bool regulatorOn_ = true;
+  bool regulateLean_ = true;
 };
 
 }  // namespace hemiroll::autopilot

@@ -8,7 +8,7 @@
 
 namespace hemiroll::autopilot {
 
-PlannerWorker::PlannerWorker(Plan plan) : plan_(std::move(plan)), thread_([this] { run(); }) {}
+PlannerWorker::PlannerWorker(Plan plan, int nice) : plan_(std::move(plan)), nice_(nice), thread_([this] { run(); }) {}
 
 PlannerWorker::~PlannerWorker() {
   {
@@ -39,12 +39,10 @@ bool PlannerWorker::take(Autopilot::Decision& out) {
 }
 
 void PlannerWorker::run() {
-  // Planning yields to everything else: on a machine with few cores the
-  // servo thread must never wait behind a landing search. Linux applies
-  // nice values per thread; elsewhere (or if refused) it plans at the
-  // default priority.
+  // Linux applies nice values per thread; elsewhere (or if refused) it
+  // plans at the default priority (AutopilotDef::plannerNice says why not 19).
 #if defined(__linux__)
-  setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), 19);
+  if (nice_ != 0) setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), nice_);
 #endif
   std::unique_lock<std::mutex> lock(mutex_);
   for (;;) {

@@ -18,7 +18,8 @@ class PlannerWorker {
  public:
   using Plan = std::function<Autopilot::Decision(const Autopilot::PlanJob&)>;
 
-  explicit PlannerWorker(Plan plan);
+  // `nice`: the thread's nice value on Linux (AutopilotDef::plannerNice).
+  explicit PlannerWorker(Plan plan, int nice = 0);
   ~PlannerWorker();
   PlannerWorker(const PlannerWorker&) = delete;
   PlannerWorker& operator=(const PlannerWorker&) = delete;
@@ -37,6 +38,7 @@ class PlannerWorker {
   std::optional<Autopilot::PlanJob> job_;
   std::optional<Autopilot::Decision> done_;
   bool busy_ = false, stop_ = false;
+  int nice_ = 0;
   std::thread thread_;  // last: started once everything above exists
 };
 

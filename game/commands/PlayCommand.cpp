@@ -51,6 +51,7 @@ struct AutoplayRecord {
   std::string engagement = "never engaged";
   std::string scheduling, stops = "none";
   std::uint64_t plans = 0, stopCount = 0;
+  autopilot::RealTimePlanCounts decisions;
   std::string autopilotNote, outcome = "the trial was still running";
   double wall = 0.0, cpu = 0.0;
 };
@@ -67,12 +68,21 @@ std::string trialStanding(PlaySession& session, PlayScreen& play) {
   }
   const HudReadout& r = play.hud().readout();
   if (r.distanceToTarget >= 0.0)
-    std::snprintf(line, sizeof line, "the trial was still running at %.1f s (%.1f mm to the target, %d of %d in their bands)",
+    std::snprintf(line, sizeof line, "the trial was still running at %.1f s (%.1f mm to the target, %d of %d in their bands",
                   r.time, r.distanceToTarget * 1e3, r.componentsInside, r.components);
   else
-    std::snprintf(line, sizeof line, "the trial was still running at %.1f s (%d of %d in their bands)", r.time,
+    std::snprintf(line, sizeof line, "the trial was still running at %.1f s (%d of %d in their bands", r.time,
                   r.componentsInside, r.components);
-  return line;
+  // Which are out and by how much: a watched run that hovers on its target
+  // says whether the spin, the lean or the contact keeps it from winning.
+  std::string standing = line;
+  for (const task::ComponentStatus& c : judge.components()) {
+    if (c.inside || !std::isfinite(c.error)) continue;  // not yet judged: nothing to say
+    std::snprintf(line, sizeof line, "; %s off by %.4g, band %.4g", task::taskVariableName(c.variable), c.error,
+                  c.tolerance);
+    standing += line;
+  }
+  return standing + ")";
 }
 
 // The report's lines; frameSeconds sorted and not empty.
@@ -94,8 +104,12 @@ void printAutoplay(App& app, const PlayOptions& o, const AutoplayRecord& a) {
   std::printf("%ssafety stops: %llu (%s)\n", kPrefix, static_cast<unsigned long long>(a.stopCount), a.stops.c_str());
   std::printf("%strial: %s\n", kPrefix, a.outcome.c_str());
   if (o.watch)
-    std::printf("%sautopilot: %llu plans (%.0f per second)%s%s\n", kPrefix, static_cast<unsigned long long>(a.plans),
-                a.wall > 0.0 ? static_cast<double>(a.plans) / a.wall : 0.0, a.autopilotNote.empty() ? "" : "; ",
+    std::printf("%sautopilot: %llu plans (%.0f per second); planner decisions applied %llu, dropped late %llu, "
+                "stale %llu%s%s\n",
+                kPrefix, static_cast<unsigned long long>(a.plans),
+                a.wall > 0.0 ? static_cast<double>(a.plans) / a.wall : 0.0,
+                static_cast<unsigned long long>(a.decisions.applied), static_cast<unsigned long long>(a.decisions.late),
+                static_cast<unsigned long long>(a.decisions.stale), a.autopilotNote.empty() ? "" : "; ",
                 a.autopilotNote.c_str());
 }
 
@@ -123,6 +137,7 @@ int autoplay(App& app, const PlayOptions& o) {
     if (!play || !play->session()) break;  // the trial ended (the results screen replaced it)
     PlaySession& session = *play->session();
     a.plans = session.autopilotPlans();
+    a.decisions = session.autopilotDecisions();
     a.autopilotNote = session.autopilotNote();
     a.outcome = trialStanding(session, *play);
     if (session.snapshot().engagement == haptics::Engagement::Engaged) a.engagement = "engaged";

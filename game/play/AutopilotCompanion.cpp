@@ -14,6 +14,11 @@ AutopilotBotOptions plannerOnItsOwnThread(bool drives) {
   AutopilotBotOptions o;
   o.plannerThread = true;
   o.holdsProxy = drives;  // watching: its own hand holds the proxy; hint and guide: another's
+  // Watching, its hand renders no force and the loop rides a late tick out,
+  // so the plan is what wins and planning need not yield to other programs
+  // (AutopilotDef::plannerNice). Beside a person's device, which may render
+  // force (guidance), it yields as before.
+  o.plannerNice = drives ? 0 : 19;
   return o;
 }
 

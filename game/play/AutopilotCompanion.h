@@ -71,6 +71,11 @@ class AutopilotCompanion {
   std::string giveUpReason() const;
   // Plans made since start (for a status line and the screen tests).
   std::uint64_t plans() const { return planCount_.load(std::memory_order_relaxed); }
+  // Any thread: the planner's decisions applied, and those dropped late or stale.
+  autopilot::RealTimePlanCounts decisions() const {
+    const autopilot::Autopilot* a = autopilot_.autopilot();
+    return a != nullptr ? a->realTimePlans() : autopilot::RealTimePlanCounts{};
+  }
 
  private:
   void run();

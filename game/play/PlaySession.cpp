@@ -206,6 +206,10 @@ std::string PlaySession::autopilotNote() const { return companion_ ? companion_-
 
 std::uint64_t PlaySession::autopilotPlans() const { return companion_ ? companion_->plans() : 0; }
 
+autopilot::RealTimePlanCounts PlaySession::autopilotDecisions() const {
+  return companion_ ? companion_->decisions() : autopilot::RealTimePlanCounts{};
+}
+
 void PlaySession::click() {
   if (stopped_ || autopilotHolds()) return;
   putProxyOnMassPoint();

@@ -207,6 +207,7 @@ class PlaySession {
   bool hintRing(HintRing& out);
   std::string autopilotNote() const;
   std::uint64_t autopilotPlans() const;
+  autopilot::RealTimePlanCounts autopilotDecisions() const;
 
  private:
   std::unique_ptr<haptics::HapticDevice> makeDevice(const PlaySessionDef& def, const haptics::ServoLoopDef& loop);

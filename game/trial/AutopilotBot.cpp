@@ -25,6 +25,7 @@ void AutopilotBot::init(const script::BotLevelInfo& info, std::int64_t seed) {
   def.budget = options_.budget;
   def.seed = static_cast<std::uint64_t>(seed);
   def.plannerThread = options_.plannerThread;
+  def.plannerNice = options_.plannerNice;
   def.handStiffens = options_.holdsProxy;
   autopilot_ = std::make_unique<autopilot::Autopilot>(def);
 }

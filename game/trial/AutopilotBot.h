@@ -22,6 +22,7 @@ struct AutopilotBotOptions {
   // The autopilot holds the proxy itself (a bot, watch mode); false for a
   // guide or a hint, whose plan another hand follows (AutopilotDef::handStiffens).
   bool holdsProxy = true;
+  int plannerNice = 19;  // AutopilotDef::plannerNice
 };
 
 class AutopilotBot final : public script::BotPolicy {

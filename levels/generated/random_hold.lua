@@ -7,8 +7,9 @@
 -- for half of the seeds, a shove at the start (as random_task.lua). A
 -- generator of its own, so that the seeds of random_task.lua keep their
 -- tasks (docs/autopilot/task_seeds_0_199.txt). 4 minutes. Two stages with
--- a hold on a psi stage are not drawn: the autopilot does not win them yet
--- (docs/AUTOPILOT.md, "What does not work yet").
+-- a hold on a psi stage are not drawn, so that these seeds keep their
+-- tasks (two such tasks are won, a family of them is not measured:
+-- docs/AUTOPILOT.md, "What does not work yet").
 -- Everything is SI: metres, seconds, radians, kilograms, newtons.
 
 local pi = math.pi

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <new>
 #include <thread>
+#include <cstdio>
 #include <cstring>
 
 #include "engine/autopilot/UprightContact.h"
@@ -203,6 +204,212 @@ TEST(Autopilot, SameInputsSameProxyBitForBit) {
   const Played b = play(paperGoal(), physics::ForceDrivenState::Zero(), 60.0);
   EXPECT_EQ(a.time, b.time);
   EXPECT_EQ(std::memcmp(a.final.data(), b.final.data(), sizeof(double) * 12), 0);
+}
+
+// Tutorial 01's two stages on the paper's body: lean 0.1 rad towards +x
+// (held 0.5 s), then upright and still (|omega| within 0.03 rad/s, held
+// 1 s), no contact point. The glide left the light shell rocking round
+// upright and planning spent its budget (7.4 s); the regulator holds the
+// rest at the lean asked. The time of the second stage's hold, or -1.
+double leanThenStandStill(const AutopilotDef& def, double limit) {
+  Goal lean, still;
+  for (Goal* g : {&lean, &still})
+    for (const int slot : {9, 10}) {
+      g->set[static_cast<std::size_t>(slot)] = true;
+      g->tolerance[static_cast<std::size_t>(slot)] = 0.03;
+    }
+  lean.target[9] = -0.1;
+  lean.hold = 0.5;
+  still.omegaNormSet = true;
+  still.omegaNormTolerance = 0.03;
+  still.hold = 1.0;
+  Autopilot pilot(def);
+  PlantModel plant(def.params, def.coupling, def.dt);
+  plant.reset(physics::ForceDrivenState::Zero(), 0.0);
+  AutopilotInput in;
+  in.engaged = true;
+  in.massPosition = Vec3(0.0, 0.0, def.params.radius);
+  double held = 0.0;
+  for (long long k = 0; k < std::llround(limit / def.dt) && pilot.failure().empty(); ++k) {
+    in.time = plant.time();
+    in.state = plant.state();
+    in.goal = in.stage == 0 ? lean : still;
+    const ProxyCommand c = pilot.act(in);
+    if (plant.tick(c.position, c.velocity) != physics::DomainEvent::None) return -1.0;
+    held = normalisedError(in.goal, plant.state()) <= 1.0 ? held + def.dt : 0.0;
+    if (held >= in.goal.hold) {
+      if (in.stage == 1) return plant.time();
+      in.stage = 1;
+      held = 0.0;
+    }
+  }
+  return -1.0;
+}
+
+// Two stages at the paper's bands, each with a hold: reach (3.5, 3.5) cm
+// and stay 0.5 s, then stand still with psi within 15 degrees of -2 rad
+// and stay 0.5 s. The second stage's lean is held by the regulator (the
+// glide: not won in 120 s, AUTOPILOT.md). The time of the last hold, or -1.
+double reachThenTurnAndHold(double limit) {
+  Goal reach = paperGoal();
+  reach.target[7] = reach.target[8] = 0.035;
+  reach.hold = 0.5;
+  Goal turned;
+  const auto band = [&](int slot, double target, double tol) {
+    turned.set[static_cast<std::size_t>(slot)] = true;
+    turned.target[static_cast<std::size_t>(slot)] = target;
+    turned.tolerance[static_cast<std::size_t>(slot)] = tol;
+  };
+  for (const int slot : {0, 1}) band(slot, 0.0, 0.004);
+  for (const int slot : {4, 5, 6}) band(slot, 0.0, 0.01);
+  for (const int slot : {9, 10}) band(slot, 0.0, M_PI / 18);
+  band(11, -2.0, 15.0 * M_PI / 180.0);
+  turned.hold = 0.5;
+  const AutopilotDef def;
+  Autopilot pilot(def);
+  PlantModel plant(def.params, def.coupling, def.dt);
+  plant.reset(physics::ForceDrivenState::Zero(), 0.0);
+  AutopilotInput in;
+  in.engaged = true;
+  in.massPosition = Vec3(0.0, 0.0, def.params.radius);
+  double held = 0.0;
+  for (long long k = 0; k < std::llround(limit / def.dt) && pilot.failure().empty(); ++k) {
+    in.time = plant.time();
+    in.state = plant.state();
+    in.goal = in.stage == 0 ? reach : turned;
+    const ProxyCommand c = pilot.act(in);
+    if (plant.tick(c.position, c.velocity) != physics::DomainEvent::None) return -1.0;
+    held = normalisedError(in.goal, plant.state()) <= 1.0 ? held + def.dt : 0.0;
+    if (held >= in.goal.hold) {
+      if (in.stage == 1) return plant.time();
+      in.stage = 1;
+      held = 0.0;
+    }
+  }
+  return -1.0;
+}
+
+TEST(Autopilot, HoldsAPsiStageAtThePapersBands) {
+  const double t = reachThenTurnAndHold(40.0);
+  std::printf("[psi hold] held at %.2f s\n", t);
+  EXPECT_GT(t, 0.0);
+}
+
+TEST(Autopilot, LeansThenStandsStillOnThePapersBody) {
+  AutopilotDef glide;
+  glide.regulatedSettle = false;
+  const double regulated = leanThenStandStill(AutopilotDef{}, 15.0);
+  const double glided = leanThenStandStill(glide, 6.0);
+  std::printf("[lean] regulated: held at %.2f s; the glide: %.2f\n", regulated, glided);
+  EXPECT_GT(regulated, 0.0);
+  EXPECT_LT(regulated, 10.0);
+  EXPECT_LT(glided, 0.0);  // the glide, for comparison (not within 6 s)
+}
+
+// At rest on the target with only the spin out of its band (what a landing
+// that ends spinning leaves: in real time the hand-over spoils the plan,
+// and such rests kept watched runs from winning): here the spin is kicked
+// by 0.03 rad/s (three times the band) once the paper's task, with a 2 s
+// hold, has settled. The brake (SpinBrake.h) takes it out; without it the
+// planner searches landing shapes for a landing that is over.
+struct Kicked {
+  bool won = false;
+  double time = 0.0, kickedAt = -1.0;
+  long long brakes = 0;  // ticks the law spent braking
+};
+
+Kicked kickTheSpinAtRest(bool brake, double limit) {
+  AutopilotDef def;
+  def.spinBrake = brake;
+  Goal goal = paperGoal();
+  goal.hold = 4.0;
+  Autopilot pilot(def);
+  PlantModel plant(def.params, def.coupling, def.dt);
+  plant.reset(physics::ForceDrivenState::Zero(), 0.0);
+  AutopilotInput in;
+  in.goal = goal;
+  in.engaged = true;
+  in.massPosition = Vec3(0.0, 0.0, def.params.radius);
+  Kicked out;
+  double held = 0.0, settledSince = -1.0;
+  for (long long k = 0; k < std::llround(limit / def.dt); ++k) {
+    in.time = plant.time();
+    in.state = plant.state();
+    const bool settled = pilot.policy().phase() == HelixPhase::Settle && !pilot.policy().braking();
+    settledSince = settled ? (settledSince < 0.0 ? in.time : settledSince) : -1.0;
+    if (out.kickedAt < 0.0 && settled && in.time - settledSince > 3.0) {
+      physics::ForceDrivenState x = plant.state();
+      x[physics::force_slot::w_z] += 0.03;
+      plant.reset(x, plant.time());
+      in.state = x;
+      out.kickedAt = in.time;
+    }
+    const ProxyCommand c = pilot.act(in);
+    if (pilot.policy().braking()) ++out.brakes;
+    EXPECT_EQ(plant.tick(c.position, c.velocity), physics::DomainEvent::None);
+    held = out.kickedAt >= 0.0 && normalisedError(goal, plant.state()) <= 1.0 ? held + def.dt : 0.0;
+    if (held >= goal.hold) {
+      out.won = true;
+      break;
+    }
+  }
+  out.time = plant.time();
+  return out;
+}
+
+TEST(Autopilot, BrakesTheSpinOfARestOnTheTarget) {
+  const Kicked braked = kickTheSpinAtRest(true, 40.0);
+  std::printf("[brake] kicked at %.2f s: held at %.2f s (%.1f s braking)\n", braked.kickedAt, braked.time,
+              braked.brakes * 0.001);
+  ASSERT_GE(braked.kickedAt, 0.0);
+  EXPECT_TRUE(braked.won);
+  EXPECT_GT(braked.brakes, 0);
+}
+
+// The same without the brake: the planner searches landing shapes for a
+// landing that is over, and the rest keeps spinning (measured: not held in
+// 40 s; with the brake held at 20.8 s). Long: its searches cost about
+// 20 s of CPU.
+TEST(AutopilotHeavy, WithoutTheBrakeARestOnTheTargetKeepsItsSpin) {
+  const Kicked braked = kickTheSpinAtRest(true, 40.0);
+  const Kicked searched = kickTheSpinAtRest(false, braked.time + 10.0);
+  ASSERT_TRUE(braked.won);
+  EXPECT_FALSE(searched.won);
+  EXPECT_EQ(searched.brakes, 0);
+}
+
+// Real time (plannerThread): a decision is applied at the moment it was
+// planned for, or counted as dropped when it comes back after it. The
+// simulated time is driven by hand, so that which happens does not depend
+// on how loaded the machine is.
+TEST(Autopilot, CountsRealTimeDecisionsAppliedAndDroppedLate) {
+  AutopilotDef def;
+  def.plannerThread = true;
+  Autopilot pilot(def);
+  AutopilotInput in;
+  in.goal = paperGoal();
+  in.engaged = true;
+  in.massPosition = Vec3(0.0, 0.0, def.params.radius);
+  const auto actUntil = [&](double time, const auto& done) {
+    in.time = time;
+    for (int i = 0; i < 10000 && !done(); ++i) {
+      pilot.act(in);
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+  };
+  // Posted at 0 for planLead later; the clock held short of that moment
+  // while the worker plans, then moved on to it: applied.
+  pilot.act(in);
+  int calls = 0;
+  actUntil(def.planLead - 0.01, [&] { return ++calls > 50; });
+  EXPECT_EQ(pilot.realTimePlans().applied, 0u);  // not before its moment
+  actUntil(def.planLead, [&] { return pilot.realTimePlans().applied > 0; });
+  EXPECT_EQ(pilot.realTimePlans().applied, 1u);
+  EXPECT_EQ(pilot.realTimePlans().late, 0u);
+  // The next one, posted at planLead, met a clock already far past its moment.
+  actUntil(def.planLead + 2.0, [&] { return pilot.realTimePlans().late > 0; });
+  EXPECT_EQ(pilot.realTimePlans().applied, 1u);
+  EXPECT_EQ(pilot.realTimePlans().late, 1u);
 }
 
 }  // namespace

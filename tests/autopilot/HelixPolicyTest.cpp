@@ -114,6 +114,32 @@ TEST(HelixPolicy, LandingFadesTheCircleAtLandRateThenSettlesAtTheGlideSpeed) {
   }
 }
 
+TEST(HelixPolicy, TheBrakeCirclesTheContactUnsteeredThenStopsDead) {
+  Fixture f;
+  HelixParams p;
+  HelixPolicy law(f.constants, p, kDt);
+  const Vec2 here = uprightContact(f.constants, f.x).point;
+  law.setGoal(contactGoal(here.x() + 0.05, here.y()));  // an error the travel would steer by
+  law.startAt(Vec3(0.01, 0.02, f.params.radius));
+  law.brake(0.002, -M_PI, 2.0);
+  Vec3 proxy;
+  for (int k = 0; k < 1500; ++k) proxy = law.proxyFor(f.x);  // the radius grows at 2 mm/s: full by 1 s
+  EXPECT_TRUE(law.braking());
+  EXPECT_EQ(law.phase(), HelixPhase::Travel);
+  const Vec2 centre(0.01, 0.02);  // the contact: no steering offset
+  EXPECT_NEAR((law.motion().centre - centre).norm(), 0.0, 1e-15);
+  EXPECT_NEAR((proxy.head<2>() - centre).norm(), 0.002, 1e-12);
+  const Vec3 next = law.proxyFor(f.x);
+  const double a0 = std::atan2(proxy.y() - centre.y(), proxy.x() - centre.x());
+  const double a1 = std::atan2(next.y() - centre.y(), next.x() - centre.x());
+  EXPECT_NEAR(std::remainder(a1 - a0, 2.0 * M_PI), -M_PI * kDt, 1e-9);  // clockwise, as asked
+  // After its 2 s it stops dead: settling, where the circle was.
+  for (int k = 1501; k < 2010; ++k) proxy = law.proxyFor(f.x);
+  EXPECT_FALSE(law.braking());
+  EXPECT_EQ(law.phase(), HelixPhase::Settle);
+  EXPECT_LE((law.proxyFor(f.x) - proxy).norm(), p.glideSpeed * kDt * (1.0 + 1e-12));
+}
+
 TEST(HelixPolicy, ACopyContinuesBitForBit) {
   Fixture f;
   HelixPolicy law(f.constants, HelixParams{}, kDt);
