@@ -83,6 +83,26 @@ void BM_ForceDrivenDerivativeChained(benchmark::State& state) {
 }
 BENCHMARK(BM_ForceDrivenDerivativeChained)->Arg(0)->Arg(1)->ArgName("coupledM3");
 
+// Where the chain runs: as above (free), but only the slots in the mask feed
+// the next evaluation; the others stay at x0. Dropping a group that is on the
+// longest path shortens the latency; dropping one that is not leaves it.
+// Masks: 0xfff all, 0x1ff all but the tilt angles and psi (slots 9-11),
+// 0x7ff all but psi, 0xe00 the angles only, 0x070 w only, 0x00f p and p' only.
+void BM_ForceDrivenChainedSlots(benchmark::State& state) {
+  ForceDrivenSystem system{HemisphereParams{}};
+  system.setFree();
+  const unsigned mask = static_cast<unsigned>(state.range(0));
+  const ForceDrivenState x0 = typicalState();
+  ForceDrivenState x = x0, dx;
+  for (auto _ : state) {
+    system.derivative(0.0, x, dx);
+    for (int i = 0; i < 12; ++i) x[i] = x0[i] + ((mask >> i) & 1u ? 5e-4 * dx[i] : 0.0);
+  }
+  benchmark::DoNotOptimize(x);
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_ForceDrivenChainedSlots)->Arg(0xfff)->Arg(0x1ff)->Arg(0x7ff)->Arg(0xe00)->Arg(0x070)->Arg(0x00f)->ArgName("mask");
+
 // The same model with the orientation as a quaternion (RotationDrivenSystem.h),
 // on the same state.
 void configure(RotationDrivenSystem& system, int mode) {
