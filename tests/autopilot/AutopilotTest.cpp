@@ -206,6 +206,33 @@ TEST(Autopilot, SameInputsSameProxyBitForBit) {
   EXPECT_EQ(std::memcmp(a.final.data(), b.final.data(), sizeof(double) * 12), 0);
 }
 
+// Two stages from rest upright, each passed once its bands have held for
+// its hold, judged here as the level's judge would. The time the second
+// stage's hold ends, or -1 (off the face, a planner failure, or the limit).
+double playTwoStages(const AutopilotDef& def, const Goal& first, const Goal& second, double limit) {
+  Autopilot pilot(def);
+  PlantModel plant(def.params, def.coupling, def.dt);
+  plant.reset(physics::ForceDrivenState::Zero(), 0.0);
+  AutopilotInput in;
+  in.engaged = true;
+  in.massPosition = Vec3(0.0, 0.0, def.params.radius);
+  double held = 0.0;
+  for (long long k = 0; k < std::llround(limit / def.dt) && pilot.failure().empty(); ++k) {
+    in.time = plant.time();
+    in.state = plant.state();
+    in.goal = in.stage == 0 ? first : second;
+    const ProxyCommand c = pilot.act(in);
+    if (plant.tick(c.position, c.velocity) != physics::DomainEvent::None) return -1.0;
+    held = normalisedError(in.goal, plant.state()) <= 1.0 ? held + def.dt : 0.0;
+    if (held >= in.goal.hold) {
+      if (in.stage == 1) return plant.time();
+      in.stage = 1;
+      held = 0.0;
+    }
+  }
+  return -1.0;
+}
+
 // Tutorial 01's two stages on the paper's body: lean 0.1 rad towards +x
 // (held 0.5 s), then upright and still (|omega| within 0.03 rad/s, held
 // 1 s), no contact point. The glide left the light shell rocking round
@@ -223,27 +250,7 @@ double leanThenStandStill(const AutopilotDef& def, double limit) {
   still.omegaNormSet = true;
   still.omegaNormTolerance = 0.03;
   still.hold = 1.0;
-  Autopilot pilot(def);
-  PlantModel plant(def.params, def.coupling, def.dt);
-  plant.reset(physics::ForceDrivenState::Zero(), 0.0);
-  AutopilotInput in;
-  in.engaged = true;
-  in.massPosition = Vec3(0.0, 0.0, def.params.radius);
-  double held = 0.0;
-  for (long long k = 0; k < std::llround(limit / def.dt) && pilot.failure().empty(); ++k) {
-    in.time = plant.time();
-    in.state = plant.state();
-    in.goal = in.stage == 0 ? lean : still;
-    const ProxyCommand c = pilot.act(in);
-    if (plant.tick(c.position, c.velocity) != physics::DomainEvent::None) return -1.0;
-    held = normalisedError(in.goal, plant.state()) <= 1.0 ? held + def.dt : 0.0;
-    if (held >= in.goal.hold) {
-      if (in.stage == 1) return plant.time();
-      in.stage = 1;
-      held = 0.0;
-    }
-  }
-  return -1.0;
+  return playTwoStages(def, lean, still, limit);
 }
 
 // Two stages at the paper's bands, each with a hold: reach (3.5, 3.5) cm
@@ -265,28 +272,7 @@ double reachThenTurnAndHold(double limit) {
   for (const int slot : {9, 10}) band(slot, 0.0, M_PI / 18);
   band(11, -2.0, 15.0 * M_PI / 180.0);
   turned.hold = 0.5;
-  const AutopilotDef def;
-  Autopilot pilot(def);
-  PlantModel plant(def.params, def.coupling, def.dt);
-  plant.reset(physics::ForceDrivenState::Zero(), 0.0);
-  AutopilotInput in;
-  in.engaged = true;
-  in.massPosition = Vec3(0.0, 0.0, def.params.radius);
-  double held = 0.0;
-  for (long long k = 0; k < std::llround(limit / def.dt) && pilot.failure().empty(); ++k) {
-    in.time = plant.time();
-    in.state = plant.state();
-    in.goal = in.stage == 0 ? reach : turned;
-    const ProxyCommand c = pilot.act(in);
-    if (plant.tick(c.position, c.velocity) != physics::DomainEvent::None) return -1.0;
-    held = normalisedError(in.goal, plant.state()) <= 1.0 ? held + def.dt : 0.0;
-    if (held >= in.goal.hold) {
-      if (in.stage == 1) return plant.time();
-      in.stage = 1;
-      held = 0.0;
-    }
-  }
-  return -1.0;
+  return playTwoStages(AutopilotDef(), reach, turned, limit);
 }
 
 TEST(Autopilot, HoldsAPsiStageAtThePapersBands) {
