@@ -35,32 +35,52 @@ struct Played {
   physics::DomainEvent fell = physics::DomainEvent::None;  // how the plant left its domain, if it did
 };
 
+// The autopilot against the exact model from `start`, holding the proxy
+// from the first tick (it starts on the mass point for an all-zero start).
+struct Rig {
+  explicit Rig(const AutopilotDef& def, const Goal& goal,
+               const physics::ForceDrivenState& start = physics::ForceDrivenState::Zero())
+      : pilot(def), plant(def.params, def.coupling, def.dt) {
+    plant.reset(start, 0.0);
+    in.goal = goal;
+    in.engaged = true;
+    in.massPosition = Vec3(0.0, 0.0, def.params.radius);
+  }
+  // What the autopilot sees now (after any change made to the plant).
+  void observe() {
+    in.time = plant.time();
+    in.state = plant.state();
+  }
+  // A velocity or spin kick: the plant's state changed where it stands.
+  void kick(const physics::ForceDrivenState& x) {
+    plant.reset(x, plant.time());
+    in.state = x;
+  }
+  Autopilot pilot;
+  PlantModel plant;
+  AutopilotInput in;
+};
+
 // Plays `goal` from `start` for up to `limit` seconds; at `shoveAt` the mass
 // point's in-face velocity jumps by `shove` (an impulse on the mass point).
 // Leaving the domain (the mass point off the face, tipping over) ends the
 // play and fails the test unless `mayFall`.
 Played play(const Goal& goal, const physics::ForceDrivenState& start, double limit, double shoveAt = -1.0,
             const physics::Vec2& shove = physics::Vec2::Zero(), const AutopilotDef& def = {}, bool mayFall = false) {
-  Autopilot pilot(def);
-  PlantModel plant(def.params, def.coupling, def.dt);
-  plant.reset(start, 0.0);
+  Rig rig(def, goal, start);
+  Autopilot& pilot = rig.pilot;
+  PlantModel& plant = rig.plant;
   Played out;
-  AutopilotInput in;
-  in.goal = goal;
-  in.engaged = true;  // the proxy starts on the mass point (all-zero start)
-  in.massPosition = Vec3(0.0, 0.0, def.params.radius);
   const auto ticks = static_cast<long long>(limit / def.dt);
   for (long long k = 0; k < ticks; ++k) {
-    in.time = plant.time();
-    in.state = plant.state();
-    if (shoveAt >= 0.0 && std::abs(in.time - shoveAt) < 0.5 * def.dt) {
+    rig.observe();
+    if (shoveAt >= 0.0 && std::abs(rig.in.time - shoveAt) < 0.5 * def.dt) {
       physics::ForceDrivenState x = plant.state();
       x[2] += shove.x();
       x[3] += shove.y();
-      plant.reset(x, plant.time());
-      in.state = x;
+      rig.kick(x);
     }
-    const ProxyCommand c = pilot.act(in);
+    const ProxyCommand c = pilot.act(rig.in);
     if (!pilot.failure().empty()) {
       out.failure = pilot.failure();
       break;
@@ -95,20 +115,15 @@ TEST(Autopilot, HoldsThePapersTaskAndStays) {
   Goal goal = paperGoal();
   goal.hold = 0.1;
   const AutopilotDef def;
-  Autopilot pilot(def);
-  PlantModel plant(def.params, def.coupling, def.dt);
-  plant.reset(physics::ForceDrivenState::Zero(), 0.0);
-  AutopilotInput in;
-  in.goal = goal;
-  in.engaged = true;
-  in.massPosition = Vec3(0.0, 0.0, def.params.radius);
+  Rig rig(def, goal);
+  Autopilot& pilot = rig.pilot;
+  PlantModel& plant = rig.plant;
   const long long holdTicks = std::llround(goal.hold / def.dt);
   long long inside = 0, leftAfter = 0;
   double held = -1.0;
   for (long long k = 0; k < 60000 && (held < 0.0 || plant.time() < held + 2.0); ++k) {
-    in.time = plant.time();
-    in.state = plant.state();
-    const ProxyCommand c = pilot.act(in);
+    rig.observe();
+    const ProxyCommand c = pilot.act(rig.in);
     ASSERT_TRUE(pilot.failure().empty()) << pilot.failure();
     ASSERT_EQ(plant.tick(c.position, c.velocity), physics::DomainEvent::None) << "t = " << plant.time();
     const bool in = normalisedError(goal, plant.state()) <= 1.0;
@@ -210,18 +225,14 @@ TEST(Autopilot, SameInputsSameProxyBitForBit) {
 // its hold, judged here as the level's judge would. The time the second
 // stage's hold ends, or -1 (off the face, a planner failure, or the limit).
 double playTwoStages(const AutopilotDef& def, const Goal& first, const Goal& second, double limit) {
-  Autopilot pilot(def);
-  PlantModel plant(def.params, def.coupling, def.dt);
-  plant.reset(physics::ForceDrivenState::Zero(), 0.0);
-  AutopilotInput in;
-  in.engaged = true;
-  in.massPosition = Vec3(0.0, 0.0, def.params.radius);
+  Rig rig(def, first);
+  PlantModel& plant = rig.plant;
+  AutopilotInput& in = rig.in;
   double held = 0.0;
-  for (long long k = 0; k < std::llround(limit / def.dt) && pilot.failure().empty(); ++k) {
-    in.time = plant.time();
-    in.state = plant.state();
+  for (long long k = 0; k < std::llround(limit / def.dt) && rig.pilot.failure().empty(); ++k) {
+    rig.observe();
     in.goal = in.stage == 0 ? first : second;
-    const ProxyCommand c = pilot.act(in);
+    const ProxyCommand c = rig.pilot.act(in);
     if (plant.tick(c.position, c.velocity) != physics::DomainEvent::None) return -1.0;
     held = normalisedError(in.goal, plant.state()) <= 1.0 ? held + def.dt : 0.0;
     if (held >= in.goal.hold) {
@@ -309,28 +320,23 @@ Kicked kickTheSpinAtRest(bool brake, double limit) {
   def.spinBrake = brake;
   Goal goal = paperGoal();
   goal.hold = 4.0;
-  Autopilot pilot(def);
-  PlantModel plant(def.params, def.coupling, def.dt);
-  plant.reset(physics::ForceDrivenState::Zero(), 0.0);
-  AutopilotInput in;
-  in.goal = goal;
-  in.engaged = true;
-  in.massPosition = Vec3(0.0, 0.0, def.params.radius);
+  Rig rig(def, goal);
+  Autopilot& pilot = rig.pilot;
+  PlantModel& plant = rig.plant;
   Kicked out;
   double held = 0.0, settledSince = -1.0;
   for (long long k = 0; k < std::llround(limit / def.dt); ++k) {
-    in.time = plant.time();
-    in.state = plant.state();
+    rig.observe();
+    const double now = rig.in.time;
     const bool settled = pilot.policy().phase() == HelixPhase::Settle && !pilot.policy().braking();
-    settledSince = settled ? (settledSince < 0.0 ? in.time : settledSince) : -1.0;
-    if (out.kickedAt < 0.0 && settled && in.time - settledSince > 3.0) {
+    settledSince = settled ? (settledSince < 0.0 ? now : settledSince) : -1.0;
+    if (out.kickedAt < 0.0 && settled && now - settledSince > 3.0) {
       physics::ForceDrivenState x = plant.state();
       x[physics::force_slot::w_z] += 0.03;
-      plant.reset(x, plant.time());
-      in.state = x;
-      out.kickedAt = in.time;
+      rig.kick(x);
+      out.kickedAt = now;
     }
-    const ProxyCommand c = pilot.act(in);
+    const ProxyCommand c = pilot.act(rig.in);
     if (pilot.policy().braking()) ++out.brakes;
     EXPECT_EQ(plant.tick(c.position, c.velocity), physics::DomainEvent::None);
     held = out.kickedAt >= 0.0 && normalisedError(goal, plant.state()) <= 1.0 ? held + def.dt : 0.0;
