@@ -18,11 +18,9 @@ void HintGate::init(const script::BotLevelInfo& info) {
 
 bool HintGate::open(const script::BotObservation& obs) {
   if (!reason_.empty()) return false;
-  // As Autopilot::takeGoal checks it: the heading comes after the rest of
-  // the stage, so it rules nothing out.
-  autopilot::Goal goal = goalOf(obs);
-  goal.set[11] = false;
-  reason_ = autopilot::unreachableReason(goal, params_, workspace_);
+  // What Autopilot::takeGoal refuses a stage for (its psi band plays no
+  // part in reachability).
+  reason_ = autopilot::unreachableReason(goalOf(obs), params_, workspace_);
   if (!reason_.empty()) {
     reason_ = "autopilot: " + reason_;
     return false;
