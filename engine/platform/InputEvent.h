@@ -39,4 +39,15 @@ struct InputEvent {
   double timestamp = 0.0;                    // [s] since SDL started
 };
 
+// A left-button pointer event at (x, y) [window px]: what scripted players
+// and tests inject to move, press and release as a mouse would.
+inline InputEvent leftPointerEvent(InputType type, double x, double y) {
+  InputEvent e;
+  e.type = type;
+  e.x = x;
+  e.y = y;
+  e.button = PointerButton::Left;
+  return e;
+}
+
 }  // namespace hemiroll::platform

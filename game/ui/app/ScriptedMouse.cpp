@@ -8,26 +8,13 @@
 
 namespace hemiroll::game {
 
-namespace {
-
-platform::InputEvent pointerEvent(platform::InputType type, double x, double y) {
-  platform::InputEvent e;
-  e.type = type;
-  e.x = x;
-  e.y = y;
-  e.button = platform::PointerButton::Left;
-  return e;
-}
-
-}  // namespace
-
 void ScriptedMouse::step(App& app, double t) {
   // The proxy starts on the mass point: take hold there, then stroke the
   // circle (as motion: the play screen steers by the mouse's strokes).
   if (t < def_.clickAt) return;
   if (!clicked_) {
-    app.inject(pointerEvent(platform::InputType::ButtonDown, 0.0, 0.0));
-    app.inject(pointerEvent(platform::InputType::ButtonUp, 0.0, 0.0));
+    app.inject(platform::leftPointerEvent(platform::InputType::ButtonDown, 0.0, 0.0));
+    app.inject(platform::leftPointerEvent(platform::InputType::ButtonUp, 0.0, 0.0));
     clicked_ = true;
     return;
   }
@@ -35,7 +22,7 @@ void ScriptedMouse::step(App& app, double t) {
   const double r = def_.radius * std::min(1.0, since);  // eased in over 1 s
   const double a = 2.0 * std::numbers::pi * since / def_.period;
   const double x = r * std::cos(a), y = r * std::sin(a);
-  platform::InputEvent move = pointerEvent(platform::InputType::PointerMove, 0.0, 0.0);
+  platform::InputEvent move = platform::leftPointerEvent(platform::InputType::PointerMove, 0.0, 0.0);
   move.dx = x - lastX_;
   move.dy = y - lastY_;
   lastX_ = x;

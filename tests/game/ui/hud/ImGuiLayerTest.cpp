@@ -14,15 +14,6 @@ bool near(const std::uint8_t* p, int r, int g, int b) {
   return std::abs(p[0] - r) <= 6 && std::abs(p[1] - g) <= 6 && std::abs(p[2] - b) <= 6;
 }
 
-platform::InputEvent pointer(platform::InputType type, double x, double y) {
-  platform::InputEvent e;
-  e.type = type;
-  e.x = x;
-  e.y = y;
-  e.button = platform::PointerButton::Left;
-  return e;
-}
-
 // A click whose press and release arrive in the same frame (what a
 // synthetic or a fast real click does) still presses an ImGui button: the
 // title's first button, found by its colour, opens the level select.
@@ -35,7 +26,7 @@ TEST(ImGuiLayerTest, APressAndReleaseInOneFrameClickAButton) {
   def.settingsFile = (dir.path() / "settings.json").string();  // not the user's
   def.levelsDir = HEMIROLL_SOURCE_DIR "/levels";
   App app(def);
-  app.inject(pointer(platform::InputType::PointerMove, 5, 5));  // away from every button
+  app.inject(platform::leftPointerEvent(platform::InputType::PointerMove, 5, 5));  // away from every button
   app.frame();
   app.requestCapture();
   app.frame();
@@ -47,10 +38,10 @@ TEST(ImGuiLayerTest, APressAndReleaseInOneFrameClickAButton) {
   ASSERT_GE(buttonY, 0) << "no button on the title screen";
   EXPECT_STREQ(app.topScreen(), "title");
   const double x = title.width / 2.0, y = buttonY + 8.0;
-  app.inject(pointer(platform::InputType::PointerMove, x, y));
+  app.inject(platform::leftPointerEvent(platform::InputType::PointerMove, x, y));
   app.frame();  // hovered first, as a real pointer would be
-  app.inject(pointer(platform::InputType::ButtonDown, x, y));
-  app.inject(pointer(platform::InputType::ButtonUp, x, y));
+  app.inject(platform::leftPointerEvent(platform::InputType::ButtonDown, x, y));
+  app.inject(platform::leftPointerEvent(platform::InputType::ButtonUp, x, y));
   for (int i = 0; i < 4; ++i) app.frame();
   EXPECT_STREQ(app.topScreen(), "levels");
 }
