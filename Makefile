@@ -36,8 +36,12 @@ play: build
 test: peer-deps build
 	@ctest --test-dir $(BUILD) -j $(JOBS) --output-on-failure -LE heavy
 
+# Ends with issue 32's figures against an earlier commit, both measured in
+# this run (tools/bench-against.sh); BENCH_AGAINST=none leaves that out.
+BENCH_AGAINST ?= HEAD~1
 bench: peer-deps build
 	@tools/run-benchmarks.sh $(BUILD)
+	@if [ "$(BENCH_AGAINST)" != none ]; then tools/bench-against.sh $(BENCH_AGAINST) $(BUILD); fi
 
 # Debug build with AddressSanitizer and UndefinedBehaviorSanitizer.
 asan: deps
