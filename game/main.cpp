@@ -1,9 +1,9 @@
 // hemiroll: the command-line entry point. Each subcommand lives in
-// game/commands/<Name>Command.{h,cpp}; this file only dispatches.
+// game/commands/<Name>Command.{h,cpp}; this file only dispatches. The
+// commands that open a window run in hemiroll-window (WindowProgram.h): this
+// program links no window library.
 
-#include <exception>
 #include <iostream>
-#include <new>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -13,29 +13,28 @@
 #include "game/commands/CheckCommand.h"
 #include "game/commands/ExitCode.h"
 #include "game/commands/FiguresCommand.h"
-#include "game/commands/PlayCommand.h"
 #include "game/commands/RunCommand.h"
-#include "game/commands/ScreenshotCommand.h"
 #include "game/commands/SessionCommand.h"
 #include "game/commands/SimCommand.h"
 #include "game/commands/SweepCommand.h"
 #include "game/commands/VersionCommand.h"
+#include "game/commands/WindowProgram.h"
 
 namespace {
 
 struct CommandEntry {
   std::string_view name;
   std::string_view summary;
-  int (*run)(const std::vector<std::string>& args);
+  int (*run)(const std::vector<std::string>& args);  // null: the command runs in hemiroll-window
 };
 
 constexpr CommandEntry kCommands[] = {
-    {"play", "open the game window (the default with no command)", hemiroll::game::runPlayCommand},
+    {"play", "open the game window (the default with no command)", nullptr},
     {"sim", "run a scenario's physics headless and write the trajectory as CSV", hemiroll::game::runSimCommand},
     {"run", "play a level with a bot (headless) and print the result as one JSON line", hemiroll::game::runRunCommand},
     {"session", "run a research protocol for a participant (bots headless; people in the window)",
      hemiroll::game::runSessionCommand},
-    {"screenshot", "render one frame of a level offscreen and write it as a PNG", hemiroll::game::runScreenshotCommand},
+    {"screenshot", "render one frame of a level offscreen and write it as a PNG", nullptr},
     {"analyze", "measure phases, rose and helix in recorded trials; tables and SVG plots", hemiroll::game::runAnalyzeCommand},
     {"figures", "regenerate the paper's Figs. 9-11 from the simulator, with their features", hemiroll::game::runFiguresCommand},
     {"sweep", "sweep the rose drive over a grid of parameters; shards, merge, heatmaps", hemiroll::game::runSweepCommand},
@@ -56,7 +55,7 @@ void printUsage(std::ostream& out) {
 int main(int argc, char** argv) {
   const std::vector<std::string> args(argv + 1, argv + argc);
   // No command: the game, as a player who double-clicks the program expects.
-  if (args.empty()) return hemiroll::game::runPlayCommand({});
+  if (args.empty()) return hemiroll::game::execWindowProgram(argv[0], "play", {});
   const std::string& command = args.front();
   if (command == "--help" || command == "-h" || command == "help") {
     printUsage(std::cout);
@@ -65,17 +64,10 @@ int main(int argc, char** argv) {
   if (command == "--version") return hemiroll::game::runVersionCommand({});
   for (const CommandEntry& c : kCommands) {
     if (c.name != command) continue;
-    // Each command reports what it expects to go wrong itself; anything that
-    // still escapes (memory exhausted by an input, a library's exception)
-    // becomes one line and exit 1, never an abort.
-    try {
-      return c.run(std::vector<std::string>(args.begin() + 1, args.end()));
-    } catch (const std::bad_alloc&) {
-      std::cerr << "hemiroll " << command << ": out of memory (an input asked for more than this machine has)\n";
-    } catch (const std::exception& e) {
-      std::cerr << "hemiroll " << command << ": " << e.what() << "\n";
-    }
-    return hemiroll::game::kExitFailure;
+    const std::vector<std::string> rest(args.begin() + 1, args.end());
+    if (c.run == nullptr) return hemiroll::game::execWindowProgram(argv[0], command, rest);
+    // Each command reports what it expects to go wrong itself.
+    return hemiroll::game::runCommandGuarded(command, c.run, rest);
   }
   std::cerr << "hemiroll: unknown command '" << command << "'\n\n";
   printUsage(std::cerr);

@@ -37,8 +37,11 @@ DurableFile::DurableFile(const std::filesystem::path& path, const char* mode) : 
   // 1 MiB: more than a second of rows even at 1 kHz, so data reaches the
   // kernel when flush() says so (the recorders' interval), predictably, in
   // few large writes - not whenever a small default buffer happens to fill.
-  // (glibc ignores the size unless it is given the buffer.)
-  buffer_ = std::make_unique<char[]>(kBufferSize);
+  // (glibc ignores the size unless it is given the buffer.) Left
+  // uninitialised: stdio writes before it reads, and zeroing it touched all
+  // 256 of its pages (a page fault each) for every file, even a manifest of
+  // a few hundred bytes (issue 32: ~700 of a sweep's 2 000 faults).
+  buffer_ = std::make_unique_for_overwrite<char[]>(kBufferSize);
   std::setvbuf(file_, buffer_.get(), _IOFBF, kBufferSize);
   syncDirectory(path.parent_path());
 }

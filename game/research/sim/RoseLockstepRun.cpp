@@ -6,9 +6,25 @@
 #include "engine/physics/BatchedRk4.h"
 #include "engine/physics/Integrator.h"
 #include "engine/physics/RoseDrive.h"
+#include "engine/physics/StateLayout.h"
 #include "engine/physics/Stepper.h"
 
 namespace hemiroll::game {
+
+namespace {
+
+// A StateOnly row element by element: LaneBatch::state has just written x
+// one element at a time, and paired loads of it would wait for those stores
+// to reach the cache instead of being forwarded (as in RungeKutta4::step).
+HEMIROLL_SCALAR_LOOPS void fillStateOnly(TrajectoryRow& row, double t, const physics::Vec2& p,
+                                         const physics::BodyState& x) {
+  row.time = t;
+  row.state[physics::force_slot::x_p] = p[0];
+  row.state[physics::force_slot::y_p] = p[1];
+  for (int k = 0; k < 8; ++k) row.state[physics::force_slot::body + k] = x[k];
+}
+
+}  // namespace
 
 bool RoseLockstepRun::eligible(const task::ScenarioDef& scenario, const RunSettings& settings) {
   return scenario.drive.kind == task::DriveKind::Rose && settings.integrator == "rk4" &&
@@ -35,19 +51,26 @@ std::vector<RunSummary> RoseLockstepRun::run(const LaneRowCallback& onRow) const
   physics::RoseBatch batch(width_);
   physics::RungeKutta4<8> rk4;
   std::vector<RunSummary> summaries(lanes);
-  auto emit = [&](std::size_t lane, double t, const physics::BodyState& x) {
+  // A row at t; `drive` is the rose's p at t where the lanes have it
+  // already (a StateOnly row then needs no scalar evaluation of the rose).
+  auto emitWith = [&](std::size_t lane, double t, const physics::BodyState& x, const physics::Vec2* drive) {
     TrajectoryRow row;
     if (content_ == RowContent::Full) {
       row = roseRow(systems[lane], t, x);
     } else {
-      row.time = t;
-      row.state = systems[lane].fullState(t, x);
+      fillStateOnly(row, t, drive != nullptr ? *drive : roses[lane].at(t).p, x);
     }
     summaries[lane].endTime = row.time;
     summaries[lane].finalEnergy = row.energy;
     onRow(lane, row);
   };
+  auto emit = [&](std::size_t lane, double t, const physics::BodyState& x) { emitWith(lane, t, x, nullptr); };
 
+  std::size_t active = lanes;  // batch.activeCount(), kept here rather than counted at every step
+  auto retire = [&](int lane) {
+    batch.retire(lane);
+    --active;
+  };
   for (std::size_t lane = 0; lane < lanes; ++lane) {
     const task::ScenarioDef& s = scenarios_[lane];
     roses.emplace_back(s.drive.rose);
@@ -56,35 +79,43 @@ std::vector<RunSummary> RoseLockstepRun::run(const LaneRowCallback& onRow) const
     batch.add(s.params, s.drive.rose, x0);
     emit(lane, 0.0, x0);
     summaries[lane].event = systems[lane].domainEvent(0.0, x0);  // as the Stepper classifies its start
-    if (summaries[lane].event != physics::DomainEvent::None) batch.retire(static_cast<int>(lane));
+    if (summaries[lane].event != physics::DomainEvent::None) retire(static_cast<int>(lane));
   }
 
   const long long steps = ScenarioRun::stepCount(settings_);
   const double lastStep = settings_.duration - static_cast<double>(steps - 1) * settings_.timeStep;
   double start = 0.0;  // the grid time the step begins at
-  for (long long i = 1; i <= steps && batch.activeCount() > 0; ++i) {
+  for (long long i = 1; i <= steps && active > 0; ++i) {
     const double h = i == steps ? lastStep : settings_.timeStep;
     const double target = i == steps ? settings_.duration : static_cast<double>(i) * settings_.timeStep;
     batch.step(start, h, target);
+    // The same for every lane of this step (a division per lane was ~1 % of a sweep).
+    const double end = start + h;
+    const bool rowStep = i % settings_.every == 0 || i == steps;
+    const bool offGrid = i < steps && target != end;
     for (std::size_t lane = 0; lane < lanes; ++lane) {
       const int index = static_cast<int>(lane);
       if (!batch.active(index)) continue;
       RunSummary& summary = summaries[lane];
       summary.steps = i;
       const physics::BodyState x = batch.state(index);
-      if (systems[lane].domainEventWith(start + h, x, batch.drivePosition(index)) == physics::DomainEvent::None) {
-        if (i % settings_.every == 0 || i == steps) emit(lane, target, x);
+      if (systems[lane].domainEventWith(end, x, batch.drivePosition(index)) == physics::DomainEvent::None) {
+        if (rowStep) {
+          const physics::Vec2 drive = batch.gridDrivePosition(index);  // the rose at target, RoseDrive::at's bits
+          emitWith(lane, target, x, &drive);
+        }
         // ScenarioRun puts the clock on the grid (Stepper::reset), which
         // classifies the state again at the grid time; where that differs
         // from start + h in the last bit, so may the verdict, and its next
         // step then reports the event without stepping.
-        if (i < steps && target != start + h) {
+        if (offGrid) {
           const physics::DomainEvent atGrid = systems[lane].domainEventWith(target, x, batch.gridDrivePosition(index));
           if (atGrid != physics::DomainEvent::None) {
             summary.steps = i + 1;
             summary.event = atGrid;
-            emit(lane, target, x);
-            batch.retire(index);
+            const physics::Vec2 drive = batch.gridDrivePosition(index);
+            emitWith(lane, target, x, &drive);
+            retire(index);
           }
         }
         continue;
@@ -94,7 +125,7 @@ std::vector<RunSummary> RoseLockstepRun::run(const LaneRowCallback& onRow) const
       physics::Stepper<8> stepper(systems[lane], rk4, batch.previousState(index), start);
       summary.event = stepper.advance(h).event;
       emit(lane, stepper.time(), stepper.state());
-      batch.retire(index);
+      retire(index);
     }
     start = target;
   }

@@ -24,9 +24,11 @@ class RoseLockstepRun {
 
   static bool eligible(const task::ScenarioDef& scenario, const RunSettings& settings);
 
-  // What a row holds: everything ScenarioRun's has, or only the time and
-  // the state (energy and face force left 0, and so the summary's final
-  // energy): a sweep measures neither, and they cost it ~8 % (issue 32).
+  // What a row holds: everything ScenarioRun's has, or only the time, the
+  // mass point's position and the body's state (the mass point's velocity,
+  // the energy and the face force left 0, and so the summary's final
+  // energy): a sweep measures none of those, and they cost it ~8 % (issue
+  // 32); the position comes from the lanes' own evaluation of the rose.
   enum class RowContent { Full, StateOnly };
 
   // Every scenario eligible; width is a lane width this CPU runs

@@ -38,6 +38,12 @@ struct PointMeasurement {
   std::string notes() const;
 };
 
+// A lower bound of cos(u) cos(v), the cosine of the face normal's tilt from
+// vertical, from a few multiplications: within 1e-6 of it for |u|, |v| up to
+// 0.6 rad; -1, below every cosine, where it does not bound (an angle beyond
+// ~1.57 rad, or NaN).
+double cosTiltLowerBound(double u, double v);
+
 // Rows every round(0.01 s / dt) steps (at least every step): the analysis
 // resamples to at most 100 Hz anyway.
 long long sampleEvery(double timeStep);

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -73,6 +74,24 @@ TEST(PointMeasurement, TheTiltIsTheFaceNormalsAngleFromVertical) {
         const physics::Mat3 R = physics::makeOrientation(u, v, psi).R;
         EXPECT_NEAR(std::cos(u) * std::cos(v), R(2, 2), 1e-15);
       }
+}
+
+// The bound the recorder skips most rows' cosines by: never above the
+// cosine (on a grid of angles well past the face's rim, both signs), and
+// close to it over the tilts a sweep meets, or it would skip nothing.
+TEST(PointMeasurement, TheTiltCosinesLowerBoundIsBelowItAndClose) {
+  double worstClose = 0.0;
+  for (double u = -3.0; u <= 3.0; u += 0.01)
+    for (double v = -3.0; v <= 3.0; v += 0.0137) {
+      const double exact = std::cos(u) * std::cos(v);
+      const double bound = cosTiltLowerBound(u, v);
+      ASSERT_LE(bound, exact + 1e-15) << "u = " << u << ", v = " << v;
+      if (std::abs(u) <= 0.6 && std::abs(v) <= 0.6) worstClose = std::max(worstClose, exact - bound);
+    }
+  EXPECT_LT(worstClose, 1e-6);
+  EXPECT_GT(worstClose, 0.0);  // a bound, not the cosine itself
+  EXPECT_EQ(cosTiltLowerBound(std::nan(""), 0.1), -1.0);
+  EXPECT_EQ(cosTiltLowerBound(0.1, INFINITY), -1.0);
 }
 
 TEST(PointMeasurement, SamplesAtAbout100Hz) {
