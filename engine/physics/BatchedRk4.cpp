@@ -1,6 +1,7 @@
 #include "engine/physics/BatchedRk4.h"
 
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -122,13 +123,19 @@ int RoseBatch::add(const HemisphereParams& params, const RoseDef& rose, const Bo
   rowMutable(lanes::kRoseR2)[lane] = rose.r2;
   rowMutable(lanes::kRoseK)[lane] = rose.k;
   rowMutable(lanes::kRoseOmega)[lane] = rose.omega;
+  driveRowsStale_ = true;
   return lane;
 }
 
 void RoseBatch::step(double t, double h, double gridEnd) {
   lanes::BatchView v = beginStep(-1);
-  drivePadded_ = v.padded;
-  driveEnd_.resize(4 * static_cast<std::size_t>(v.padded));  // allocates only when lanes were added
+  if (driveRowsStale_) {  // allocates only when lanes were added
+    drivePadded_ = v.padded;
+    driveEnd_.assign(lanes::kDriveRows * static_cast<std::size_t>(v.padded), 0.0);
+    std::fill_n(driveEnd_.begin() + static_cast<std::ptrdiff_t>(lanes::kKeptSampleTime) * v.padded, v.padded,
+                std::numeric_limits<double>::quiet_NaN());
+    driveRowsStale_ = false;
+  }
   v.drive = driveEnd_.data();
   v.gridEnd = gridEnd;
   switch (width()) {
@@ -140,12 +147,13 @@ void RoseBatch::step(double t, double h, double gridEnd) {
 }
 
 Vec2 RoseBatch::drivePosition(int lane) const {
-  return {driveEnd_[static_cast<std::size_t>(lane)], driveEnd_[static_cast<std::size_t>(drivePadded_ + lane)]};
+  auto at = [&](int r) { return driveEnd_[static_cast<std::size_t>(r) * drivePadded_ + lane]; };
+  return {at(lanes::kEndX), at(lanes::kEndY)};
 }
 
 Vec2 RoseBatch::gridDrivePosition(int lane) const {
-  return {driveEnd_[static_cast<std::size_t>(2 * drivePadded_ + lane)],
-          driveEnd_[static_cast<std::size_t>(3 * drivePadded_ + lane)]};
+  auto at = [&](int r) { return driveEnd_[static_cast<std::size_t>(r) * drivePadded_ + lane]; };
+  return {at(lanes::kGridX), at(lanes::kGridY)};
 }
 
 ForceDrivenBatch::ForceDrivenBatch(std::optional<ForceMethod> coupling, int width)

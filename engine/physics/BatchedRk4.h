@@ -49,12 +49,15 @@ struct BatchView {
   double* state;
   int padded;
   int method;  // the coupling's ForceMethod, or -1 for free motion (12-state only)
-  // Rose only: the kernel writes the drive's p at the step's end t + h here,
-  // x in drive[0 .. padded), y in drive[padded .. 2 padded), and p at
-  // gridEnd in the next two rows (RoseBatch::drivePosition, gridDrivePosition).
+  // Rose only: kDriveRows rows of `padded` (DriveRow). The kernel writes the
+  // drive's p at the step's end t + h (RoseBatch::drivePosition) and the
+  // rose's p and p' at gridEnd with that time (gridDrivePosition, and the
+  // sample the next step reuses if it begins there). The caller sets the
+  // kept time to NaN where the rows hold no sample of the lanes' roses.
   double* drive = nullptr;
   double gridEnd = 0.0;
 };
+enum DriveRow : int { kEndX, kEndY, kGridX, kGridY, kKeptPDotX, kKeptPDotY, kKeptSampleTime, kDriveRows };
 // Rows shared by both models: the mass constants, then whether a lane is active.
 enum Row : int {
   kPointMass,
@@ -155,6 +158,9 @@ class RoseBatch final : public LaneBatch<8> {
  private:
   std::vector<double> driveEnd_;
   int drivePadded_ = 0;
+  // A lane was added since the drive rows were laid out: their kept samples
+  // are not of the lanes' present roses (or rows).
+  bool driveRowsStale_ = true;
 };
 
 // The 12-state force-driven model (ForceDrivenSystem): free motion, or every

@@ -88,25 +88,49 @@ inline bool anyActive(const BatchView& v, int first) {
   return false;
 }
 
+// The same time to the bit: -0.0 and +0.0 give the rose different signs of
+// zero, so == would not do; a NaN time never matches (it may mark "none").
+inline bool sameTime(double a, double b) {
+  return a == b && __builtin_bit_cast(unsigned long long, a) == __builtin_bit_cast(unsigned long long, b);
+}
+
+// The rose is sampled once per distinct time: RK4's stages 2 and 3 share
+// t + h/2, and stage 1's t is usually the time the previous step kept its
+// sample at (its grid end, BatchView::drive). Same time, same inputs, so
+// the reused sample has the bits a new one would have.
 template <class T>
 inline void roseStep(const BatchView& v, double t, double h) {
+  auto driveRow = [&](int r, int first) { return v.drive + static_cast<std::size_t>(r) * v.padded + first; };
   for (int first = 0; first < v.padded; first += laneCount<T>()) {
     if (!anyActive<T>(v, first)) continue;
     const MassConstantsOf<T> c = massConstantsAt<T>(v, first);
     auto at = [&](int r) { return rowAt<T>(v, r, first); };
     const T r1 = at(kRoseR1), r2 = at(kRoseR2), k = at(kRoseK), omega = at(kRoseOmega);
-    Real2Of<T> p;  // after the step: the last stage's, at t + h
-    stepGroup<8, T>(v, first, t, h, [&](double tau, const T* x, T* dxdt) {
+    double sampleTime = *driveRow(kKeptSampleTime, first);
+    Real2Of<T> p{load<T>(driveRow(kGridX, first)), load<T>(driveRow(kGridY, first))};
+    Real2Of<T> pDot{load<T>(driveRow(kKeptPDotX, first)), load<T>(driveRow(kKeptPDotY, first))};
+    auto sampleAt = [&](double tau) {
+      if (sameTime(tau, sampleTime)) return;
       const RoseSampleOf<T> s = roseSampleOf(r1, r2, k, omega, tau);
       p = s.p;
-      prescribedRatesOf(c, s.p, s.pDot, x, dxdt);
+      pDot = s.pDot;
+      sampleTime = tau;
+    };
+    stepGroup<8, T>(v, first, t, h, [&](double tau, const T* x, T* dxdt) {
+      sampleAt(tau);
+      prescribedRatesOf(c, p, pDot, x, dxdt);
     });
-    store(v.drive + first, p.x);
-    store(v.drive + v.padded + first, p.y);
-    // Where the grid time is not t + h to the bit, the rose once more there.
-    const Real2Of<T> grid = v.gridEnd == t + h ? p : roseSampleOf(r1, r2, k, omega, v.gridEnd).p;
-    store(v.drive + 2 * v.padded + first, grid.x);
-    store(v.drive + 3 * v.padded + first, grid.y);
+    // p is now the last stage's, at t + h.
+    store(driveRow(kEndX, first), p.x);
+    store(driveRow(kEndY, first), p.y);
+    // Where the grid time is not t + h to the bit, the rose once more there;
+    // it is the sample kept for the next step, which begins there.
+    sampleAt(v.gridEnd);
+    store(driveRow(kGridX, first), p.x);
+    store(driveRow(kGridY, first), p.y);
+    store(driveRow(kKeptPDotX, first), pDot.x);
+    store(driveRow(kKeptPDotY, first), pDot.y);
+    for (int lane = 0; lane < laneCount<T>(); ++lane) driveRow(kKeptSampleTime, first)[lane] = sampleTime;
   }
 }
 

@@ -177,10 +177,32 @@ inline void sinCos2(double a, double b, SinCos& outA, SinCos& outB) {
   outB = {both.sin[1], both.cos[1]};
 }
 
+namespace detail {
+// Whether every lane of a comparison's mask (0 or -1 per lane) is set: the
+// halves ANDed down to two lanes, then one test. Testing lane by lane, GCC
+// extracted each lane to a general register and branched on it (about 20
+// instructions and 8 branches at 8 lanes, in each of a step's sinCosLanes).
+template <class M>
+inline bool allLanesSet(M m) {
+  constexpr int kLanes = sizeof(M) / 8;
+  if constexpr (kLanes == 1) {
+    return m[0] != 0;
+  } else if constexpr (kLanes == 2) {
+    return (m[0] & m[1]) != 0;
+  } else if constexpr (kLanes == 4) {
+    return allLanesSet(__builtin_shufflevector(m, m, 0, 1) & __builtin_shufflevector(m, m, 2, 3));
+  } else {
+    static_assert(kLanes == 8, "2, 4 or 8 lanes");
+    return allLanesSet(__builtin_shufflevector(m, m, 0, 1, 2, 3) & __builtin_shufflevector(m, m, 4, 5, 6, 7));
+  }
+}
+}  // namespace detail
+
 // Each lane of T (a GCC vector of doubles, BatchedRk4.h) with exactly the
-// bits sinCos gives that lane's angle. It always reduces: for |x| < 0.78 the
-// reduction gives n = 0 and r = x exactly, so skipping it (as sinCos does)
-// changes no bit; the reduction and quadrant logic are sinCos2's.
+// bits sinCos gives that lane's angle. Where every lane is below 0.78 it
+// skips the reduction as sinCos does (the reduction would give n = 0 and
+// r = x exactly, quadrant 0: no bit changes); else it reduces every lane,
+// with sinCos2's reduction and quadrant logic.
 template <class T>
 inline SinCosOf<T> sinCosLanes(T x) {
   using namespace detail;
@@ -188,9 +210,7 @@ inline SinCosOf<T> sinCosLanes(T x) {
   constexpr int kLanes = sizeof(T) / sizeof(double);
   // NaN fails the comparisons, so it takes the per-lane path as in sinCos.
   const LaneInts reducible = (x > -kExactReductionLimit) & (x < kExactReductionLimit);
-  bool allReducible = true;
-  for (int lane = 0; lane < kLanes; ++lane) allReducible = allReducible && reducible[lane] != 0;
-  if (!allReducible) {
+  if (!allLanesSet(reducible)) {
     double sines[kLanes], cosines[kLanes];
     for (int lane = 0; lane < kLanes; ++lane) {
       const SinCos one = sinCos(x[lane]);
@@ -202,6 +222,8 @@ inline SinCosOf<T> sinCosLanes(T x) {
     __builtin_memcpy(&out.cos, cosines, sizeof out.cos);
     return out;
   }
+  // The frame's tilts are mostly small: the reduction off their chain.
+  if (allLanesSet((x > -kNoReductionLimit) & (x < kNoReductionLimit))) return {sinKernel(x), cosKernel(x)};
   return reducedSinCos(x);
 }
 

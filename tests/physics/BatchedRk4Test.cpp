@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <deque>
 #include <optional>
 #include <random>
 #include <vector>
@@ -130,6 +131,70 @@ void expectRoseLanesMatchScalar(int width, int steps, int retireLane, int retire
 
 TEST(BatchedRk4Test, RoseLanesHaveTheScalarBitsAtEveryWidth) {
   for (int width : supportedWidths()) expectRoseLanesMatchScalar(width, 300, 3, 120);
+}
+
+// The lanes keep the rose's sample at a step's grid end and reuse it when
+// the next step begins at that time to the bit. A clock that does not go on
+// from there (a step taken again from an earlier time, a step from t + h
+// where the grid end was not t + h), and lanes added beside ones already
+// stepped (the kept sample is of other roses), must each sample the rose
+// anew: every lane keeps the scalar bits throughout. (The steps at -0.0 and
+// of length 0 only check that those clocks keep the bits too: a rose at
+// -0.0 differs from one at +0.0 only in the sign of a zero in p', which the
+// state does not show, so they cannot tell == from the kernel's bit test.)
+void expectRoseLanesMatchScalarOnAnIrregularClock(int width) {
+  const std::vector<RoseLane> lanes = roseLanes();
+  physics::RoseBatch batch(width);
+  std::deque<physics::RoseDrive> roses;
+  std::deque<physics::PrescribedDriveSystem> systems;
+  std::vector<BodyState> scalar;
+  auto addLanes = [&](int count) {
+    for (int i = 0; i < count; ++i) {
+      const RoseLane& l = lanes[scalar.size()];
+      batch.add(l.params, l.rose, l.x0);
+      roses.emplace_back(l.rose);
+      systems.emplace_back(l.params, roses.back());
+      scalar.push_back(l.x0);
+    }
+  };
+  physics::RungeKutta4<8> rk4;
+  const double h = 1e-3;
+  int step = 0;
+  auto stepAll = [&](double t, double stepSize, double gridEnd, const char* what) {
+    batch.step(t, stepSize, gridEnd);
+    for (std::size_t lane = 0; lane < scalar.size(); ++lane) {
+      rk4.step(systems[lane], t, scalar[lane], stepSize);
+      ASSERT_TRUE(sameBits<8>(batch.state(static_cast<int>(lane)), scalar[lane]))
+          << "width " << width << ", lane " << lane << ", step " << step << " (" << what << ")";
+      const physics::Vec2 q = roses[lane].at(gridEnd).p;
+      ASSERT_EQ(batch.gridDrivePosition(static_cast<int>(lane)).x(), q.x()) << "width " << width << ", " << what;
+      ASSERT_EQ(batch.gridDrivePosition(static_cast<int>(lane)).y(), q.y()) << "width " << width << ", " << what;
+    }
+    ++step;
+  };
+  // Three lanes; five more into the groups already stepped (eight lanes lay
+  // out as before at every width); the rest into new groups.
+  addLanes(3);
+  for (int i = 0; i < 10; ++i) stepAll(i * h, h, (i + 1) * h, "on the grid");
+  addLanes(5);
+  for (int i = 10; i < 15; ++i) stepAll(i * h, h, (i + 1) * h, "after lanes joined stepped groups");
+  addLanes(kLanes - 8);
+  for (int i = 15; i < 20; ++i) stepAll(i * h, h, (i + 1) * h, "after lanes were added in new groups");
+  stepAll(5 * h, h, 6 * h, "taken again from an earlier time");
+  // A grid end off t + h, and the next step from t + h instead.
+  int off = 1;
+  while (static_cast<double>(off + 1) * h == static_cast<double>(off) * h + h) ++off;
+  const double t = static_cast<double>(off) * h;
+  ASSERT_NE(t + h, static_cast<double>(off + 1) * h);
+  stepAll(t, h, static_cast<double>(off + 1) * h, "a grid end off t + h");
+  stepAll(t + h, h, t + 2 * h, "from t + h, not from the grid end");
+  stepAll(-h, h, 0.0, "ending at +0.0");
+  stepAll(-0.0, h, h, "from -0.0");
+  stepAll(h, 0.0, h, "a step of length 0");
+}
+
+TEST(BatchedRk4Test, TheRoseIsReusedOnlyAtItsOwnTimeAndRoses) {
+  for (int width : supportedWidths()) expectRoseLanesMatchScalarOnAnIrregularClock(width);
 }
 
 TEST(BatchedRk4Test, TheBestWidthIsOneThisCpuRuns) {

@@ -87,6 +87,49 @@ TEST(SinCos, LanesGiveTheBitsOfSinCosOverTheReductionRange) {
   }
 }
 
+// sinCosLanes decides for the whole vector: every lane small (no reduction),
+// every lane in the exact range (reduced), or lane by lane. One lane off the
+// others' case, at each position and each width, must move the whole vector
+// to the wider path; angles at the edges of the small range (0.78, ±0) too.
+template <class T>
+void expectEveryLaneDecidesTheVectorsPath() {
+  constexpr int kLanes = sizeof(T) / sizeof(double);
+  auto sameBits = [](double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+  const double small[] = {0.0, -0.0, 1e-300, -0.5, 0.3, std::nextafter(0.78, 0.0), -std::nextafter(0.78, 0.0), 0.1};
+  // Each outside the small range: 1.0 and -2.5 need the reduction (the kernel
+  // alone gives other bits on them), +-1e300 and NaN libm; +-0.78 is the edge.
+  const double odd[] = {0.78, -0.78, 1.0, -2.5, 1e300, -1e300, NAN};
+  for (int position = 0; position < kLanes; ++position) {
+    for (double other : odd) {
+      for (bool allSmall : {true, false}) {
+        T x;
+        for (int lane = 0; lane < kLanes; ++lane) x[lane] = small[(lane + position) % 8];
+        if (!allSmall) x[position] = other;
+        const physics::SinCosOf<T> lanes = physics::sinCosLanes(x);
+        for (int lane = 0; lane < kLanes; ++lane) {
+          const physics::SinCos one = physics::sinCos(x[lane]);
+          if (std::isnan(x[lane])) {
+            ASSERT_TRUE(std::isnan(lanes.sin[lane]) && std::isnan(lanes.cos[lane]));
+            continue;
+          }
+          ASSERT_TRUE(sameBits(lanes.sin[lane], one.sin) && sameBits(lanes.cos[lane], one.cos))
+              << kLanes << " lanes, lane " << lane << ", angle " << x[lane] << " beside " << other << " at lane "
+              << position;
+        }
+      }
+    }
+  }
+}
+
+TEST(SinCos, LanesTakeTheirPathFromEveryLane) {
+  typedef double Lanes2 __attribute__((vector_size(16)));
+  typedef double Lanes4 __attribute__((vector_size(32)));
+  typedef double Lanes8 __attribute__((vector_size(64)));
+  expectEveryLaneDecidesTheVectorsPath<Lanes2>();
+  expectEveryLaneDecidesTheVectorsPath<Lanes4>();
+  expectEveryLaneDecidesTheVectorsPath<Lanes8>();
+}
+
 TEST(SinCos, FallsBackBeyondTheExactReduction) {
   for (double x : {2e6, -3.3e7, 1e300}) {
     EXPECT_EQ(physics::sinCos(x).sin, std::sin(x));

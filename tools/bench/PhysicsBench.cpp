@@ -189,11 +189,18 @@ void BM_PrescribedLockstepRk4(benchmark::State& state) {
     starts.push_back(typicalBody());
     batch.add(HemisphereParams{}, rose, starts.back());
   }
+  // The clock as a run keeps it (RoseLockstepRun): each step begins at the
+  // grid time the last one ended on, so the kernel may reuse the rose there.
+  const double t0 = 1.3, h = 1e-3;
+  double start = t0;
   int steps = 0;
   for (auto _ : state) {
-    batch.step(1.3, 1e-3);
+    const double target = t0 + static_cast<double>(steps + 1) * h;
+    batch.step(start, h, target);
+    start = target;
     if (++steps == kLockstepRestart) {
       for (int lane = 0; lane < kLockstepLanes; ++lane) batch.setState(lane, starts[lane]);
+      start = t0;
       steps = 0;
     }
   }
