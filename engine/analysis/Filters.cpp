@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <numbers>
 
 namespace hemiroll::analysis {
@@ -25,12 +26,69 @@ std::vector<double> movingAverage(std::span<const double> values, std::size_t ha
   return out;
 }
 
+namespace {
+
+// The sums of whole windows, num_i = sum_k k (v[i+k] - v[i-k]) for k = 1 ..
+// h in ascending k, for i in [first, last): groups of R vectors of W samples
+// held in registers while k runs (issue 32: with the sums in memory, each k
+// loaded and stored every sample's sum again, and the rate's 150-sample
+// windows made this 12 % of a sweep point's analysis). Each lane does the
+// scalar operations of its sample in the scalar order (no contraction:
+// -ffp-contract=off), so the sums have the same bits at every width.
+template <std::size_t W, std::size_t R>
+[[gnu::always_inline]] inline void wholeWindowSums(const double* v, std::size_t first, std::size_t last,
+                                                   std::size_t h, double* out) {
+  typedef double Lanes __attribute__((vector_size(W * sizeof(double))));
+  constexpr std::size_t kGroup = W * R;
+  std::size_t i = first;
+  for (; i + kGroup <= last; i += kGroup) {
+    Lanes sum[R] = {};
+    for (std::size_t k = 1; k <= h; ++k) {
+      const double kk = static_cast<double>(k);
+      for (std::size_t r = 0; r < R; ++r) {
+        Lanes ahead, behind;
+        std::memcpy(&ahead, v + i + r * W + k, sizeof ahead);
+        std::memcpy(&behind, v + i + r * W - k, sizeof behind);
+        sum[r] += kk * (ahead - behind);
+      }
+    }
+    for (std::size_t r = 0; r < R; ++r) std::memcpy(out + i + r * W, &sum[r], sizeof sum[r]);
+  }
+  for (; i < last; ++i) {
+    double sum = 0.0;
+    for (std::size_t k = 1; k <= h; ++k) sum += static_cast<double>(k) * (v[i + k] - v[i - k]);
+    out[i] = sum;
+  }
+}
+
+// One copy per instruction set, chosen once by the CPU (as BatchedRk4's
+// lanes are): 8 lanes under AVX-512F, 4 under AVX2, SSE2's 2 otherwise.
+__attribute__((target("avx512f"))) void wholeWindowSums8(const double* v, std::size_t first, std::size_t last,
+                                                         std::size_t h, double* out) {
+  wholeWindowSums<8, 4>(v, first, last, h, out);
+}
+__attribute__((target("avx2"))) void wholeWindowSums4(const double* v, std::size_t first, std::size_t last,
+                                                      std::size_t h, double* out) {
+  wholeWindowSums<4, 4>(v, first, last, h, out);
+}
+void wholeWindowSums2(const double* v, std::size_t first, std::size_t last, std::size_t h, double* out) {
+  wholeWindowSums<2, 4>(v, first, last, h, out);
+}
+
+using WholeWindowSums = void (*)(const double*, std::size_t, std::size_t, std::size_t, double*);
+WholeWindowSums wholeWindowSumsForThisCpu() {
+  if (__builtin_cpu_supports("avx512f")) return wholeWindowSums8;
+  if (__builtin_cpu_supports("avx2")) return wholeWindowSums4;
+  return wholeWindowSums2;
+}
+
+}  // namespace
+
 // Each sample's slope is sum_k k (v[i+k] - v[i-k]) / (sum_k 2 k^2 dt), k = 1
 // .. h, both sums in ascending k. Where the window is whole (h = halfWidth)
-// the loops run k outside and i inside (in blocks of samples), so that the samples' sums advance
-// side by side instead of each waiting on its own chain of additions
-// (issue 32: 7 % of a sweep), and the denominator is summed once; each sum
-// still takes its terms in the same order, so the slopes have the same bits.
+// the samples' sums advance side by side in registers (wholeWindowSums) and
+// the denominator is summed once; each sum still takes its terms in the same
+// order, so the slopes have the same bits.
 std::vector<double> localSlope(std::span<const double> values, double dt, std::size_t halfWidth) {
   const std::size_t n = values.size();
   std::vector<double> out(n, 0.0);
@@ -53,16 +111,8 @@ std::vector<double> localSlope(std::span<const double> values, double dt, std::s
       const double kk = static_cast<double>(k);
       den += 2.0 * kk * kk;
     }
-    // In blocks of samples, so that a block's sums stay in the L1 cache over
-    // all k (a whole column's did not: they went to L2 and back once per k).
-    constexpr std::size_t kBlock = 256;
-    for (std::size_t block = first; block < last; block += kBlock) {
-      const std::size_t end = std::min(block + kBlock, last);
-      for (std::size_t k = 1; k <= halfWidth; ++k) {
-        const double kk = static_cast<double>(k);
-        for (std::size_t i = block; i < end; ++i) out[i] += kk * (values[i + k] - values[i - k]);
-      }
-    }
+    static const WholeWindowSums sums = wholeWindowSumsForThisCpu();
+    sums(values.data(), first, last, halfWidth, out.data());
     const double scale = den * dt;
     for (std::size_t i = first; i < last; ++i) out[i] /= scale;
   }
