@@ -94,26 +94,26 @@ std::vector<double> localSlope(std::span<const double> values, double dt, std::s
   std::vector<double> out(n, 0.0);
   if (n < 2) return out;
   halfWidth = std::max<std::size_t>(halfWidth, 1);
+  // The denominators sum_k 2 k^2 for k = 1 .. h, each summed in ascending
+  // k, so the one for h is the one for h - 1 plus 2 h^2: the same bits from
+  // one running sum (the ends' shrinking windows need every h below halfWidth).
+  const std::size_t widest = std::min(halfWidth, n);  // no window is wider than the samples
+  std::vector<double> denominators(widest + 1, 0.0);
+  for (std::size_t k = 1; k <= widest; ++k) {
+    const double kk = static_cast<double>(k);
+    denominators[k] = denominators[k - 1] + 2.0 * kk * kk;
+  }
   auto windowSlope = [&](std::size_t i, std::size_t h) {
-    double num = 0.0, den = 0.0;
-    for (std::size_t k = 1; k <= h; ++k) {
-      const double kk = static_cast<double>(k);
-      num += kk * (values[i + k] - values[i - k]);
-      den += 2.0 * kk * kk;
-    }
-    return num / (den * dt);
+    double num = 0.0;
+    for (std::size_t k = 1; k <= h; ++k) num += static_cast<double>(k) * (values[i + k] - values[i - k]);
+    return num / (denominators[h] * dt);
   };
   // Whole windows: i in [halfWidth, n - halfWidth).
   const std::size_t first = std::min(halfWidth, n), last = n > halfWidth ? std::max(first, n - halfWidth) : first;
   if (last > first) {
-    double den = 0.0;
-    for (std::size_t k = 1; k <= halfWidth; ++k) {
-      const double kk = static_cast<double>(k);
-      den += 2.0 * kk * kk;
-    }
     static const WholeWindowSums sums = wholeWindowSumsForThisCpu();
     sums(values.data(), first, last, halfWidth, out.data());
-    const double scale = den * dt;
+    const double scale = denominators[halfWidth] * dt;
     for (std::size_t i = first; i < last; ++i) out[i] /= scale;
   }
   for (std::size_t i = 0; i < n; ++i) {
@@ -132,7 +132,10 @@ std::vector<double> unwrapAngles(std::span<const double> angles) {
   double offset = 0.0;
   for (std::size_t i = 1; i < out.size(); ++i) {
     const double step = angles[i] - angles[i - 1];
-    offset -= kTwoPi * std::round(step / kTwoPi);
+    // A step under 3 rad rounds to no turn; skipping its division and
+    // rounding leaves the offset as it was (it is never -0, so subtracting
+    // +-0 changes no bit).
+    if (!(std::abs(step) < 3.0)) offset -= kTwoPi * std::round(step / kTwoPi);
     out[i] = angles[i] + offset;
   }
   return out;

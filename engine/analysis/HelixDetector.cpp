@@ -26,7 +26,10 @@ std::vector<double> headings(const std::vector<double>& vx, const std::vector<do
 void measureArc(const std::vector<double>& lx, const std::vector<double>& ly, double dt, double period,
                 ArcFeatures& arc) {
   const std::size_t n = lx.size();
-  for (std::size_t i = 1; i < n; ++i) arc.length += std::hypot(lx[i] - lx[i - 1], ly[i] - ly[i - 1]);
+  // Kept whole: the loops are placed along it (findLoops).
+  arc.along.assign(n, 0.0);
+  for (std::size_t i = 1; i < n; ++i) arc.along[i] = arc.along[i - 1] + std::hypot(lx[i] - lx[i - 1], ly[i] - ly[i - 1]);
+  arc.length = n > 0 ? arc.along.back() : 0.0;
   const double duration = dt * static_cast<double>(n - 1);
   arc.driftSpeed = arc.length / duration;
   const CircleFit fit = fitCircle(lx, ly);
@@ -103,9 +106,7 @@ void findLoops(const std::vector<double>& relative, const UniformSeries& s, cons
   const double sense = loops.sense;
   // The first odd multiple of pi beyond the start, in the loops' sense.
   double target = sense * kPi * (2.0 * std::floor((sense * relative.front() / kPi + 1.0) / 2.0) + 1.0);
-  std::vector<double> arcLength(arc.x.size(), 0.0);
-  for (std::size_t i = 1; i < arc.x.size(); ++i)
-    arcLength[i] = arcLength[i - 1] + std::hypot(arc.x[i] - arc.x[i - 1], arc.y[i] - arc.y[i - 1]);
+  const std::vector<double>& arcLength = arc.along;
   std::vector<double> along;
   for (std::size_t i = 1; i < relative.size(); ++i) {
     if (sense * (relative[i] - target) < 0.0) continue;

@@ -59,6 +59,7 @@ struct ArcFeatures {
   double driftSpeed = 0.0;          // [m/s] length / duration
   TimeInterval span;                // of the low-passed trace
   std::vector<double> x, y;         // [m] the low-passed trace (for plots)
+  std::vector<double> along;        // [m] distance along it at each of its samples (from 0; length is the last)
 };
 
 struct LoopFeatures {

@@ -50,7 +50,9 @@ void addAngles(Path& p, const std::vector<double>& x, const std::vector<double>&
 }
 
 double rhoDelta(const std::vector<double>& rho, double fraction) {
-  return fraction * (quantile(rho, 0.95) - quantile(rho, 0.05));
+  constexpr double kPercentiles[] = {0.05, 0.95};
+  const std::vector<double> p = quantiles(rho, kPercentiles);
+  return fraction * (p[1] - p[0]);
 }
 
 std::vector<Leaf> leavesOf(const Path& p, const std::vector<Extremum>& ex) {
@@ -182,8 +184,10 @@ RoseFeatures detectRose(std::span<const double> time, std::span<const double> x,
   const Path path = centredPath(sx, sy, *xMin, *xMax, *yMin, *yMax, def.hysteresis, cx, cy);
   out.centreX = cx, out.centreY = cy;
 
-  const double rhoMedian = median(path.rho);
-  const double rhoRange = quantile(path.rho, 0.95) - quantile(path.rho, 0.05);  // rhoDelta's, taken once
+  constexpr double kLevels[] = {0.05, 0.5, 0.95};
+  const std::vector<double> levels = quantiles(path.rho, kLevels);
+  const double rhoMedian = levels[1];
+  const double rhoRange = levels[2] - levels[0];  // rhoDelta's, taken once
   const double modulation = rhoRange / rhoMedian;
   if (!(modulation >= def.minModulation)) {
     out.reason = "no rose: the distance from the centre varies by only " + shortNumber(100.0 * modulation) +

@@ -29,6 +29,46 @@ double quantile(std::span<const double> values, double q) {
   return low * (1.0 - w) + high * w;
 }
 
+// From the highest rank down: after the selection of rank b within [0, end),
+// [0, b) holds what lies below it and (b, end) what lies above, and
+// everything from `end` on is at least work[end] (the previous rank's
+// value), so the value at rank b + 1 is the least of (b, end] (the sort's).
+std::vector<double> quantiles(std::span<const double> values, std::span<const double> qs) {
+  std::vector<double> out(qs.size(), 0.0);
+  if (values.empty()) return out;
+  std::vector<double> work(values.begin(), values.end());
+  const std::size_t n = work.size();
+  struct Rank {
+    std::size_t q, below, above;
+    double w;
+  };
+  std::vector<Rank> ranks;
+  for (std::size_t i = 0; i < qs.size(); ++i) {
+    const double at = std::clamp(qs[i], 0.0, 1.0) * static_cast<double>(n - 1);
+    const auto below = static_cast<std::size_t>(std::floor(at));
+    ranks.push_back({i, below, std::min(below + 1, n - 1), at - static_cast<double>(below)});
+  }
+  std::sort(ranks.begin(), ranks.end(), [](const Rank& a, const Rank& b) { return a.below > b.below; });
+  std::size_t end = n;
+  double low = 0.0, high = 0.0;
+  for (const Rank& r : ranks) {
+    if (r.below < end) {
+      const auto first = work.begin();
+      std::nth_element(first, first + static_cast<std::ptrdiff_t>(r.below), first + static_cast<std::ptrdiff_t>(end));
+      low = work[r.below];
+      if (r.above == r.below) {
+        high = low;
+      } else {
+        const std::size_t last = std::min(end, n - 1);  // (b, end], within the values
+        high = *std::min_element(first + static_cast<std::ptrdiff_t>(r.above), first + static_cast<std::ptrdiff_t>(last) + 1);
+      }
+      end = r.below;
+    }  // else: the same rank as the one before, whose low and high stand
+    out[r.q] = low * (1.0 - r.w) + high * r.w;
+  }
+  return out;
+}
+
 double median(std::span<const double> values) { return quantile(values, 0.5); }
 
 double standardDeviation(std::span<const double> values) {

@@ -54,5 +54,26 @@ TEST(Statistics, QuantileBySelectionIsTheSortedDefinition) {
   }
 }
 
+// quantiles nests its selections (issue 32); each value must be quantile's
+// to the bit, whatever the order of the qs, with ties and repeated ranks.
+TEST(Statistics, QuantilesAtOnceAreEachQuantile) {
+  std::mt19937 rng(33);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  const std::vector<std::vector<double>> qSets = {
+      {0.5}, {0.05, 0.5, 0.95}, {0.95, 0.05}, {1.0, 0.0, 0.5, 0.5}, {0.3, 0.31, 0.32, 0.999, 0.001}, {}};
+  for (const std::size_t n : {1u, 2u, 3u, 10u, 101u, 1000u, 6001u}) {
+    std::vector<double> v(n);
+    for (double& x : v) x = std::round(8.0 * normal(rng)) / 8.0;  // coarse: many ties
+    if (n > 100) v[n / 2] = 100.0;                                  // and one far out
+    for (const std::vector<double>& qs : qSets) {
+      const std::vector<double> got = quantiles(v, qs);
+      ASSERT_EQ(got.size(), qs.size());
+      for (std::size_t i = 0; i < qs.size(); ++i)
+        EXPECT_EQ(got[i], quantile(v, qs[i])) << "n " << n << " q " << qs[i] << " of " << qs.size();
+    }
+  }
+  EXPECT_EQ(quantiles({}, std::vector<double>{0.5}), std::vector<double>{0.0});
+}
+
 }  // namespace
 }  // namespace hemiroll::analysis
