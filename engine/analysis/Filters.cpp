@@ -26,6 +26,24 @@ std::vector<double> movingAverage(std::span<const double> values, std::size_t ha
   return out;
 }
 
+std::pair<std::vector<double>, std::vector<double>> movingAverages(std::span<const double> x,
+                                                                   std::span<const double> y, std::size_t halfWidth) {
+  if (x.size() != y.size()) return {movingAverage(x, halfWidth), movingAverage(y, halfWidth)};
+  const std::size_t n = x.size();
+  std::vector<double> outX(n), outY(n), prefixX(n + 1, 0.0), prefixY(n + 1, 0.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    prefixX[i + 1] = prefixX[i] + x[i];
+    prefixY[i + 1] = prefixY[i] + y[i];
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t h = std::min({halfWidth, i, n - 1 - i});
+    const auto width = static_cast<double>(2 * h + 1);
+    outX[i] = (prefixX[i + h + 1] - prefixX[i - h]) / width;
+    outY[i] = (prefixY[i + h + 1] - prefixY[i - h]) / width;
+  }
+  return {std::move(outX), std::move(outY)};
+}
+
 namespace {
 
 // The sums of whole windows, num_i = sum_k k (v[i+k] - v[i-k]) for k = 1 ..
@@ -139,6 +157,51 @@ std::vector<double> unwrapAngles(std::span<const double> angles) {
     out[i] = angles[i] + offset;
   }
   return out;
+}
+
+namespace {
+
+// Which quarter about the centre a point lies in strictly inside: 0 about
+// +x, 1 about +y, 2 about -y; 3 about -x, on a diagonal, at the centre or
+// not finite. Two points strictly inside one of the first three have atan2
+// at most pi / 2 apart (plus rounding): a step that unwrapAngles rounds to
+// no turn. About -x the angle wraps from pi to -pi, and atan2(0, -0) = pi.
+int quarterOf(double dx, double dy) {
+  if (dx > std::abs(dy)) return 0;
+  if (dy > std::abs(dx)) return 1;
+  if (-dy > std::abs(dx)) return 2;
+  return 3;
+}
+
+}  // namespace
+
+// unwrapAngles' offset changes only at a step that rounds to a turn; steps
+// within one of the three safe quarters round to none (and subtracting 0
+// from the offset, which is never -0, changes no bit), so their angles are
+// not needed: only the ends' and those either side of any other step.
+double sweptAngleAbout(std::span<const double> x, std::span<const double> y, double cx, double cy) {
+  const std::size_t n = std::min(x.size(), y.size());
+  if (n == 0) return 0.0;
+  constexpr double kTwoPi = 2.0 * std::numbers::pi;
+  const double front = std::atan2(y[0] - cy, x[0] - cx);
+  double offset = 0.0, previous = front;  // previous: the angle at i - 1 where `known`
+  bool known = true;
+  int previousQuarter = quarterOf(x[0] - cx, y[0] - cy);
+  for (std::size_t i = 1; i < n; ++i) {
+    const double dx = x[i] - cx, dy = y[i] - cy;
+    const int quarter = quarterOf(dx, dy);
+    if (quarter == previousQuarter && quarter != 3) {
+      known = false;
+    } else {
+      if (!known) previous = std::atan2(y[i - 1] - cy, x[i - 1] - cx);
+      const double angle = std::atan2(dy, dx);
+      offset -= kTwoPi * std::round((angle - previous) / kTwoPi);
+      previous = angle, known = true;
+    }
+    previousQuarter = quarter;
+  }
+  const double back = known ? previous : std::atan2(y[n - 1] - cy, x[n - 1] - cx);
+  return (back + offset) - front;
 }
 
 }  // namespace hemiroll::analysis

@@ -40,16 +40,12 @@ void measureArc(const std::vector<double>& lx, const std::vector<double>& ly, do
   arc.rmsResidual = fit.rmsResidual;
   if (fit.curvature > 0.0) {
     double turn = 0.0;  // > 0: the trace goes counter-clockwise about the centre
-    std::vector<double> around(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      around[i] = std::atan2(ly[i] - fit.centreY, lx[i] - fit.centreX);
-      if (i > 0) turn += (lx[i] - lx[i - 1]) * (fit.centreY - ly[i - 1]) - (ly[i] - ly[i - 1]) * (fit.centreX - lx[i - 1]);
-    }
-    const std::vector<double> unwrapped = unwrapAngles(around);
+    for (std::size_t i = 1; i < n; ++i)
+      turn += (lx[i] - lx[i - 1]) * (fit.centreY - ly[i - 1]) - (ly[i] - ly[i - 1]) * (fit.centreX - lx[i - 1]);
     arc.curvature = turn >= 0.0 ? fit.curvature : -fit.curvature;
     arc.radius = fit.radius;
     arc.centreX = fit.centreX, arc.centreY = fit.centreY;
-    arc.sweptAngle = unwrapped.back() - unwrapped.front();
+    arc.sweptAngle = sweptAngleAbout(lx, ly, fit.centreX, fit.centreY);
   }
   const double independent = duration / period;
   arc.curvatureError = arc.length > 0.0 ? fit.rmsResidual / (arc.length * arc.length) *
@@ -74,7 +70,7 @@ void lowPassArc(const UniformSeries& s, double period, std::size_t h, ArcFeature
     arc.reason = "no arc: " + shortNumber(s.duration()) + " s is too short for the low-pass window of " + shortNumber(period) + " s";
     return;
   }
-  const std::vector<double> ax = movingAverage(s.channels[0], h), ay = movingAverage(s.channels[1], h);
+  const auto [ax, ay] = movingAverages(s.channels[0], s.channels[1], h);
   arc.x.assign(ax.begin() + static_cast<std::ptrdiff_t>(h), ax.end() - static_cast<std::ptrdiff_t>(h));
   arc.y.assign(ay.begin() + static_cast<std::ptrdiff_t>(h), ay.end() - static_cast<std::ptrdiff_t>(h));
   arc.span = {s.time(h), s.time(s.size() - 1 - h)};
@@ -146,7 +142,7 @@ HelixFeatures detectHelix(std::span<const double> time, std::span<const double> 
     return out;
   }
   const std::size_t light = halfWidthFor(def.lightSmoothing, s.dt);
-  const std::vector<double> sx = movingAverage(s.channels[0], light), sy = movingAverage(s.channels[1], light);
+  const auto [sx, sy] = movingAverages(s.channels[0], s.channels[1], light);
   const std::vector<double> vx = localSlope(sx, s.dt, 1), vy = localSlope(sy, s.dt, 1);
   std::vector<std::complex<double>> velocity(vx.size());
   for (std::size_t i = 0; i < vx.size(); ++i) velocity[i] = {vx[i], vy[i]};

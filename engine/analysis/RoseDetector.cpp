@@ -173,7 +173,7 @@ RoseFeatures detectRose(std::span<const double> time, std::span<const double> x,
     return out;
   }
   const std::size_t h = halfWidthFor(def.smoothingTime, series.dt);
-  const std::vector<double> sx = movingAverage(series.channels[0], h), sy = movingAverage(series.channels[1], h);
+  const auto [sx, sy] = movingAverages(series.channels[0], series.channels[1], h);
   const auto [xMin, xMax] = std::minmax_element(sx.begin(), sx.end());
   const auto [yMin, yMax] = std::minmax_element(sy.begin(), sy.end());
   if (std::hypot(*xMax - *xMin, *yMax - *yMin) < 1e-6) {
