@@ -179,6 +179,31 @@ int quarterOf(double dx, double dy) {
 // within one of the three safe quarters round to none (and subtracting 0
 // from the offset, which is never -0, changes no bit), so their angles are
 // not needed: only the ends' and those either side of any other step.
+std::vector<double> unwrapOffsetsAbout(std::span<const double> x, std::span<const double> y, double cx, double cy) {
+  const std::size_t n = std::min(x.size(), y.size());
+  std::vector<double> offsets(n, 0.0);
+  if (n == 0) return offsets;
+  constexpr double kTwoPi = 2.0 * std::numbers::pi;
+  double offset = 0.0, previous = std::atan2(y[0] - cy, x[0] - cx);
+  bool known = true;
+  int previousQuarter = quarterOf(x[0] - cx, y[0] - cy);
+  for (std::size_t i = 1; i < n; ++i) {
+    const double dx = x[i] - cx, dy = y[i] - cy;
+    const int quarter = quarterOf(dx, dy);
+    if (quarter == previousQuarter && quarter != 3) {
+      known = false;
+    } else {
+      if (!known) previous = std::atan2(y[i - 1] - cy, x[i - 1] - cx);
+      const double angle = std::atan2(dy, dx);
+      offset -= kTwoPi * std::round((angle - previous) / kTwoPi);
+      previous = angle, known = true;
+    }
+    offsets[i] = offset;
+    previousQuarter = quarter;
+  }
+  return offsets;
+}
+
 double sweptAngleAbout(std::span<const double> x, std::span<const double> y, double cx, double cy) {
   const std::size_t n = std::min(x.size(), y.size());
   if (n == 0) return 0.0;

@@ -35,4 +35,10 @@ std::vector<double> unwrapAngles(std::span<const double> angles);
 // to the bit, but with an atan2 only where a step may wrap (issue 32).
 double sweptAngleAbout(std::span<const double> x, std::span<const double> y, double cx, double cy);
 
+// What unwrapAngles adds to each point's atan2 about (cx, cy): the angle
+// it gives point i is atan2 + offsets[i] (point 0: the atan2 alone), to the
+// bit, for a path whose angles are wanted at a few points only (the rose's
+// leaf ends); an atan2 only where a step may wrap, as sweptAngleAbout.
+std::vector<double> unwrapOffsetsAbout(std::span<const double> x, std::span<const double> y, double cx, double cy);
+
 }  // namespace hemiroll::analysis

@@ -56,11 +56,12 @@ TEST(Filters, MovingAveragesAreTwoMovingAverages) {
   EXPECT_EQ(b, movingAverage(shorter, 1));
 }
 
-// sweptAngleAbout skips the atan2 of steps that cannot wrap (issue 32): it
-// must give unwrapAngles' turn to the bit, on paths that cross the -x axis
+// sweptAngleAbout and unwrapOffsetsAbout skip the atan2 of steps that
+// cannot wrap (issue 32): they must give unwrapAngles' turn and angles to
+// the bit, on paths that cross the -x axis
 // many times, stop at the centre (where atan2(0, -0) = pi), lie on the
 // axes and diagonals, jump, or hold a NaN.
-TEST(Filters, SweptAngleAboutIsTheUnwrappedTurnOfEveryAtan2) {
+TEST(Filters, SweptAngleAndOffsetsAboutAreUnwrapAnglesOfEveryAtan2) {
   auto plain = [](const std::vector<double>& x, const std::vector<double>& y, double cx, double cy) {
     std::vector<double> a(x.size());
     for (std::size_t i = 0; i < a.size(); ++i) a[i] = std::atan2(y[i] - cy, x[i] - cx);
@@ -92,6 +93,15 @@ TEST(Filters, SweptAngleAboutIsTheUnwrappedTurnOfEveryAtan2) {
     }
     const double fast = sweptAngleAbout(x, y, cx, cy), slow = plain(x, y, cx, cy);
     EXPECT_TRUE(sameBits(fast, slow) || (std::isnan(fast) && std::isnan(slow))) << "trial " << trial << ": " << fast << " against " << slow;
+    // Every point's unwrapped angle from the offsets, against unwrapAngles.
+    std::vector<double> a(n);
+    for (std::size_t i = 0; i < n; ++i) a[i] = std::atan2(y[i] - cy, x[i] - cx);
+    const std::vector<double> u = unwrapAngles(a), offsets = unwrapOffsetsAbout(x, y, cx, cy);
+    ASSERT_EQ(offsets.size(), n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const double angle = i == 0 ? a[0] : a[i] + offsets[i];
+      EXPECT_TRUE(sameBits(angle, u[i]) || (std::isnan(angle) && std::isnan(u[i]))) << "trial " << trial << " point " << i;
+    }
   }
   const std::vector<double> xs = {1.0, -0.0, -1.0}, ys = {0.0, 0.0, 1e-300};  // through the centre with dx = -0
   EXPECT_TRUE(sameBits(sweptAngleAbout(xs, ys, 0.0, 0.0), plain(xs, ys, 0.0, 0.0)));
