@@ -131,11 +131,14 @@ void findLoops(const std::vector<double>& relative, const UniformSeries& s, cons
 // one period into the arc, then count the loops against the arc's tangent.
 HelixFeatures detectHelix(std::span<const double> time, std::span<const double> x, std::span<const double> y,
                           const HelixDef& def) {
+  const std::span<const double> channels[] = {x, y};
+  return detectHelix(resampleUniform(time, channels, def.sampling), def);
+}
+
+HelixFeatures detectHelix(const UniformSeries& s, const HelixDef& def) {
   HelixFeatures out;
   ArcFeatures& arc = out.arc;
   LoopFeatures& loops = out.loops;
-  const std::span<const double> channels[] = {x, y};
-  const UniformSeries s = resampleUniform(time, channels, def.sampling);
   if (!s.ok()) {
     arc.reason = "no arc: " + s.problem;
     loops.reason = "no loops: " + s.problem;

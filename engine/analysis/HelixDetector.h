@@ -82,5 +82,7 @@ struct HelixFeatures {
 
 HelixFeatures detectHelix(std::span<const double> time, std::span<const double> x, std::span<const double> y,
                           const HelixDef& def = {});
+// The same on x and y already resampled by def.sampling (channels 0 and 1).
+HelixFeatures detectHelix(const UniformSeries& series, const HelixDef& def = {});
 
 }  // namespace hemiroll::analysis

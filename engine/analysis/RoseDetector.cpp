@@ -182,9 +182,12 @@ void countRevolutions(const std::vector<Leaf>& leaves, std::size_t first, std::s
 // run, measure it.
 RoseFeatures detectRose(std::span<const double> time, std::span<const double> x, std::span<const double> y,
                         const RoseDef& def) {
-  RoseFeatures out;
   const std::span<const double> channels[] = {x, y};
-  const UniformSeries series = resampleUniform(time, channels, def.sampling);
+  return detectRose(resampleUniform(time, channels, def.sampling), def);
+}
+
+RoseFeatures detectRose(const UniformSeries& series, const RoseDef& def) {
+  RoseFeatures out;
   if (!series.ok()) {
     out.reason = "no rose: " + series.problem;
     return out;
