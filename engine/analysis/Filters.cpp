@@ -134,8 +134,24 @@ std::vector<double> localSlope(std::span<const double> values, double dt, std::s
     const double scale = denominators[halfWidth] * dt;
     for (std::size_t i = first; i < last; ++i) out[i] /= scale;
   }
+  // The ends' shrinking windows: sample i and its mirror n - 1 - i have the
+  // same width, so their sums run side by side (each in its own order).
+  std::vector<bool> done(n, false);
+  for (std::size_t i = 1; i < first; ++i) {
+    const std::size_t j = n - 1 - i, h = std::min({halfWidth, i, j});
+    if (j < last || j <= i || h == 0) continue;
+    double numI = 0.0, numJ = 0.0;
+    for (std::size_t k = 1; k <= h; ++k) {
+      const double kk = static_cast<double>(k);
+      numI += kk * (values[i + k] - values[i - k]);
+      numJ += kk * (values[j + k] - values[j - k]);
+    }
+    out[i] = numI / (denominators[h] * dt);
+    out[j] = numJ / (denominators[h] * dt);
+    done[i] = done[j] = true;
+  }
   for (std::size_t i = 0; i < n; ++i) {
-    if (i >= first && i < last) continue;
+    if ((i >= first && i < last) || done[i]) continue;
     const std::size_t h = std::min({halfWidth, i, n - 1 - i});
     // An end sample: the one-sided difference to its neighbour.
     if (h == 0) out[i] = i == 0 ? (values[1] - values[0]) / dt : (values[n - 1] - values[n - 2]) / dt;
