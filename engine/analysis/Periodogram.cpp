@@ -107,21 +107,34 @@ inline std::complex<double> times(std::complex<double> a, std::complex<double> b
   return {a.real() * b.real() - a.imag() * b.imag(), a.real() * b.imag() + a.imag() * b.real()};
 }
 
+// Each run of kRestart samples is a chain of dependent products from its
+// exact start; kSideBySide runs advance together, so that the CPU overlaps
+// their chains instead of waiting on one (each run does exactly the
+// products it did alone, so the same bits).
+constexpr std::size_t kSideBySide = 8;
+
 // c_j = exp(-i pi sign j^2 / L) for j = 0 .. count - 1. From j to j + 1 the
 // phase grows by -pi sign (2 j + 1) / L, and that step by -2 pi sign / L.
 void chirps(std::int64_t twiceL, int sign, std::size_t count, std::complex<double>* out) {
   const std::complex<double> stepRatio = std::polar(1.0, -2.0 * std::numbers::pi * sign * 2.0 / static_cast<double>(twiceL));
-  std::complex<double> c, step;
-  for (std::size_t j = 0; j < count; ++j) {
-    if (j % kRestart == 0) {
-      const auto jj = static_cast<std::int64_t>(j);
-      c = std::polar(1.0, chirpPhase(jj, twiceL, sign));
+  for (std::size_t run = 0; run * kRestart < count; run += kSideBySide) {
+    std::complex<double> c[kSideBySide], step[kSideBySide];
+    const std::size_t runs = std::min(kSideBySide, (count - run * kRestart + kRestart - 1) / kRestart);
+    for (std::size_t g = 0; g < runs; ++g) {
+      const auto jj = static_cast<std::int64_t>((run + g) * kRestart);
+      c[g] = std::polar(1.0, chirpPhase(jj, twiceL, sign));
       const std::int64_t odd = (2 * jj + 1) % twiceL;
-      step = std::polar(1.0, -std::numbers::pi * sign * 2.0 * static_cast<double>(odd) / static_cast<double>(twiceL));
+      step[g] = std::polar(1.0, -std::numbers::pi * sign * 2.0 * static_cast<double>(odd) / static_cast<double>(twiceL));
     }
-    out[j] = c;
-    c = times(c, step);
-    step = times(step, stepRatio);
+    for (std::size_t r = 0; r < kRestart; ++r) {
+      for (std::size_t g = 0; g < runs; ++g) {
+        const std::size_t j = (run + g) * kRestart + r;
+        if (j >= count) continue;
+        out[j] = c[g];
+        c[g] = times(c[g], step[g]);
+        step[g] = times(step[g], stepRatio);
+      }
+    }
   }
 }
 
@@ -159,13 +172,20 @@ void fftGridPowers(std::span<const std::complex<double>> samples, double dt, std
   // the chirp c_m.
   const double turn = -2.0 * std::numbers::pi * (sign > 0 ? 1.0 : -1.0) * start * dt;
   const std::complex<double> turnStep = std::polar(1.0, turn);
-  std::complex<double> shift;
-  for (std::size_t m = 0; m < n; ++m) {
-    if (m % kRestart == 0) shift = std::polar(1.0, turn * static_cast<double>(m));
-    const std::complex<double> z = times(samples[m], times(shift, c[m]));
-    a[m][0] = z.real();
-    a[m][1] = z.imag();
-    shift = times(shift, turnStep);
+  for (std::size_t run = 0; run * kRestart < n; run += kSideBySide) {
+    std::complex<double> shift[kSideBySide];
+    const std::size_t runs = std::min(kSideBySide, (n - run * kRestart + kRestart - 1) / kRestart);
+    for (std::size_t g = 0; g < runs; ++g) shift[g] = std::polar(1.0, turn * static_cast<double>((run + g) * kRestart));
+    for (std::size_t r = 0; r < kRestart; ++r) {
+      for (std::size_t g = 0; g < runs; ++g) {
+        const std::size_t m = (run + g) * kRestart + r;
+        if (m >= n) continue;
+        const std::complex<double> z = times(samples[m], times(shift[g], c[m]));
+        a[m][0] = z.real();
+        a[m][1] = z.imag();
+        shift[g] = times(shift[g], turnStep);
+      }
+    }
   }
   for (std::size_t m = n; m < length; ++m) a[m][0] = a[m][1] = 0.0;
   const FilterKey key{length, fftLength, n, count, sign};
