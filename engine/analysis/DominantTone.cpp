@@ -31,10 +31,13 @@ typedef double ChainPair __attribute__((vector_size(16)));
 constexpr std::size_t kPairs = 4;
 constexpr std::size_t kChains = 2 * kPairs;
 
-void tonePowers(std::span<const std::complex<double>> tapered, const double* f, std::size_t count, double dt,
-                double* out) {
-  ChainPair rotRe[kPairs] = {}, rotIm[kPairs] = {}, re[kPairs] = {}, im[kPairs] = {}, sumRe[kPairs] = {},
-            sumIm[kPairs] = {};
+// Pairs: how many of the kPairs registers carry chains (a search's last
+// power is one frequency: one pair, not four, goes over the samples).
+template <std::size_t Pairs>
+void tonePowersIn(std::span<const std::complex<double>> tapered, const double* f, std::size_t count, double dt,
+                  double* out) {
+  ChainPair rotRe[Pairs] = {}, rotIm[Pairs] = {}, re[Pairs] = {}, im[Pairs] = {}, sumRe[Pairs] = {},
+            sumIm[Pairs] = {};
   for (std::size_t k = 0; k < count; ++k) {
     const double step = -2.0 * std::numbers::pi * f[k] * dt;
     rotRe[k / 2][k % 2] = std::cos(step);
@@ -43,7 +46,7 @@ void tonePowers(std::span<const std::complex<double>> tapered, const double* f, 
   }
   for (std::size_t n = 0; n < tapered.size(); ++n) {
     const double zRe = tapered[n].real(), zIm = tapered[n].imag();
-    for (std::size_t p = 0; p < kPairs; ++p) {
+    for (std::size_t p = 0; p < Pairs; ++p) {
       sumRe[p] += zRe * re[p] - zIm * im[p];
       sumIm[p] += zRe * im[p] + zIm * re[p];
       const ChainPair nextRe = re[p] * rotRe[p] - im[p] * rotIm[p];
@@ -60,6 +63,18 @@ void tonePowers(std::span<const std::complex<double>> tapered, const double* f, 
   }
   for (std::size_t k = 0; k < count; ++k)
     out[k] = std::norm(std::complex<double>(sumRe[k / 2][k % 2], sumIm[k / 2][k % 2]));
+}
+
+void tonePowers(std::span<const std::complex<double>> tapered, const double* f, std::size_t count, double dt,
+                double* out) {
+  static_assert(kPairs == 4);
+  switch ((count + 1) / 2) {
+    case 0: return;
+    case 1: return tonePowersIn<1>(tapered, f, count, dt, out);
+    case 2: return tonePowersIn<2>(tapered, f, count, dt, out);
+    case 3: return tonePowersIn<3>(tapered, f, count, dt, out);
+    default: return tonePowersIn<4>(tapered, f, count, dt, out);
+  }
 }
 
 double power(std::span<const std::complex<double>> tapered, double f, double dt) {
