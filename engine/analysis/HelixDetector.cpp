@@ -127,14 +127,14 @@ void findLoops(const std::vector<double>& relative, const UniformSeries& s, cons
 
 }  // namespace
 
-// Smooth, find the loops' period in the velocity, low-pass the trace over
-// one period into the arc, then count the loops against the arc's tangent.
 HelixFeatures detectHelix(std::span<const double> time, std::span<const double> x, std::span<const double> y,
                           const HelixDef& def) {
   const std::span<const double> channels[] = {x, y};
   return detectHelix(resampleUniform(time, channels, def.sampling), def);
 }
 
+// Smooth, find the loops' period in the velocity, low-pass the trace over
+// one period into the arc, then count the loops against the arc's tangent.
 HelixFeatures detectHelix(const UniformSeries& s, const HelixDef& def) {
   HelixFeatures out;
   ArcFeatures& arc = out.arc;

@@ -177,15 +177,15 @@ void countRevolutions(const std::vector<Leaf>& leaves, std::size_t first, std::s
 
 }  // namespace
 
-// Smooth, find the centre, check that the distance from it is modulated
-// with one clear period, cut the path into leaves, keep the longest regular
-// run, measure it.
 RoseFeatures detectRose(std::span<const double> time, std::span<const double> x, std::span<const double> y,
                         const RoseDef& def) {
   const std::span<const double> channels[] = {x, y};
   return detectRose(resampleUniform(time, channels, def.sampling), def);
 }
 
+// Smooth, find the centre, check that the distance from it is modulated
+// with one clear period, cut the path into leaves, keep the longest regular
+// run, measure it.
 RoseFeatures detectRose(const UniformSeries& series, const RoseDef& def) {
   RoseFeatures out;
   if (!series.ok()) {
