@@ -31,10 +31,13 @@ typedef double ChainPair __attribute__((vector_size(16)));
 constexpr std::size_t kPairs = 4;
 constexpr std::size_t kChains = 2 * kPairs;
 
-void tonePowers(std::span<const std::complex<double>> tapered, const double* f, std::size_t count, double dt,
-                double* out) {
-  ChainPair rotRe[kPairs] = {}, rotIm[kPairs] = {}, re[kPairs] = {}, im[kPairs] = {}, sumRe[kPairs] = {},
-            sumIm[kPairs] = {};
+// Pairs: how many of the kPairs registers carry chains (a search's last
+// power is one frequency: one pair, not four, goes over the samples).
+template <std::size_t Pairs>
+void tonePowersIn(std::span<const std::complex<double>> tapered, const double* f, std::size_t count, double dt,
+                  double* out) {
+  ChainPair rotRe[Pairs] = {}, rotIm[Pairs] = {}, re[Pairs] = {}, im[Pairs] = {}, sumRe[Pairs] = {},
+            sumIm[Pairs] = {};
   for (std::size_t k = 0; k < count; ++k) {
     const double step = -2.0 * std::numbers::pi * f[k] * dt;
     rotRe[k / 2][k % 2] = std::cos(step);
@@ -43,7 +46,7 @@ void tonePowers(std::span<const std::complex<double>> tapered, const double* f, 
   }
   for (std::size_t n = 0; n < tapered.size(); ++n) {
     const double zRe = tapered[n].real(), zIm = tapered[n].imag();
-    for (std::size_t p = 0; p < kPairs; ++p) {
+    for (std::size_t p = 0; p < Pairs; ++p) {
       sumRe[p] += zRe * re[p] - zIm * im[p];
       sumIm[p] += zRe * im[p] + zIm * re[p];
       const ChainPair nextRe = re[p] * rotRe[p] - im[p] * rotIm[p];
@@ -60,6 +63,18 @@ void tonePowers(std::span<const std::complex<double>> tapered, const double* f, 
   }
   for (std::size_t k = 0; k < count; ++k)
     out[k] = std::norm(std::complex<double>(sumRe[k / 2][k % 2], sumIm[k / 2][k % 2]));
+}
+
+void tonePowers(std::span<const std::complex<double>> tapered, const double* f, std::size_t count, double dt,
+                double* out) {
+  static_assert(kPairs == 4);
+  switch ((count + 1) / 2) {
+    case 0: return;
+    case 1: return tonePowersIn<1>(tapered, f, count, dt, out);
+    case 2: return tonePowersIn<2>(tapered, f, count, dt, out);
+    case 3: return tonePowersIn<3>(tapered, f, count, dt, out);
+    default: return tonePowersIn<4>(tapered, f, count, dt, out);
+  }
 }
 
 double power(std::span<const std::complex<double>> tapered, double f, double dt) {
@@ -128,6 +143,19 @@ struct TaperedSignal {
   double taperSum = 0.0, variance = 0.0;
 };
 
+// The Hann weights of n samples, kept for the next search of the same
+// length: a sweep point's rose and helix searches are over one window (a cos
+// per sample had been 3 % of a point's analysis).
+const std::vector<double>& hannWeights(std::size_t n) {
+  thread_local std::vector<double> weights;
+  if (weights.size() != n) {
+    weights.resize(n);
+    for (std::size_t i = 0; i < n; ++i)
+      weights[i] = 0.5 - 0.5 * std::cos(2.0 * std::numbers::pi * (static_cast<double>(i) + 0.5) / static_cast<double>(n));
+  }
+  return weights;
+}
+
 TaperedSignal taperedSignal(std::span<const std::complex<double>> signal) {
   const std::size_t n = signal.size();
   TaperedSignal t;
@@ -135,8 +163,9 @@ TaperedSignal taperedSignal(std::span<const std::complex<double>> signal) {
   for (const auto& z : signal) sumZ += z;
   t.mean = sumZ / static_cast<double>(n);
   t.samples.resize(n);
+  const std::vector<double>& hann = hannWeights(n);
   for (std::size_t i = 0; i < n; ++i) {
-    const double w = 0.5 - 0.5 * std::cos(2.0 * std::numbers::pi * (static_cast<double>(i) + 0.5) / static_cast<double>(n));
+    const double w = hann[i];
     t.samples[i] = w * (signal[i] - t.mean);
     t.taperSum += w;
     t.variance += std::norm(signal[i] - t.mean);
@@ -145,15 +174,19 @@ TaperedSignal taperedSignal(std::span<const std::complex<double>> signal) {
 }
 
 // Grid: +fMin .. +fMax (steps + 1 frequencies df apart), and the same
-// negated when both signs are searched; sorted.
+// negated when both signs are searched; sorted. fMin + k df does not
+// decrease with k (fMin >= 0), so the sorted grid is the negated side from
+// its highest |f| down, then the positive side in order (written so instead
+// of sorted: the sort had been 1 % of a sweep point's analysis).
 std::vector<double> frequencyGrid(double fMin, double df, std::size_t steps, bool bothSigns) {
+  std::vector<double> positive(steps + 1);
+  for (std::size_t k = 0; k <= steps; ++k) positive[k] = fMin + static_cast<double>(k) * df;
+  if (!bothSigns) return positive;
   std::vector<double> freqs;
-  for (std::size_t k = 0; k <= steps; ++k) {
-    const double f = fMin + static_cast<double>(k) * df;
-    freqs.push_back(f);
-    if (bothSigns && f > 0.0) freqs.push_back(-f);
-  }
-  std::sort(freqs.begin(), freqs.end());
+  freqs.reserve(2 * positive.size());
+  for (std::size_t k = positive.size(); k-- > 0;)
+    if (positive[k] > 0.0) freqs.push_back(-positive[k]);
+  freqs.insert(freqs.end(), positive.begin(), positive.end());
   return freqs;
 }
 
@@ -184,8 +217,17 @@ std::size_t settleNearTies(std::span<const std::complex<double>> tapered, double
   std::vector<std::size_t> close;
   for (std::size_t i = 1; i + 1 < freqs.size(); ++i)
     if (powers[i] >= top * (1.0 - kNearTie)) close.push_back(i);
+  // Each maximum and its two neighbours, all in one pass over the samples
+  // (a pass per frequency had been 3 of the 4 passes of a search's direct
+  // sums): a power has the same bits whatever the frequencies beside it.
+  std::vector<std::size_t> at;
   for (std::size_t i : close)
-    for (std::size_t j : {i - 1, i, i + 1}) powers[j] = power(tapered, freqs[j], dt);
+    for (std::size_t j : {i - 1, i, i + 1})
+      if (at.empty() || at.back() < j) at.push_back(j);
+  std::vector<double> f(at.size()), p(at.size());
+  for (std::size_t m = 0; m < at.size(); ++m) f[m] = freqs[at[m]];
+  periodogramPowers(tapered, f, dt, p);
+  for (std::size_t m = 0; m < at.size(); ++m) powers[at[m]] = p[m];
   return strongestInteriorMaximum(freqs, powers, df);
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <numbers>
 
 namespace hemiroll::analysis {
@@ -25,49 +26,132 @@ std::vector<double> movingAverage(std::span<const double> values, std::size_t ha
   return out;
 }
 
+std::pair<std::vector<double>, std::vector<double>> movingAverages(std::span<const double> x,
+                                                                   std::span<const double> y, std::size_t halfWidth) {
+  if (x.size() != y.size()) return {movingAverage(x, halfWidth), movingAverage(y, halfWidth)};
+  const std::size_t n = x.size();
+  std::vector<double> outX(n), outY(n), prefixX(n + 1, 0.0), prefixY(n + 1, 0.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    prefixX[i + 1] = prefixX[i] + x[i];
+    prefixY[i + 1] = prefixY[i] + y[i];
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t h = std::min({halfWidth, i, n - 1 - i});
+    const auto width = static_cast<double>(2 * h + 1);
+    outX[i] = (prefixX[i + h + 1] - prefixX[i - h]) / width;
+    outY[i] = (prefixY[i + h + 1] - prefixY[i - h]) / width;
+  }
+  return {std::move(outX), std::move(outY)};
+}
+
+namespace {
+
+// The sums of whole windows, num_i = sum_k k (v[i+k] - v[i-k]) for k = 1 ..
+// h in ascending k, for i in [first, last): groups of R vectors of W samples
+// held in registers while k runs (issue 32: with the sums in memory, each k
+// loaded and stored every sample's sum again, and the rate's 150-sample
+// windows made this 12 % of a sweep point's analysis). Each lane does the
+// scalar operations of its sample in the scalar order (no contraction:
+// -ffp-contract=off), so the sums have the same bits at every width.
+template <std::size_t W, std::size_t R>
+[[gnu::always_inline]] inline void wholeWindowSums(const double* v, std::size_t first, std::size_t last,
+                                                   std::size_t h, double* out) {
+  typedef double Lanes __attribute__((vector_size(W * sizeof(double))));
+  constexpr std::size_t kGroup = W * R;
+  std::size_t i = first;
+  for (; i + kGroup <= last; i += kGroup) {
+    Lanes sum[R] = {};
+    for (std::size_t k = 1; k <= h; ++k) {
+      const double kk = static_cast<double>(k);
+      for (std::size_t r = 0; r < R; ++r) {
+        Lanes ahead, behind;
+        std::memcpy(&ahead, v + i + r * W + k, sizeof ahead);
+        std::memcpy(&behind, v + i + r * W - k, sizeof behind);
+        sum[r] += kk * (ahead - behind);
+      }
+    }
+    for (std::size_t r = 0; r < R; ++r) std::memcpy(out + i + r * W, &sum[r], sizeof sum[r]);
+  }
+  for (; i < last; ++i) {
+    double sum = 0.0;
+    for (std::size_t k = 1; k <= h; ++k) sum += static_cast<double>(k) * (v[i + k] - v[i - k]);
+    out[i] = sum;
+  }
+}
+
+// One copy per instruction set, chosen once by the CPU (as BatchedRk4's
+// lanes are): 8 lanes under AVX-512F, 4 under AVX2, SSE2's 2 otherwise.
+__attribute__((target("avx512f"))) void wholeWindowSums8(const double* v, std::size_t first, std::size_t last,
+                                                         std::size_t h, double* out) {
+  wholeWindowSums<8, 4>(v, first, last, h, out);
+}
+__attribute__((target("avx2"))) void wholeWindowSums4(const double* v, std::size_t first, std::size_t last,
+                                                      std::size_t h, double* out) {
+  wholeWindowSums<4, 4>(v, first, last, h, out);
+}
+void wholeWindowSums2(const double* v, std::size_t first, std::size_t last, std::size_t h, double* out) {
+  wholeWindowSums<2, 4>(v, first, last, h, out);
+}
+
+using WholeWindowSums = void (*)(const double*, std::size_t, std::size_t, std::size_t, double*);
+WholeWindowSums wholeWindowSumsForThisCpu() {
+  if (__builtin_cpu_supports("avx512f")) return wholeWindowSums8;
+  if (__builtin_cpu_supports("avx2")) return wholeWindowSums4;
+  return wholeWindowSums2;
+}
+
+}  // namespace
+
 // Each sample's slope is sum_k k (v[i+k] - v[i-k]) / (sum_k 2 k^2 dt), k = 1
 // .. h, both sums in ascending k. Where the window is whole (h = halfWidth)
-// the loops run k outside and i inside (in blocks of samples), so that the samples' sums advance
-// side by side instead of each waiting on its own chain of additions
-// (issue 32: 7 % of a sweep), and the denominator is summed once; each sum
-// still takes its terms in the same order, so the slopes have the same bits.
+// the samples' sums advance side by side in registers (wholeWindowSums) and
+// the denominator is summed once; each sum still takes its terms in the same
+// order, so the slopes have the same bits.
 std::vector<double> localSlope(std::span<const double> values, double dt, std::size_t halfWidth) {
   const std::size_t n = values.size();
   std::vector<double> out(n, 0.0);
   if (n < 2) return out;
   halfWidth = std::max<std::size_t>(halfWidth, 1);
+  // The denominators sum_k 2 k^2 for k = 1 .. h, each summed in ascending
+  // k, so the one for h is the one for h - 1 plus 2 h^2: the same bits from
+  // one running sum (the ends' shrinking windows need every h below halfWidth).
+  const std::size_t widest = std::min(halfWidth, n);  // no window is wider than the samples
+  std::vector<double> denominators(widest + 1, 0.0);
+  for (std::size_t k = 1; k <= widest; ++k) {
+    const double kk = static_cast<double>(k);
+    denominators[k] = denominators[k - 1] + 2.0 * kk * kk;
+  }
   auto windowSlope = [&](std::size_t i, std::size_t h) {
-    double num = 0.0, den = 0.0;
-    for (std::size_t k = 1; k <= h; ++k) {
-      const double kk = static_cast<double>(k);
-      num += kk * (values[i + k] - values[i - k]);
-      den += 2.0 * kk * kk;
-    }
-    return num / (den * dt);
+    double num = 0.0;
+    for (std::size_t k = 1; k <= h; ++k) num += static_cast<double>(k) * (values[i + k] - values[i - k]);
+    return num / (denominators[h] * dt);
   };
   // Whole windows: i in [halfWidth, n - halfWidth).
   const std::size_t first = std::min(halfWidth, n), last = n > halfWidth ? std::max(first, n - halfWidth) : first;
   if (last > first) {
-    double den = 0.0;
-    for (std::size_t k = 1; k <= halfWidth; ++k) {
-      const double kk = static_cast<double>(k);
-      den += 2.0 * kk * kk;
-    }
-    // In blocks of samples, so that a block's sums stay in the L1 cache over
-    // all k (a whole column's did not: they went to L2 and back once per k).
-    constexpr std::size_t kBlock = 256;
-    for (std::size_t block = first; block < last; block += kBlock) {
-      const std::size_t end = std::min(block + kBlock, last);
-      for (std::size_t k = 1; k <= halfWidth; ++k) {
-        const double kk = static_cast<double>(k);
-        for (std::size_t i = block; i < end; ++i) out[i] += kk * (values[i + k] - values[i - k]);
-      }
-    }
-    const double scale = den * dt;
+    static const WholeWindowSums sums = wholeWindowSumsForThisCpu();
+    sums(values.data(), first, last, halfWidth, out.data());
+    const double scale = denominators[halfWidth] * dt;
     for (std::size_t i = first; i < last; ++i) out[i] /= scale;
   }
+  // The ends' shrinking windows: sample i and its mirror n - 1 - i have the
+  // same width, so their sums run side by side (each in its own order).
+  std::vector<bool> done(n, false);
+  for (std::size_t i = 1; i < first; ++i) {
+    const std::size_t j = n - 1 - i, h = std::min({halfWidth, i, j});
+    if (j < last || j <= i || h == 0) continue;
+    double numI = 0.0, numJ = 0.0;
+    for (std::size_t k = 1; k <= h; ++k) {
+      const double kk = static_cast<double>(k);
+      numI += kk * (values[i + k] - values[i - k]);
+      numJ += kk * (values[j + k] - values[j - k]);
+    }
+    out[i] = numI / (denominators[h] * dt);
+    out[j] = numJ / (denominators[h] * dt);
+    done[i] = done[j] = true;
+  }
   for (std::size_t i = 0; i < n; ++i) {
-    if (i >= first && i < last) continue;
+    if ((i >= first && i < last) || done[i]) continue;
     const std::size_t h = std::min({halfWidth, i, n - 1 - i});
     // An end sample: the one-sided difference to its neighbour.
     if (h == 0) out[i] = i == 0 ? (values[1] - values[0]) / dt : (values[n - 1] - values[n - 2]) / dt;
@@ -82,10 +166,83 @@ std::vector<double> unwrapAngles(std::span<const double> angles) {
   double offset = 0.0;
   for (std::size_t i = 1; i < out.size(); ++i) {
     const double step = angles[i] - angles[i - 1];
-    offset -= kTwoPi * std::round(step / kTwoPi);
+    // A step under 3 rad rounds to no turn; skipping its division and
+    // rounding leaves the offset as it was (it is never -0, so subtracting
+    // +-0 changes no bit).
+    if (!(std::abs(step) < 3.0)) offset -= kTwoPi * std::round(step / kTwoPi);
     out[i] = angles[i] + offset;
   }
   return out;
+}
+
+namespace {
+
+// Which quarter about the centre a point lies in strictly inside: 0 about
+// +x, 1 about +y, 2 about -y; 3 about -x, on a diagonal, at the centre or
+// not finite. Two points strictly inside one of the first three have atan2
+// at most pi / 2 apart (plus rounding): a step that unwrapAngles rounds to
+// no turn. About -x the angle wraps from pi to -pi, and atan2(0, -0) = pi.
+int quarterOf(double dx, double dy) {
+  if (dx > std::abs(dy)) return 0;
+  if (dy > std::abs(dx)) return 1;
+  if (-dy > std::abs(dx)) return 2;
+  return 3;
+}
+
+}  // namespace
+
+// unwrapAngles' offset changes only at a step that rounds to a turn; steps
+// within one of the three safe quarters round to none (and subtracting 0
+// from the offset, which is never -0, changes no bit), so their angles are
+// not needed: only the ends' and those either side of any other step.
+std::vector<double> unwrapOffsetsAbout(std::span<const double> x, std::span<const double> y, double cx, double cy) {
+  const std::size_t n = std::min(x.size(), y.size());
+  std::vector<double> offsets(n, 0.0);
+  if (n == 0) return offsets;
+  constexpr double kTwoPi = 2.0 * std::numbers::pi;
+  double offset = 0.0, previous = std::atan2(y[0] - cy, x[0] - cx);
+  bool known = true;
+  int previousQuarter = quarterOf(x[0] - cx, y[0] - cy);
+  for (std::size_t i = 1; i < n; ++i) {
+    const double dx = x[i] - cx, dy = y[i] - cy;
+    const int quarter = quarterOf(dx, dy);
+    if (quarter == previousQuarter && quarter != 3) {
+      known = false;
+    } else {
+      if (!known) previous = std::atan2(y[i - 1] - cy, x[i - 1] - cx);
+      const double angle = std::atan2(dy, dx);
+      offset -= kTwoPi * std::round((angle - previous) / kTwoPi);
+      previous = angle, known = true;
+    }
+    offsets[i] = offset;
+    previousQuarter = quarter;
+  }
+  return offsets;
+}
+
+double sweptAngleAbout(std::span<const double> x, std::span<const double> y, double cx, double cy) {
+  const std::size_t n = std::min(x.size(), y.size());
+  if (n == 0) return 0.0;
+  constexpr double kTwoPi = 2.0 * std::numbers::pi;
+  const double front = std::atan2(y[0] - cy, x[0] - cx);
+  double offset = 0.0, previous = front;  // previous: the angle at i - 1 where `known`
+  bool known = true;
+  int previousQuarter = quarterOf(x[0] - cx, y[0] - cy);
+  for (std::size_t i = 1; i < n; ++i) {
+    const double dx = x[i] - cx, dy = y[i] - cy;
+    const int quarter = quarterOf(dx, dy);
+    if (quarter == previousQuarter && quarter != 3) {
+      known = false;
+    } else {
+      if (!known) previous = std::atan2(y[i - 1] - cy, x[i - 1] - cx);
+      const double angle = std::atan2(dy, dx);
+      offset -= kTwoPi * std::round((angle - previous) / kTwoPi);
+      previous = angle, known = true;
+    }
+    previousQuarter = quarter;
+  }
+  const double back = known ? previous : std::atan2(y[n - 1] - cy, x[n - 1] - cx);
+  return (back + offset) - front;
 }
 
 }  // namespace hemiroll::analysis

@@ -26,7 +26,10 @@ std::vector<double> headings(const std::vector<double>& vx, const std::vector<do
 void measureArc(const std::vector<double>& lx, const std::vector<double>& ly, double dt, double period,
                 ArcFeatures& arc) {
   const std::size_t n = lx.size();
-  for (std::size_t i = 1; i < n; ++i) arc.length += std::hypot(lx[i] - lx[i - 1], ly[i] - ly[i - 1]);
+  // Kept whole: the loops are placed along it (findLoops).
+  arc.along.assign(n, 0.0);
+  for (std::size_t i = 1; i < n; ++i) arc.along[i] = arc.along[i - 1] + std::hypot(lx[i] - lx[i - 1], ly[i] - ly[i - 1]);
+  arc.length = n > 0 ? arc.along.back() : 0.0;
   const double duration = dt * static_cast<double>(n - 1);
   arc.driftSpeed = arc.length / duration;
   const CircleFit fit = fitCircle(lx, ly);
@@ -37,16 +40,12 @@ void measureArc(const std::vector<double>& lx, const std::vector<double>& ly, do
   arc.rmsResidual = fit.rmsResidual;
   if (fit.curvature > 0.0) {
     double turn = 0.0;  // > 0: the trace goes counter-clockwise about the centre
-    std::vector<double> around(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      around[i] = std::atan2(ly[i] - fit.centreY, lx[i] - fit.centreX);
-      if (i > 0) turn += (lx[i] - lx[i - 1]) * (fit.centreY - ly[i - 1]) - (ly[i] - ly[i - 1]) * (fit.centreX - lx[i - 1]);
-    }
-    const std::vector<double> unwrapped = unwrapAngles(around);
+    for (std::size_t i = 1; i < n; ++i)
+      turn += (lx[i] - lx[i - 1]) * (fit.centreY - ly[i - 1]) - (ly[i] - ly[i - 1]) * (fit.centreX - lx[i - 1]);
     arc.curvature = turn >= 0.0 ? fit.curvature : -fit.curvature;
     arc.radius = fit.radius;
     arc.centreX = fit.centreX, arc.centreY = fit.centreY;
-    arc.sweptAngle = unwrapped.back() - unwrapped.front();
+    arc.sweptAngle = sweptAngleAbout(lx, ly, fit.centreX, fit.centreY);
   }
   const double independent = duration / period;
   arc.curvatureError = arc.length > 0.0 ? fit.rmsResidual / (arc.length * arc.length) *
@@ -71,7 +70,7 @@ void lowPassArc(const UniformSeries& s, double period, std::size_t h, ArcFeature
     arc.reason = "no arc: " + shortNumber(s.duration()) + " s is too short for the low-pass window of " + shortNumber(period) + " s";
     return;
   }
-  const std::vector<double> ax = movingAverage(s.channels[0], h), ay = movingAverage(s.channels[1], h);
+  const auto [ax, ay] = movingAverages(s.channels[0], s.channels[1], h);
   arc.x.assign(ax.begin() + static_cast<std::ptrdiff_t>(h), ax.end() - static_cast<std::ptrdiff_t>(h));
   arc.y.assign(ay.begin() + static_cast<std::ptrdiff_t>(h), ay.end() - static_cast<std::ptrdiff_t>(h));
   arc.span = {s.time(h), s.time(s.size() - 1 - h)};
@@ -103,9 +102,7 @@ void findLoops(const std::vector<double>& relative, const UniformSeries& s, cons
   const double sense = loops.sense;
   // The first odd multiple of pi beyond the start, in the loops' sense.
   double target = sense * kPi * (2.0 * std::floor((sense * relative.front() / kPi + 1.0) / 2.0) + 1.0);
-  std::vector<double> arcLength(arc.x.size(), 0.0);
-  for (std::size_t i = 1; i < arc.x.size(); ++i)
-    arcLength[i] = arcLength[i - 1] + std::hypot(arc.x[i] - arc.x[i - 1], arc.y[i] - arc.y[i - 1]);
+  const std::vector<double>& arcLength = arc.along;
   std::vector<double> along;
   for (std::size_t i = 1; i < relative.size(); ++i) {
     if (sense * (relative[i] - target) < 0.0) continue;
@@ -130,22 +127,25 @@ void findLoops(const std::vector<double>& relative, const UniformSeries& s, cons
 
 }  // namespace
 
-// Smooth, find the loops' period in the velocity, low-pass the trace over
-// one period into the arc, then count the loops against the arc's tangent.
 HelixFeatures detectHelix(std::span<const double> time, std::span<const double> x, std::span<const double> y,
                           const HelixDef& def) {
+  const std::span<const double> channels[] = {x, y};
+  return detectHelix(resampleUniform(time, channels, def.sampling), def);
+}
+
+// Smooth, find the loops' period in the velocity, low-pass the trace over
+// one period into the arc, then count the loops against the arc's tangent.
+HelixFeatures detectHelix(const UniformSeries& s, const HelixDef& def) {
   HelixFeatures out;
   ArcFeatures& arc = out.arc;
   LoopFeatures& loops = out.loops;
-  const std::span<const double> channels[] = {x, y};
-  const UniformSeries s = resampleUniform(time, channels, def.sampling);
   if (!s.ok()) {
     arc.reason = "no arc: " + s.problem;
     loops.reason = "no loops: " + s.problem;
     return out;
   }
   const std::size_t light = halfWidthFor(def.lightSmoothing, s.dt);
-  const std::vector<double> sx = movingAverage(s.channels[0], light), sy = movingAverage(s.channels[1], light);
+  const auto [sx, sy] = movingAverages(s.channels[0], s.channels[1], light);
   const std::vector<double> vx = localSlope(sx, s.dt, 1), vy = localSlope(sy, s.dt, 1);
   std::vector<std::complex<double>> velocity(vx.size());
   for (std::size_t i = 0; i < vx.size(); ++i) velocity[i] = {vx[i], vy[i]};

@@ -59,6 +59,7 @@ struct ArcFeatures {
   double driftSpeed = 0.0;          // [m/s] length / duration
   TimeInterval span;                // of the low-passed trace
   std::vector<double> x, y;         // [m] the low-passed trace (for plots)
+  std::vector<double> along;        // [m] distance along it at each of its samples (from 0; length is the last)
 };
 
 struct LoopFeatures {
@@ -81,5 +82,7 @@ struct HelixFeatures {
 
 HelixFeatures detectHelix(std::span<const double> time, std::span<const double> x, std::span<const double> y,
                           const HelixDef& def = {});
+// The same on x and y already resampled by def.sampling (channels 0 and 1).
+HelixFeatures detectHelix(const UniformSeries& series, const HelixDef& def = {});
 
 }  // namespace hemiroll::analysis

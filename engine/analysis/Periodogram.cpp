@@ -60,10 +60,19 @@ struct FilterKey {
   int sign = 0;
   bool operator==(const FilterKey&) const = default;
 };
+// The chirp c_j of one (2L, sign), for j below its size: a value depends
+// on j, 2L and the sign alone, so a search of another count or sample count
+// with the same 2L reuses it (a sweep point's rose and helix searches have
+// the same window, hence the same 2L = 2 x oversampling x n).
+struct Chirp {
+  std::int64_t twiceL = 0;
+  int sign = 0;
+  std::vector<std::complex<double>> values;
+};
 struct Workspace {
   std::size_t length = 0;
   FftwBuffer signal, filter;
-  std::vector<std::complex<double>> chirp;  // c_j, j < max(n, count)
+  Chirp chirps[2];  // by sign: [0] negative, [1] positive
   FilterKey filterKey;  // what `filter` holds the transform of; empty: nothing
   void reserve(std::size_t n) {
     if (n <= length) return;
@@ -89,21 +98,43 @@ double chirpPhase(std::int64_t j, std::int64_t twiceL, int sign) {
 // the grid's tolerance (PeriodogramTest: 1e-10 of the largest power).
 constexpr std::size_t kRestart = 32;
 
+// (a + bi)(c + di) = (ac - bd) + (ad + bc)i: the very operations of the
+// compiler's complex product, without its recovery of infinities (C Annex
+// G), which cannot fire on the finite values here (the samples are finite:
+// DominantTone searches no other; the chirps and shifts have modulus 1).
+// Without its branches the loops below run side by side or vectorise.
+inline std::complex<double> times(std::complex<double> a, std::complex<double> b) {
+  return {a.real() * b.real() - a.imag() * b.imag(), a.real() * b.imag() + a.imag() * b.real()};
+}
+
+// Each run of kRestart samples is a chain of dependent products from its
+// exact start; kSideBySide runs advance together, so that the CPU overlaps
+// their chains instead of waiting on one (each run does exactly the
+// products it did alone, so the same bits).
+constexpr std::size_t kSideBySide = 8;
+
 // c_j = exp(-i pi sign j^2 / L) for j = 0 .. count - 1. From j to j + 1 the
 // phase grows by -pi sign (2 j + 1) / L, and that step by -2 pi sign / L.
 void chirps(std::int64_t twiceL, int sign, std::size_t count, std::complex<double>* out) {
   const std::complex<double> stepRatio = std::polar(1.0, -2.0 * std::numbers::pi * sign * 2.0 / static_cast<double>(twiceL));
-  std::complex<double> c, step;
-  for (std::size_t j = 0; j < count; ++j) {
-    if (j % kRestart == 0) {
-      const auto jj = static_cast<std::int64_t>(j);
-      c = std::polar(1.0, chirpPhase(jj, twiceL, sign));
+  for (std::size_t run = 0; run * kRestart < count; run += kSideBySide) {
+    std::complex<double> c[kSideBySide], step[kSideBySide];
+    const std::size_t runs = std::min(kSideBySide, (count - run * kRestart + kRestart - 1) / kRestart);
+    for (std::size_t g = 0; g < runs; ++g) {
+      const auto jj = static_cast<std::int64_t>((run + g) * kRestart);
+      c[g] = std::polar(1.0, chirpPhase(jj, twiceL, sign));
       const std::int64_t odd = (2 * jj + 1) % twiceL;
-      step = std::polar(1.0, -std::numbers::pi * sign * 2.0 * static_cast<double>(odd) / static_cast<double>(twiceL));
+      step[g] = std::polar(1.0, -std::numbers::pi * sign * 2.0 * static_cast<double>(odd) / static_cast<double>(twiceL));
     }
-    out[j] = c;
-    c *= step;
-    step *= stepRatio;
+    for (std::size_t r = 0; r < kRestart; ++r) {
+      for (std::size_t g = 0; g < runs; ++g) {
+        const std::size_t j = (run + g) * kRestart + r;
+        if (j >= count) continue;
+        out[j] = c[g];
+        c[g] = times(c[g], step[g]);
+        step[g] = times(step[g], stepRatio);
+      }
+    }
   }
 }
 
@@ -130,20 +161,31 @@ void fftGridPowers(std::span<const std::complex<double>> samples, double dt, std
   fftw_complex* a = work.signal.get();
   fftw_complex* h = work.filter.get();
   const auto twiceL = static_cast<std::int64_t>(2 * fftLength);
-  work.chirp.resize(std::max(n, count));
-  const std::complex<double>* c = work.chirp.data();
-  chirps(twiceL, sign, work.chirp.size(), work.chirp.data());
+  Chirp& chirp = work.chirps[sign > 0 ? 1 : 0];
+  if (chirp.twiceL != twiceL || chirp.sign != sign || chirp.values.size() < std::max(n, count)) {
+    chirp.twiceL = twiceL, chirp.sign = sign;
+    chirp.values.resize(std::max(n, count));
+    chirps(twiceL, sign, chirp.values.size(), chirp.values.data());
+  }
+  const std::complex<double>* c = chirp.values.data();
   // The shift that puts `start` on bin 0, exp(-2 pi i sign start m dt), times
   // the chirp c_m.
   const double turn = -2.0 * std::numbers::pi * (sign > 0 ? 1.0 : -1.0) * start * dt;
   const std::complex<double> turnStep = std::polar(1.0, turn);
-  std::complex<double> shift;
-  for (std::size_t m = 0; m < n; ++m) {
-    if (m % kRestart == 0) shift = std::polar(1.0, turn * static_cast<double>(m));
-    const std::complex<double> z = samples[m] * (shift * c[m]);
-    a[m][0] = z.real();
-    a[m][1] = z.imag();
-    shift *= turnStep;
+  for (std::size_t run = 0; run * kRestart < n; run += kSideBySide) {
+    std::complex<double> shift[kSideBySide];
+    const std::size_t runs = std::min(kSideBySide, (n - run * kRestart + kRestart - 1) / kRestart);
+    for (std::size_t g = 0; g < runs; ++g) shift[g] = std::polar(1.0, turn * static_cast<double>((run + g) * kRestart));
+    for (std::size_t r = 0; r < kRestart; ++r) {
+      for (std::size_t g = 0; g < runs; ++g) {
+        const std::size_t m = (run + g) * kRestart + r;
+        if (m >= n) continue;
+        const std::complex<double> z = times(samples[m], times(shift[g], c[m]));
+        a[m][0] = z.real();
+        a[m][1] = z.imag();
+        shift[g] = times(shift[g], turnStep);
+      }
+    }
   }
   for (std::size_t m = n; m < length; ++m) a[m][0] = a[m][1] = 0.0;
   const FilterKey key{length, fftLength, n, count, sign};
@@ -163,7 +205,7 @@ void fftGridPowers(std::span<const std::complex<double>> samples, double dt, std
   }
   fftw_execute_dft(planOf(length, FFTW_FORWARD), a, a);
   for (std::size_t m = 0; m < length; ++m) {
-    const std::complex<double> product = std::complex<double>(a[m][0], a[m][1]) * std::complex<double>(h[m][0], h[m][1]);
+    const std::complex<double> product = times({a[m][0], a[m][1]}, {h[m][0], h[m][1]});
     a[m][0] = product.real();
     a[m][1] = product.imag();
   }

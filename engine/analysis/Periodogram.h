@@ -24,8 +24,8 @@
 
 namespace hemiroll::analysis {
 
-// `out` gets `count` powers; requires samples.size() <= fftLength and
-// count <= fftLength.
+// `out` gets `count` powers; requires finite samples, samples.size() <=
+// fftLength and count <= fftLength.
 void fftGridPowers(std::span<const std::complex<double>> samples, double dt, std::size_t fftLength, double start,
                    int sign, std::size_t count, std::span<double> out);
 

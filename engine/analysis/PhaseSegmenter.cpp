@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <deque>
+#include <vector>
 
 #include "engine/analysis/Filters.h"
 #include "engine/analysis/Statistics.h"
@@ -18,25 +18,40 @@ struct Run {
   std::size_t length() const { return last - first + 1; }
 };
 
+// Indices in a vector with a moving front: each enters once and leaves
+// once, so one reserve serves the whole sweep below (std::deque allocates
+// in blocks and reaches each item through its map).
+struct IndexQueue {
+  std::vector<std::size_t> items;
+  std::size_t head = 0;
+  bool empty() const { return head == items.size(); }
+  std::size_t front() const { return items[head]; }
+  std::size_t back() const { return items.back(); }
+  void popFront() { ++head; }
+  void popBack() { items.pop_back(); }
+  void push(std::size_t i) { items.push_back(i); }
+};
+
 // The longest interval whose values all lie within +-(rel |mid| + abs) of
 // their mid-range mid. Growing an interval widens its range at least as fast
 // as the allowed band (rel < 1), so the two-pointer sweep is exact.
 Run longestWithinOwnBand(const std::vector<double>& r, double rel, double abs) {
   Run best;
-  std::deque<std::size_t> maxQ, minQ;  // indices of decreasing maxima / increasing minima
+  IndexQueue maxQ, minQ;  // indices of decreasing maxima / increasing minima
+  maxQ.items.reserve(r.size()), minQ.items.reserve(r.size());
   std::size_t first = 0;
   for (std::size_t i = 0; i < r.size(); ++i) {
-    while (!maxQ.empty() && r[maxQ.back()] <= r[i]) maxQ.pop_back();
-    while (!minQ.empty() && r[minQ.back()] >= r[i]) minQ.pop_back();
-    maxQ.push_back(i), minQ.push_back(i);
+    while (!maxQ.empty() && r[maxQ.back()] <= r[i]) maxQ.popBack();
+    while (!minQ.empty() && r[minQ.back()] >= r[i]) minQ.popBack();
+    maxQ.push(i), minQ.push(i);
     auto fits = [&] {
       const double hi = r[maxQ.front()], lo = r[minQ.front()];
       return hi - lo <= 2.0 * (rel * std::abs(0.5 * (hi + lo)) + abs);
     };
     while (!fits()) {
       ++first;
-      if (maxQ.front() < first) maxQ.pop_front();
-      if (minQ.front() < first) minQ.pop_front();
+      if (maxQ.front() < first) maxQ.popFront();
+      if (minQ.front() < first) minQ.popFront();
     }
     if (i - first + 1 > best.length() || i == 0) best = {first, i};
   }

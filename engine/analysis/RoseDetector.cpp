@@ -31,8 +31,26 @@ struct Leaf {
   double outer = 0.0, inner = 0.0;
 };
 
+// The distances from the centre, and what the angles about it need: the
+// angle of point i, unwrapped, is atan2 about the centre + offset[i]
+// (unwrapAngles' bits), taken only where a leaf ends (issue 32: an atan2
+// per sample had been 2-3 % of a sweep point's analysis).
 struct Path {
-  std::vector<double> rho, theta;
+  std::vector<double> rho, offset;
+  const std::vector<double>* x = nullptr;
+  const std::vector<double>* y = nullptr;
+  double cx = 0.0, cy = 0.0;
+  double theta(std::size_t i) const {
+    const double a = std::atan2((*y)[i] - cy, (*x)[i] - cx);
+    return i == 0 ? a : a + offset[i];  // unwrapAngles leaves the first as it is
+  }
+  // At a fractional sample position, as `at` interpolates a column.
+  double thetaAt(double position) const {
+    const auto i = static_cast<std::size_t>(std::clamp(std::floor(position), 0.0, static_cast<double>(rho.size() - 1)));
+    const std::size_t j = std::min(i + 1, rho.size() - 1);
+    const double w = std::clamp(position - static_cast<double>(i), 0.0, 1.0);
+    return theta(i) * (1.0 - w) + theta(j) * w;
+  }
 };
 
 // The distance from (cx, cy); the angle about it only where asked: the
@@ -44,13 +62,14 @@ Path about(const std::vector<double>& x, const std::vector<double>& y, double cx
   return p;
 }
 void addAngles(Path& p, const std::vector<double>& x, const std::vector<double>& y, double cx, double cy) {
-  p.theta.resize(x.size());
-  for (std::size_t i = 0; i < x.size(); ++i) p.theta[i] = std::atan2(y[i] - cy, x[i] - cx);
-  p.theta = unwrapAngles(p.theta);
+  p.offset = unwrapOffsetsAbout(x, y, cx, cy);
+  p.x = &x, p.y = &y, p.cx = cx, p.cy = cy;
 }
 
 double rhoDelta(const std::vector<double>& rho, double fraction) {
-  return fraction * (quantile(rho, 0.95) - quantile(rho, 0.05));
+  constexpr double kPercentiles[] = {0.05, 0.95};
+  const std::vector<double> p = quantiles(rho, kPercentiles);
+  return fraction * (p[1] - p[0]);
 }
 
 std::vector<Leaf> leavesOf(const Path& p, const std::vector<Extremum>& ex) {
@@ -58,7 +77,7 @@ std::vector<Leaf> leavesOf(const Path& p, const std::vector<Extremum>& ex) {
   for (std::size_t i = 0; i + 2 < ex.size(); ++i) {
     if (ex[i].isMaximum) continue;
     const Extremum &a = ex[i], &tip = ex[i + 1], &b = ex[i + 2];
-    leaves.push_back({a.position, b.position, tip.position, at(p.theta, b.position) - at(p.theta, a.position),
+    leaves.push_back({a.position, b.position, tip.position, p.thetaAt(b.position) - p.thetaAt(a.position),
                       tip.value, 0.5 * (a.value + b.value)});
   }
   return leaves;
@@ -158,20 +177,23 @@ void countRevolutions(const std::vector<Leaf>& leaves, std::size_t first, std::s
 
 }  // namespace
 
+RoseFeatures detectRose(std::span<const double> time, std::span<const double> x, std::span<const double> y,
+                        const RoseDef& def) {
+  const std::span<const double> channels[] = {x, y};
+  return detectRose(resampleUniform(time, channels, def.sampling), def);
+}
+
 // Smooth, find the centre, check that the distance from it is modulated
 // with one clear period, cut the path into leaves, keep the longest regular
 // run, measure it.
-RoseFeatures detectRose(std::span<const double> time, std::span<const double> x, std::span<const double> y,
-                        const RoseDef& def) {
+RoseFeatures detectRose(const UniformSeries& series, const RoseDef& def) {
   RoseFeatures out;
-  const std::span<const double> channels[] = {x, y};
-  const UniformSeries series = resampleUniform(time, channels, def.sampling);
   if (!series.ok()) {
     out.reason = "no rose: " + series.problem;
     return out;
   }
   const std::size_t h = halfWidthFor(def.smoothingTime, series.dt);
-  const std::vector<double> sx = movingAverage(series.channels[0], h), sy = movingAverage(series.channels[1], h);
+  const auto [sx, sy] = movingAverages(series.channels[0], series.channels[1], h);
   const auto [xMin, xMax] = std::minmax_element(sx.begin(), sx.end());
   const auto [yMin, yMax] = std::minmax_element(sy.begin(), sy.end());
   if (std::hypot(*xMax - *xMin, *yMax - *yMin) < 1e-6) {
@@ -182,8 +204,10 @@ RoseFeatures detectRose(std::span<const double> time, std::span<const double> x,
   const Path path = centredPath(sx, sy, *xMin, *xMax, *yMin, *yMax, def.hysteresis, cx, cy);
   out.centreX = cx, out.centreY = cy;
 
-  const double rhoMedian = median(path.rho);
-  const double rhoRange = quantile(path.rho, 0.95) - quantile(path.rho, 0.05);  // rhoDelta's, taken once
+  constexpr double kLevels[] = {0.05, 0.5, 0.95};
+  const std::vector<double> levels = quantiles(path.rho, kLevels);
+  const double rhoMedian = levels[1];
+  const double rhoRange = levels[2] - levels[0];  // rhoDelta's, taken once
   const double modulation = rhoRange / rhoMedian;
   if (!(modulation >= def.minModulation)) {
     out.reason = "no rose: the distance from the centre varies by only " + shortNumber(100.0 * modulation) +

@@ -81,5 +81,7 @@ struct RoseFeatures {
 
 RoseFeatures detectRose(std::span<const double> time, std::span<const double> x, std::span<const double> y,
                         const RoseDef& def = {});
+// The same on x and y already resampled by def.sampling (channels 0 and 1).
+RoseFeatures detectRose(const UniformSeries& series, const RoseDef& def = {});
 
 }  // namespace hemiroll::analysis

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -33,6 +34,27 @@ std::string wholeTrialNote(const TimeInterval& steady, const std::string& reason
   return "measured over the whole trial: the steady phase (" + std::string(window) + ") alone shows " + shown;
 }
 
+// The rose's and the helix's features over the same rows, their four
+// channels resampled in one pass where that gives each detector the very
+// series it would make alone (issue 32: the rows, gaps and median spacing
+// were worked out twice): the same sampling, and no row dropped (a NaN in
+// one channel drops its row for one detector only). Otherwise each alone.
+template <typename Part>
+std::pair<RoseFeatures, HelixFeatures> roseAndHelix(const TrialSamples& s, Part part, const TrialAnalysisDef& def) {
+  if (def.rose.sampling == def.helix.sampling) {
+    const std::span<const double> channels[] = {part(s.massX), part(s.massY), part(s.contactX), part(s.contactY)};
+    UniformSeries joint = resampleUniform(part(s.time), channels, def.rose.sampling);
+    if (joint.ok() && joint.droppedRows == 0) {
+      UniformSeries mass{joint.t0, joint.dt, {}, 0, {}}, contact{joint.t0, joint.dt, {}, 0, {}};
+      mass.channels = {std::move(joint.channels[0]), std::move(joint.channels[1])};
+      contact.channels = {std::move(joint.channels[2]), std::move(joint.channels[3])};
+      return {detectRose(mass, def.rose), detectHelix(contact, def.helix)};
+    }
+  }
+  return {detectRose(part(s.time), part(s.massX), part(s.massY), def.rose),
+          detectHelix(part(s.time), part(s.contactX), part(s.contactY), def.helix)};
+}
+
 }  // namespace
 
 TrialFeatures analyzeTrial(const TrialSamples& s, const TrialAnalysisDef& def) {
@@ -50,19 +72,19 @@ TrialFeatures analyzeTrial(const TrialSamples& s, const TrialAnalysisDef& def) {
   out.roseWindow = out.helixWindow = out.phases.trial;
   if (!out.phases.found) {
     out.roseNote = out.helixNote = "no steady precession phase: looked for over the whole trial";
-    out.rose = rose(whole);
-    out.helix = helix(whole);
+    std::tie(out.rose, out.helix) = roseAndHelix(s, whole, def);
   } else {
     const auto [first, last] = rowsWithin(s.time, out.phases.steady.start, out.phases.steady.end);
     const auto steady = over(first, last);
-    out.rose = rose(steady);
+    HelixFeatures helixSteady;
+    std::tie(out.rose, helixSteady) = roseAndHelix(s, steady, def);
     out.roseWindow = out.phases.steady;
     if (!out.rose.found) {
       out.roseNote = wholeTrialNote(out.phases.steady, out.rose.reason);
       out.rose = rose(whole);
       out.roseWindow = out.phases.trial;
     }
-    out.helix = helix(steady);
+    out.helix = std::move(helixSteady);
     out.helixWindow = out.phases.steady;
     if (!out.helix.arc.found || !out.helix.loops.found) {
       const std::string why = !out.helix.loops.found ? out.helix.loops.reason : out.helix.arc.reason;

@@ -24,6 +24,7 @@ struct ResampleDef {
   double maxRate = 100.0;  // [Hz] the densest grid produced
   double maxGap = 0.25;    // [s] a longer stretch without finite rows splits the data
   int minSamples = 16;     // fewer usable samples than this is "not enough data"
+  bool operator==(const ResampleDef&) const = default;
 };
 
 struct UniformSeries {

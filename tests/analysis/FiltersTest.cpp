@@ -32,8 +32,85 @@ TEST(Filters, LocalSlopeIsExactOnAQuadratic) {
   for (std::size_t i = 0; i < v.size(); ++i) EXPECT_NEAR(s[i], 0.6 * i * dt - 2.0, i == 0 || i + 1 == v.size() ? 4e-3 : 1e-9);
 }
 
-// localSlope runs its whole windows side by side (issue 32); each slope must
-// keep the bits of the plain one-window-at-a-time definition, ends included.
+// movingAverages runs two columns' sums side by side (issue 32): each must
+// be movingAverage's to the bit, ends included.
+TEST(Filters, MovingAveragesAreTwoMovingAverages) {
+  std::mt19937 rng(34);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  for (const std::size_t n : {0u, 1u, 2u, 7u, 1001u}) {
+    std::vector<double> x(n), y(n);
+    double wx = 0.0, wy = 0.0;
+    for (std::size_t i = 0; i < n; ++i) x[i] = wx += normal(rng), y[i] = wy += 1e-3 * normal(rng);
+    for (const std::size_t halfWidth : {0u, 1u, 3u, 50u, 600u}) {
+      const auto [ax, ay] = movingAverages(x, y, halfWidth);
+      const std::vector<double> bx = movingAverage(x, halfWidth), by = movingAverage(y, halfWidth);
+      ASSERT_EQ(ax.size(), n);
+      ASSERT_EQ(ay.size(), n);
+      EXPECT_TRUE(n == 0 || std::memcmp(ax.data(), bx.data(), sizeof(double) * n) == 0) << "n " << n << " half width " << halfWidth;
+      EXPECT_TRUE(n == 0 || std::memcmp(ay.data(), by.data(), sizeof(double) * n) == 0) << "n " << n << " half width " << halfWidth;
+    }
+  }
+  const std::vector<double> longer(5, 1.0), shorter(3, 2.0);  // unequal: each on its own
+  const auto [a, b] = movingAverages(longer, shorter, 1);
+  EXPECT_EQ(a, movingAverage(longer, 1));
+  EXPECT_EQ(b, movingAverage(shorter, 1));
+}
+
+// sweptAngleAbout and unwrapOffsetsAbout skip the atan2 of steps that
+// cannot wrap (issue 32): they must give unwrapAngles' turn and angles to
+// the bit, on paths that cross the -x axis
+// many times, stop at the centre (where atan2(0, -0) = pi), lie on the
+// axes and diagonals, jump, or hold a NaN.
+TEST(Filters, SweptAngleAndOffsetsAboutAreUnwrapAnglesOfEveryAtan2) {
+  auto plain = [](const std::vector<double>& x, const std::vector<double>& y, double cx, double cy) {
+    std::vector<double> a(x.size());
+    for (std::size_t i = 0; i < a.size(); ++i) a[i] = std::atan2(y[i] - cy, x[i] - cx);
+    const std::vector<double> u = unwrapAngles(a);
+    return u.empty() ? 0.0 : u.back() - u.front();
+  };
+  auto sameBits = [](double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+  std::mt19937 rng(35);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  std::uniform_int_distribution<int> pick(0, 9);
+  for (int trial = 0; trial < 400; ++trial) {
+    const std::size_t n = 1 + static_cast<std::size_t>(trial % 97) * 7;
+    const double cx = trial % 3 == 0 ? 0.0 : normal(rng), cy = trial % 5 == 0 ? 0.0 : normal(rng);
+    const double rate = 0.3 * normal(rng), radius = std::abs(normal(rng)) + 1e-3;
+    std::vector<double> x(n), y(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const double phase = rate * static_cast<double>(i) + 0.05 * normal(rng);
+      const double r = radius * (1.0 + 0.9 * std::sin(0.7 * static_cast<double>(i)));  // loops through the centre's side
+      x[i] = cx + r * std::cos(phase), y[i] = cy + r * std::sin(phase);
+      switch (pick(rng)) {
+        case 0: x[i] = cx, y[i] = cy; break;                       // at the centre
+        case 1: y[i] = cy; break;                                  // on the x axis (both sides)
+        case 2: x[i] = cx; break;                                  // on the y axis
+        case 3: y[i] = cy + (x[i] - cx); break;                    // on a diagonal
+        case 4: x[i] = cx - std::abs(y[i] - cy) * 1e-17; break;    // just left of the y axis
+        default: break;
+      }
+      if (trial % 50 == 7 && i == n / 2) x[i] = std::nan("");
+    }
+    const double fast = sweptAngleAbout(x, y, cx, cy), slow = plain(x, y, cx, cy);
+    EXPECT_TRUE(sameBits(fast, slow) || (std::isnan(fast) && std::isnan(slow))) << "trial " << trial << ": " << fast << " against " << slow;
+    // Every point's unwrapped angle from the offsets, against unwrapAngles.
+    std::vector<double> a(n);
+    for (std::size_t i = 0; i < n; ++i) a[i] = std::atan2(y[i] - cy, x[i] - cx);
+    const std::vector<double> u = unwrapAngles(a), offsets = unwrapOffsetsAbout(x, y, cx, cy);
+    ASSERT_EQ(offsets.size(), n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const double angle = i == 0 ? a[0] : a[i] + offsets[i];
+      EXPECT_TRUE(sameBits(angle, u[i]) || (std::isnan(angle) && std::isnan(u[i]))) << "trial " << trial << " point " << i;
+    }
+  }
+  const std::vector<double> xs = {1.0, -0.0, -1.0}, ys = {0.0, 0.0, 1e-300};  // through the centre with dx = -0
+  EXPECT_TRUE(sameBits(sweptAngleAbout(xs, ys, 0.0, 0.0), plain(xs, ys, 0.0, 0.0)));
+  EXPECT_EQ(sweptAngleAbout({}, {}, 0.0, 0.0), 0.0);
+}
+
+// localSlope runs its whole windows side by side, in registers as wide as
+// the CPU has (issue 32); each slope must keep the bits of the plain
+// one-window-at-a-time definition, ends and groups' remainders included.
 TEST(Filters, LocalSlopeHasTheBitsOfOneWindowAtATime) {
   auto plain = [](const std::vector<double>& v, double dt, std::size_t halfWidth) {
     const std::size_t n = v.size();
@@ -56,11 +133,11 @@ TEST(Filters, LocalSlopeHasTheBitsOfOneWindowAtATime) {
   };
   std::mt19937 rng(32);
   std::normal_distribution<double> normal(0.0, 1.0);
-  for (const std::size_t n : {2u, 3u, 7u, 100u, 1001u}) {
+  for (const std::size_t n : {2u, 3u, 7u, 100u, 1001u, 6001u}) {
     std::vector<double> v(n);
     double walk = 0.0;
     for (double& x : v) x = walk += normal(rng);
-    for (const std::size_t halfWidth : {0u, 1u, 3u, 50u, 600u}) {
+    for (const std::size_t halfWidth : {0u, 1u, 3u, 50u, 150u, 600u}) {
       const std::vector<double> fast = localSlope(v, 0.01, halfWidth), slow = plain(v, 0.01, halfWidth);
       ASSERT_EQ(fast.size(), slow.size());
       EXPECT_EQ(std::memcmp(fast.data(), slow.data(), sizeof(double) * n), 0) << "n " << n << " half width " << halfWidth;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <random>
 #include <vector>
 
@@ -52,6 +53,72 @@ TEST(Statistics, QuantileBySelectionIsTheSortedDefinition) {
       EXPECT_EQ(quantile(v, q), expected) << "n " << n << " q " << q;
     }
   }
+}
+
+// Long columns are selected within a bracket from a sample (issue 32): the
+// values must still be the sort's, on noise, ties, a constant, sorted and
+// reversed columns, a periodic one (which a strided sample may alias) and
+// infinities; and a NaN must give what a selection over all gives.
+TEST(Statistics, QuantileOfALongColumnIsTheSortedDefinition) {
+  std::mt19937 rng(36);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  for (const std::size_t n : {2047u, 2048u, 2051u, 6001u, 60001u}) {
+    for (int kind = 0; kind < 7; ++kind) {
+      std::vector<double> v(n);
+      for (std::size_t i = 0; i < n; ++i) {
+        const double t = static_cast<double>(i);
+        switch (kind) {
+          case 0: v[i] = normal(rng); break;
+          case 1: v[i] = std::round(4.0 * normal(rng)) / 4.0; break;
+          case 2: v[i] = 0.25; break;
+          case 3: v[i] = t; break;
+          case 4: v[i] = -t; break;
+          case 5: v[i] = std::sin(2.0 * 3.14159265358979 * t / 256.0) + 1e-3 * std::sin(0.37 * t); break;
+          default: v[i] = i % 97 == 0 ? (i % 2 ? 1.0 : -1.0) / 0.0 : normal(rng); break;
+        }
+      }
+      std::vector<double> sorted = v;
+      std::sort(sorted.begin(), sorted.end());
+      for (const double q : {0.0, 0.001, 0.05, 0.5, 0.77, 0.95, 0.999, 1.0}) {
+        const double at = q * static_cast<double>(n - 1);
+        const auto below = static_cast<std::size_t>(std::floor(at));
+        const std::size_t above = std::min(below + 1, n - 1);
+        const double w = at - static_cast<double>(below);
+        const double expected = sorted[below] * (1.0 - w) + sorted[above] * w;
+        const double got = quantile(v, q);
+        EXPECT_TRUE(got == expected || (std::isnan(got) && std::isnan(expected))) << "n " << n << " kind " << kind << " q " << q;
+      }
+    }
+  }
+  std::vector<double> withNan(6001);
+  for (double& x : withNan) x = normal(rng);
+  withNan[3000] = std::nan("");
+  std::vector<double> copy = withNan;  // the selection over all, as quantile made it before the bracket
+  std::nth_element(copy.begin(), copy.begin() + 3000, copy.end());
+  const double low = copy[3000], high = *std::min_element(copy.begin() + 3001, copy.end());
+  const double expected = low * (1.0 - 0.0) + high * 0.0, got = quantile(withNan, 0.5);
+  EXPECT_TRUE(std::memcmp(&got, &expected, sizeof got) == 0) << got << " against " << expected;
+}
+
+// quantiles nests its selections (issue 32); each value must be quantile's
+// to the bit, whatever the order of the qs, with ties and repeated ranks.
+TEST(Statistics, QuantilesAtOnceAreEachQuantile) {
+  std::mt19937 rng(33);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  const std::vector<std::vector<double>> qSets = {
+      {0.5}, {0.05, 0.5, 0.95}, {0.95, 0.05}, {1.0, 0.0, 0.5, 0.5}, {0.3, 0.31, 0.32, 0.999, 0.001}, {}};
+  for (const std::size_t n : {1u, 2u, 3u, 10u, 101u, 1000u, 6001u}) {
+    std::vector<double> v(n);
+    for (double& x : v) x = std::round(8.0 * normal(rng)) / 8.0;  // coarse: many ties
+    if (n > 100) v[n / 2] = 100.0;                                  // and one far out
+    for (const std::vector<double>& qs : qSets) {
+      const std::vector<double> got = quantiles(v, qs);
+      ASSERT_EQ(got.size(), qs.size());
+      for (std::size_t i = 0; i < qs.size(); ++i)
+        EXPECT_EQ(got[i], quantile(v, qs[i])) << "n " << n << " q " << qs[i] << " of " << qs.size();
+    }
+  }
+  EXPECT_EQ(quantiles({}, std::vector<double>{0.5}), std::vector<double>{0.0});
 }
 
 }  // namespace

@@ -3,7 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <span>
 #include <numbers>
 #include <vector>
 
@@ -59,6 +61,38 @@ TEST(TrialAnalyzer, WithoutPrecessionTheWholeTrialIsUsedAndSaidSo) {
   ASSERT_TRUE(f.rose.found) << f.rose.reason;
   EXPECT_EQ(f.rose.leaves, 9);
   EXPECT_NEAR(f.roseWindow.duration(), 40.0, 1e-9);
+}
+
+// The rose and the helix of one window share one resampling (issue 32)
+// only where each would have made the same series alone: their features
+// must be those of the detectors run on their own columns, bit for bit;
+// also where a NaN in one contact row makes the shared resampling drop a row
+// that the rose keeps.
+TEST(TrialAnalyzer, SharedResamplingGivesEachDetectorsOwnFeatures) {
+  for (const bool withNan : {false, true}) {
+    Trial trial = makeTrial(true);
+    if (withNan) trial.contact.x[2000] = std::nan("");  // 20 s: inside the steady phase
+    const TrialFeatures f = analyzeTrial(trial.samples());
+    ASSERT_TRUE(f.phases.found) << f.phases.reason;
+    std::size_t first = trial.mass.t.size(), last = 0;
+    for (std::size_t i = 0; i < trial.mass.t.size(); ++i)
+      if (trial.mass.t[i] >= f.phases.steady.start && trial.mass.t[i] <= f.phases.steady.end)
+        first = std::min(first, i), last = i + 1;
+    auto cut = [&](const std::vector<double>& c) { return std::span<const double>(c).subspan(first, last - first); };
+    const RoseFeatures rose = detectRose(cut(trial.mass.t), cut(trial.mass.x), cut(trial.mass.y));
+    const HelixFeatures helix = detectHelix(cut(trial.contact.t), cut(trial.contact.x), cut(trial.contact.y));
+    ASSERT_TRUE(rose.found) << rose.reason;
+    EXPECT_EQ(f.rose.leaves, rose.leaves);
+    EXPECT_EQ(f.rose.centreX, rose.centreX);
+    EXPECT_EQ(f.rose.centreY, rose.centreY);
+    EXPECT_EQ(f.rose.leafPeriod.value, rose.leafPeriod.value);
+    EXPECT_EQ(f.rose.tipX, rose.tipX);
+    EXPECT_EQ(f.rose.span.start, rose.span.start);
+    EXPECT_EQ(f.helix.arc.x, helix.arc.x);
+    EXPECT_EQ(f.helix.arc.sweptAngle, helix.arc.sweptAngle);
+    EXPECT_EQ(f.helix.loops.times, helix.loops.times);
+    EXPECT_EQ(f.helix.loops.frequency, helix.loops.frequency);
+  }
 }
 
 }  // namespace
