@@ -118,11 +118,20 @@ template class LaneBatch<12>;
 RoseBatch::RoseBatch(int width) : LaneBatch<8>(width, lanes::kRoseRows) {}
 
 int RoseBatch::add(const HemisphereParams& params, const RoseDef& rose, const BodyState& x0) {
+  // Negative bounds: no state passes (as InteriorCheck's own where no sum or
+  // radius is safe).
+  return add(params, rose, x0, InteriorCheck(1.0, 0.0));
+}
+
+int RoseBatch::add(const HemisphereParams& params, const RoseDef& rose, const BodyState& x0,
+                   const InteriorCheck& interior) {
   const int lane = addLane(params, x0);
   rowMutable(lanes::kRoseR1)[lane] = rose.r1;
   rowMutable(lanes::kRoseR2)[lane] = rose.r2;
   rowMutable(lanes::kRoseK)[lane] = rose.k;
   rowMutable(lanes::kRoseOmega)[lane] = rose.omega;
+  rowMutable(lanes::kTiltSumBound)[lane] = interior.tiltSumBound();
+  rowMutable(lanes::kFaceBoundSquared)[lane] = interior.faceBoundSquared();
   driveRowsStale_ = true;
   return lane;
 }
@@ -139,10 +148,10 @@ void RoseBatch::step(double t, double h, double gridEnd) {
   v.drive = driveEnd_.data();
   v.gridEnd = gridEnd;
   switch (width()) {
-    case 8: lanes::roseStepLanes8(v, t, h); break;
-    case 4: lanes::roseStepLanes4(v, t, h); break;
-    case 2: lanes::roseStepLanes2(v, t, h); break;
-    default: lanes::roseStepLanes1(v, t, h); break;
+    case 8: everyActiveLaneSurelyInside_ = lanes::roseStepLanes8(v, t, h); break;
+    case 4: everyActiveLaneSurelyInside_ = lanes::roseStepLanes4(v, t, h); break;
+    case 2: everyActiveLaneSurelyInside_ = lanes::roseStepLanes2(v, t, h); break;
+    default: everyActiveLaneSurelyInside_ = lanes::roseStepLanes1(v, t, h); break;
   }
 }
 
@@ -154,6 +163,10 @@ Vec2 RoseBatch::drivePosition(int lane) const {
 Vec2 RoseBatch::gridDrivePosition(int lane) const {
   auto at = [&](int r) { return driveEnd_[static_cast<std::size_t>(r) * drivePadded_ + lane]; };
   return {at(lanes::kGridX), at(lanes::kGridY)};
+}
+
+bool RoseBatch::surelyInside(int lane) const {
+  return driveEnd_[static_cast<std::size_t>(lanes::kSurelyInside) * drivePadded_ + lane] != 0.0;
 }
 
 ForceDrivenBatch::ForceDrivenBatch(std::optional<ForceMethod> coupling, int width)

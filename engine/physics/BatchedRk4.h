@@ -28,6 +28,7 @@
 #include <optional>
 #include <vector>
 
+#include "engine/physics/DomainEvents.h"
 #include "engine/physics/ForceCoupling.h"
 #include "engine/physics/HemisphereParams.h"
 #include "engine/physics/RoseDrive.h"
@@ -54,10 +55,13 @@ struct BatchView {
   // rose's p and p' at gridEnd with that time (gridDrivePosition, and the
   // sample the next step reuses if it begins there). The caller sets the
   // kept time to NaN where the rows hold no sample of the lanes' roses.
+  // The kernel also writes kSurelyInside (RoseBatch::surelyInside), 1 or 0.
   double* drive = nullptr;
   double gridEnd = 0.0;
 };
-enum DriveRow : int { kEndX, kEndY, kGridX, kGridY, kKeptPDotX, kKeptPDotY, kKeptSampleTime, kDriveRows };
+enum DriveRow : int {
+  kEndX, kEndY, kGridX, kGridY, kKeptPDotX, kKeptPDotY, kKeptSampleTime, kSurelyInside, kDriveRows
+};
 // Rows shared by both models: the mass constants, then whether a lane is active.
 enum Row : int {
   kPointMass,
@@ -73,6 +77,8 @@ enum Row : int {
   kRoseR2,
   kRoseK,
   kRoseOmega,
+  kTiltSumBound,  // the lane's InteriorCheck
+  kFaceBoundSquared,
   kRoseRows,
   // The coupling's, and the held proxy's pose.
   kStiffness = kCommonRows,
@@ -88,11 +94,12 @@ enum Row : int {
 };
 
 // One width's step of every active lane, defined in BatchedRk4Lanes<W>.cpp
-// (widths 1 and 2 in BatchedRk4Lanes2.cpp).
-void roseStepLanes1(const BatchView& v, double t, double h);
-void roseStepLanes2(const BatchView& v, double t, double h);
-void roseStepLanes4(const BatchView& v, double t, double h);
-void roseStepLanes8(const BatchView& v, double t, double h);
+// (widths 1 and 2 in BatchedRk4Lanes2.cpp). The rose's returns whether every
+// active lane is surely inside (RoseBatch::everyActiveLaneSurelyInside).
+bool roseStepLanes1(const BatchView& v, double t, double h);
+bool roseStepLanes2(const BatchView& v, double t, double h);
+bool roseStepLanes4(const BatchView& v, double t, double h);
+bool roseStepLanes8(const BatchView& v, double t, double h);
 void forceDrivenStepLanes1(const BatchView& v, double h);
 void forceDrivenStepLanes2(const BatchView& v, double h);
 void forceDrivenStepLanes4(const BatchView& v, double h);
@@ -139,8 +146,11 @@ class LaneBatch {
 class RoseBatch final : public LaneBatch<8> {
  public:
   explicit RoseBatch(int width = bestLaneWidth());
-  // The new lane's index.
+  // The new lane's index. `interior` is the lane's system's
+  // (PrescribedDriveSystem::interior); without one, no state of the lane is
+  // surely inside (surelyInside is always false).
   int add(const HemisphereParams& params, const RoseDef& rose, const BodyState& x0);
+  int add(const HemisphereParams& params, const RoseDef& rose, const BodyState& x0, const InteriorCheck& interior);
   // One RK4 step of every active lane from t to t + h; gridEnd is the time
   // the caller puts the clock on after it (the grid time, which may differ
   // from t + h in the last bit), where gridDrivePosition evaluates the rose.
@@ -154,6 +164,17 @@ class RoseBatch final : public LaneBatch<8> {
   Vec2 drivePosition(int lane) const;
   // The same at the last step's gridEnd (RoseDrive::at(gridEnd).p's bits).
   Vec2 gridDrivePosition(int lane) const;
+  // Whether the lane's state after the last step is finite and passes its
+  // InteriorCheck::surelyInside at drivePosition and at gridDrivePosition:
+  // then PrescribedDriveSystem::domainEventWith would answer None at both
+  // times by its fast path, and the caller need not ask it. Computed in the
+  // lanes, with the scalar test's operations in its order, so the same
+  // answer (BatchedRk4Test); false where it is not, and the caller checks
+  // the lane exactly. Only for a lane that was active in the last step.
+  bool surelyInside(int lane) const;
+  // The same for every lane active in the last step (a step where this holds
+  // and no row is due needs nothing lane by lane).
+  bool everyActiveLaneSurelyInside() const { return everyActiveLaneSurelyInside_; }
 
  private:
   std::vector<double> driveEnd_;
@@ -161,6 +182,7 @@ class RoseBatch final : public LaneBatch<8> {
   // A lane was added since the drive rows were laid out: their kept samples
   // are not of the lanes' present roses (or rows).
   bool driveRowsStale_ = true;
+  bool everyActiveLaneSurelyInside_ = false;
 };
 
 // The 12-state force-driven model (ForceDrivenSystem): free motion, or every

@@ -6,10 +6,14 @@
 // this header is left out of line to be shared (and mixed up at link time)
 // between instruction sets (tools/check-lane-objects.sh, the ctest physics.lane_objects_check, checks it).
 
+#include <cmath>
+#include <type_traits>
+
 #include "engine/physics/BatchedRk4.h"
 #include "engine/physics/ForceDrivenSystem.h"
 #include "engine/physics/PrescribedDriveSystem.h"
 #include "engine/physics/RoseDrive.h"
+#include "engine/physics/SinCos.h"
 
 namespace hemiroll::physics::lanes {
 
@@ -88,6 +92,38 @@ inline bool anyActive(const BatchView& v, int first) {
   return false;
 }
 
+// Whether every lane of a comparison's mask is set (a bool or int for plain
+// doubles).
+template <class M>
+inline bool allSet(M m) {
+  if constexpr (std::is_arithmetic_v<M>) return m != 0;
+  else return detail::allLanesSet(m);
+}
+
+template <class T>
+inline T absOf(T a) {
+  if constexpr (laneCount<T>() == 1) {
+    return std::fabs(a);
+  } else {
+    using LaneInts = typename detail::LaneIntsOf<T>::type;
+    return __builtin_bit_cast(T, __builtin_bit_cast(LaneInts, a) & 0x7fffffffffffffffLL);
+  }
+}
+
+// The lanes where PrescribedDriveSystem::domainEventWith takes its fast path
+// for the state x with the mass point at p: InteriorCheck::surelyInside's
+// comparisons on the same sums in the same order (no contraction into FMA:
+// -ffp-contract=off), and x.allFinite() as Eigen computes it (x - x is 0
+// exactly where x is finite, NaN where it is infinite or NaN).
+template <class T>
+inline auto surelyInsideMask(const T (&x)[8], const Real2Of<T>& p, T tiltSumBound, T faceBoundSquared) {
+  using namespace body_slot;
+  auto inside = (absOf(x[u_o]) + absOf(x[v_o]) <= tiltSumBound) & (p.x * p.x + p.y * p.y <= faceBoundSquared);
+  for (int i = 0; i < 8; ++i) inside = inside & (x[i] - x[i] == 0.0);
+  if constexpr (laneCount<T>() == 1) return inside != 0;
+  else return inside;
+}
+
 // The same time to the bit: -0.0 and +0.0 give the rose different signs of
 // zero, so == would not do; a NaN time never matches (it may mark "none").
 inline bool sameTime(double a, double b) {
@@ -98,9 +134,14 @@ inline bool sameTime(double a, double b) {
 // t + h/2, and stage 1's t is usually the time the previous step kept its
 // sample at (its grid end, BatchView::drive). Same time, same inputs, so
 // the reused sample has the bits a new one would have.
+//
+// After the step, each lane's verdict for the domain check at t + h and at
+// the grid end (RoseBatch::surelyInside); returns whether every active lane
+// passed both.
 template <class T>
-inline void roseStep(const BatchView& v, double t, double h) {
+inline bool roseStep(const BatchView& v, double t, double h) {
   auto driveRow = [&](int r, int first) { return v.drive + static_cast<std::size_t>(r) * v.padded + first; };
+  bool everyActiveInside = true;
   for (int first = 0; first < v.padded; first += laneCount<T>()) {
     if (!anyActive<T>(v, first)) continue;
     const MassConstantsOf<T> c = massConstantsAt<T>(v, first);
@@ -121,6 +162,7 @@ inline void roseStep(const BatchView& v, double t, double h) {
       prescribedRatesOf(c, p, pDot, x, dxdt);
     });
     // p is now the last stage's, at t + h.
+    const Real2Of<T> pEnd = p;
     store(driveRow(kEndX, first), p.x);
     store(driveRow(kEndY, first), p.y);
     // Where the grid time is not t + h to the bit, the rose once more there;
@@ -131,7 +173,15 @@ inline void roseStep(const BatchView& v, double t, double h) {
     store(driveRow(kKeptPDotX, first), pDot.x);
     store(driveRow(kKeptPDotY, first), pDot.y);
     for (int lane = 0; lane < laneCount<T>(); ++lane) driveRow(kKeptSampleTime, first)[lane] = sampleTime;
+    T x[8];  // the states stepGroup has just stored (whole vectors: forwarded)
+    for (int i = 0; i < 8; ++i) x[i] = load<T>(v.state + static_cast<std::size_t>(i) * v.padded + first);
+    const T tiltSumBound = at(kTiltSumBound), faceBoundSquared = at(kFaceBoundSquared);
+    const auto inside = surelyInsideMask(x, pEnd, tiltSumBound, faceBoundSquared) &
+                        surelyInsideMask(x, p, tiltSumBound, faceBoundSquared);  // at t + h and at the grid end
+    store(driveRow(kSurelyInside, first), inside ? broadcast<T>(1.0) : broadcast<T>(0.0));
+    everyActiveInside = everyActiveInside && allSet(inside | (at(kActive) == 0.0));
   }
+  return everyActiveInside;
 }
 
 template <class T>

@@ -8,8 +8,8 @@ namespace {
 typedef double Lanes2 __attribute__((vector_size(16)));
 }  // namespace
 
-[[gnu::flatten]] void roseStepLanes1(const BatchView& v, double t, double h) { roseStep<double>(v, t, h); }
-[[gnu::flatten]] void roseStepLanes2(const BatchView& v, double t, double h) { roseStep<Lanes2>(v, t, h); }
+[[gnu::flatten]] bool roseStepLanes1(const BatchView& v, double t, double h) { return roseStep<double>(v, t, h); }
+[[gnu::flatten]] bool roseStepLanes2(const BatchView& v, double t, double h) { return roseStep<Lanes2>(v, t, h); }
 [[gnu::flatten]] void forceDrivenStepLanes1(const BatchView& v, double h) { forceDrivenStep<double>(v, h); }
 [[gnu::flatten]] void forceDrivenStepLanes2(const BatchView& v, double h) { forceDrivenStep<Lanes2>(v, h); }
 

@@ -8,7 +8,7 @@ namespace {
 typedef double Lanes4 __attribute__((vector_size(32)));
 }  // namespace
 
-[[gnu::flatten]] void roseStepLanes4(const BatchView& v, double t, double h) { roseStep<Lanes4>(v, t, h); }
+[[gnu::flatten]] bool roseStepLanes4(const BatchView& v, double t, double h) { return roseStep<Lanes4>(v, t, h); }
 [[gnu::flatten]] void forceDrivenStepLanes4(const BatchView& v, double h) { forceDrivenStep<Lanes4>(v, h); }
 
 }  // namespace hemiroll::physics::lanes

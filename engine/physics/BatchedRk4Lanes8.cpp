@@ -8,7 +8,7 @@ namespace {
 typedef double Lanes8 __attribute__((vector_size(64)));
 }  // namespace
 
-[[gnu::flatten]] void roseStepLanes8(const BatchView& v, double t, double h) { roseStep<Lanes8>(v, t, h); }
+[[gnu::flatten]] bool roseStepLanes8(const BatchView& v, double t, double h) { return roseStep<Lanes8>(v, t, h); }
 [[gnu::flatten]] void forceDrivenStepLanes8(const BatchView& v, double h) { forceDrivenStep<Lanes8>(v, h); }
 
 }  // namespace hemiroll::physics::lanes

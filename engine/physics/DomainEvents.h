@@ -47,6 +47,9 @@ class InteriorCheck {
   bool surelyInside(double u_o, double v_o, double x_p, double y_p) const {
     return std::fabs(u_o) + std::fabs(v_o) <= tiltSumBound_ && x_p * x_p + y_p * y_p <= faceBoundSquared_;
   }
+  // The two bounds, for the lanes' copy of this test (BatchedRk4.h).
+  double tiltSumBound() const { return tiltSumBound_; }
+  double faceBoundSquared() const { return faceBoundSquared_; }
 
  private:
   double tiltSumBound_;      // [rad], negative when no angle sum is safe

@@ -55,6 +55,8 @@ class PrescribedDriveSystem final : public OdeSystem<8> {
   ForceDrivenState fullState(double t, const BodyState& x) const;
 
   const RollingDynamics& dynamics() const { return dynamics_; }
+  // domainEvent's trigonometry-free test (the lanes run it too: RoseBatch).
+  const InteriorCheck& interior() const { return interior_; }
 
  private:
   RollingDynamics dynamics_;

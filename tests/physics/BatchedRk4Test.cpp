@@ -10,7 +10,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
+#include <cstdlib>
+#include <limits>
 #include <deque>
 #include <optional>
 #include <random>
@@ -195,6 +198,114 @@ void expectRoseLanesMatchScalarOnAnIrregularClock(int width) {
 
 TEST(BatchedRk4Test, TheRoseIsReusedOnlyAtItsOwnTimeAndRoses) {
   for (int width : supportedWidths()) expectRoseLanesMatchScalarOnAnIrregularClock(width);
+}
+
+// The lanes' domain check (RoseBatch::surelyInside) must answer exactly as
+// the scalar fast path does on the same state and rose positions:
+// InteriorCheck::surelyInside at t + h and at the grid end, and allFinite.
+// A step of length 0 leaves each state as set (x + 0 k), so states can be
+// put on the edges: the tilt sum and |p|^2 within a few ulp of each lane's
+// bounds (the check's own bounds moved to straddle p), NaN and infinities
+// in any slot, and far inside or outside. Each round is a new batch: lanes
+// near the edges, or all but one far inside, or all far inside (so that
+// everyActiveLaneSurelyInside is seen both ways), with a lane retired
+// (whose verdict must not count).
+void expectLaneDomainCheckIsTheScalars(int width) {
+  std::mt19937_64 rng(20261127 + width);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  auto ulps = [&](double x, int most) {  // x moved by up to `most` ulp either way
+    const int n = static_cast<int>(rng() % (2 * most + 1)) - most;
+    for (int i = 0; i < std::abs(n); ++i) x = std::nextafter(x, n > 0 ? 1e300 : -1e300);
+    return x;
+  };
+  const double special[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
+                            -std::numeric_limits<double>::infinity()};
+  int verdicts[2] = {0, 0}, edgeVerdicts[2] = {0, 0}, wholeVerdicts[2] = {0, 0}, nonFinite = 0;
+  const std::vector<RoseLane> lanes = roseLanes();
+  for (int round = 0; round < 400; ++round) {
+    const int mode = round % 3;  // 0: near the edges, 1: all far inside but one, 2: all far inside
+    const double t = 100.0 * unit(rng);
+    const double gridEnd = rng() % 2 ? t : ulps(t, 2);  // the grid end at t, or off it in the last bits
+    physics::RoseBatch batch(width);
+    std::vector<physics::InteriorCheck> checks;
+    std::vector<bool> nearEdge;
+    for (int lane = 0; lane < kLanes; ++lane) {
+      const RoseLane& l = lanes[lane];
+      const physics::RoseDrive rose(l.rose);
+      const physics::Vec2 p = rose.at(rng() % 2 ? t : gridEnd).p;  // straddle at one of the two times
+      const bool edge = mode == 0 || (mode == 1 && lane == round % kLanes);
+      const double cosMaxTilt = std::cos(0.3 + 1.2 * unit(rng));
+      // faceBoundSquared is faceLimit^2 (1 - 1e-6): put it within ulp of |p|^2.
+      const double faceLimit = edge && rng() % 2 ? ulps(std::sqrt(p.squaredNorm() / (1.0 - 1e-6)), 3) : 1.0;
+      checks.emplace_back(cosMaxTilt, faceLimit);
+      BodyState x;
+      for (int s = 0; s < 8; ++s) x[s] = 0.05 * (2.0 * unit(rng) - 1.0);
+      const double tiltSum = edge && rng() % 2 ? ulps(checks.back().tiltSumBound(), 3)
+                             : edge           ? checks.back().tiltSumBound() * (0.5 + unit(rng))
+                                              : 0.1 * unit(rng);
+      const double split = rng() % 4 == 0 ? 0.0 : unit(rng);
+      x[physics::body_slot::u_o] = (rng() % 2 ? 1.0 : -1.0) * split * tiltSum;
+      x[physics::body_slot::v_o] = (rng() % 2 ? 1.0 : -1.0) * (1.0 - split) * tiltSum;
+      if (edge && rng() % 4 == 0) x[static_cast<int>(rng() % 8)] = special[rng() % 3];
+      nearEdge.push_back(edge);
+      batch.add(l.params, l.rose, x, checks.back());
+    }
+    // Retiring the one lane near the edges leaves every active lane inside.
+    const int retired = static_cast<int>(mode == 1 && rng() % 2 ? round % kLanes : rng() % kLanes);
+    batch.retire(retired);
+    batch.step(t, 0.0, gridEnd);
+    bool every = true;
+    for (int lane = 0; lane < kLanes; ++lane) {
+      if (!batch.active(lane)) continue;
+      const BodyState x = batch.state(lane);
+      const physics::Vec2 end = batch.drivePosition(lane), grid = batch.gridDrivePosition(lane);
+      const physics::InteriorCheck& c = checks[lane];
+      using physics::body_slot::u_o, physics::body_slot::v_o;
+      const bool scalar = c.surelyInside(x[u_o], x[v_o], end.x(), end.y()) && x.allFinite() &&
+                          c.surelyInside(x[u_o], x[v_o], grid.x(), grid.y());
+      ASSERT_EQ(batch.surelyInside(lane), scalar)
+          << "width " << width << ", round " << round << ", lane " << lane << ": " << x.transpose();
+      every = every && scalar;
+      ++verdicts[scalar];
+      if (nearEdge[lane]) ++edgeVerdicts[scalar];
+      nonFinite += !x.allFinite();
+    }
+    ASSERT_EQ(batch.everyActiveLaneSurelyInside(), every) << "width " << width << ", round " << round;
+    ++wholeVerdicts[every];
+  }
+  // The draws reached both answers, on the edges too, and non-finite states.
+  EXPECT_GT(edgeVerdicts[0], 200) << "width " << width;
+  EXPECT_GT(edgeVerdicts[1], 200) << "width " << width;
+  EXPECT_GT(wholeVerdicts[0], 100) << "width " << width;
+  EXPECT_GT(wholeVerdicts[1], 100) << "width " << width;
+  EXPECT_GT(nonFinite, 50) << "width " << width;
+  EXPECT_GT(verdicts[1], verdicts[0]) << "width " << width;
+}
+
+TEST(BatchedRk4Test, TheLanesDomainCheckIsTheScalarFastPath) {
+  for (int width : supportedWidths()) expectLaneDomainCheckIsTheScalars(width);
+}
+
+// A lane added without its system's InteriorCheck is never surely inside:
+// its caller checks it exactly.
+TEST(BatchedRk4Test, ALaneWithoutAnInteriorCheckIsNeverSurelyInside) {
+  for (int width : supportedWidths()) {
+    physics::RoseBatch batch(width);
+    const RoseLane l = roseLanes()[1];
+    BodyState upright = BodyState::Zero();
+    batch.add(l.params, l.rose, upright);
+    batch.step(0.0, 1e-3);
+    EXPECT_FALSE(batch.surelyInside(0)) << "width " << width;
+    EXPECT_FALSE(batch.everyActiveLaneSurelyInside()) << "width " << width;
+    // The same lane with its system's check passes.
+    physics::RoseBatch checked(width);
+    const physics::RoseDrive rose(l.rose);
+    const physics::PrescribedDriveSystem system(l.params, rose);
+    checked.add(l.params, l.rose, upright, system.interior());
+    checked.step(0.0, 1e-3);
+    EXPECT_TRUE(checked.surelyInside(0)) << "width " << width;
+    EXPECT_TRUE(checked.everyActiveLaneSurelyInside()) << "width " << width;
+  }
 }
 
 TEST(BatchedRk4Test, TheBestWidthIsOneThisCpuRuns) {
