@@ -189,60 +189,58 @@ int quarterOf(double dx, double dy) {
   return 3;
 }
 
-}  // namespace
-
 // unwrapAngles' offset changes only at a step that rounds to a turn; steps
 // within one of the three safe quarters round to none (and subtracting 0
 // from the offset, which is never -0, changes no bit), so their angles are
 // not needed: only the ends' and those either side of any other step.
-std::vector<double> unwrapOffsetsAbout(std::span<const double> x, std::span<const double> y, double cx, double cy) {
-  const std::size_t n = std::min(x.size(), y.size());
-  std::vector<double> offsets(n, 0.0);
-  if (n == 0) return offsets;
+// Calls atStep(i, offset) for each i >= 1 with the offset there (n >= 1).
+struct UnwrapWalk {
+  double front = 0.0;   // the first point's angle
+  double offset = 0.0;  // the offset at the last point
+  bool lastKnown = true;
+  double last = 0.0;  // the last point's angle, where lastKnown
+};
+
+template <class AtStep>
+UnwrapWalk walkUnwrapAbout(std::span<const double> x, std::span<const double> y, std::size_t n, double cx, double cy,
+                           AtStep atStep) {
   constexpr double kTwoPi = 2.0 * std::numbers::pi;
-  double offset = 0.0, previous = std::atan2(y[0] - cy, x[0] - cx);
-  bool known = true;
+  UnwrapWalk walk;
+  walk.front = walk.last = std::atan2(y[0] - cy, x[0] - cx);
   int previousQuarter = quarterOf(x[0] - cx, y[0] - cy);
   for (std::size_t i = 1; i < n; ++i) {
     const double dx = x[i] - cx, dy = y[i] - cy;
     const int quarter = quarterOf(dx, dy);
     if (quarter == previousQuarter && quarter != 3) {
-      known = false;
+      walk.lastKnown = false;
     } else {
-      if (!known) previous = std::atan2(y[i - 1] - cy, x[i - 1] - cx);
+      if (!walk.lastKnown) walk.last = std::atan2(y[i - 1] - cy, x[i - 1] - cx);
       const double angle = std::atan2(dy, dx);
-      offset -= kTwoPi * std::round((angle - previous) / kTwoPi);
-      previous = angle, known = true;
+      walk.offset -= kTwoPi * std::round((angle - walk.last) / kTwoPi);
+      walk.last = angle, walk.lastKnown = true;
     }
-    offsets[i] = offset;
+    atStep(i, walk.offset);
     previousQuarter = quarter;
   }
+  return walk;
+}
+
+}  // namespace
+
+std::vector<double> unwrapOffsetsAbout(std::span<const double> x, std::span<const double> y, double cx, double cy) {
+  const std::size_t n = std::min(x.size(), y.size());
+  std::vector<double> offsets(n, 0.0);
+  if (n == 0) return offsets;
+  walkUnwrapAbout(x, y, n, cx, cy, [&](std::size_t i, double offset) { offsets[i] = offset; });
   return offsets;
 }
 
 double sweptAngleAbout(std::span<const double> x, std::span<const double> y, double cx, double cy) {
   const std::size_t n = std::min(x.size(), y.size());
   if (n == 0) return 0.0;
-  constexpr double kTwoPi = 2.0 * std::numbers::pi;
-  const double front = std::atan2(y[0] - cy, x[0] - cx);
-  double offset = 0.0, previous = front;  // previous: the angle at i - 1 where `known`
-  bool known = true;
-  int previousQuarter = quarterOf(x[0] - cx, y[0] - cy);
-  for (std::size_t i = 1; i < n; ++i) {
-    const double dx = x[i] - cx, dy = y[i] - cy;
-    const int quarter = quarterOf(dx, dy);
-    if (quarter == previousQuarter && quarter != 3) {
-      known = false;
-    } else {
-      if (!known) previous = std::atan2(y[i - 1] - cy, x[i - 1] - cx);
-      const double angle = std::atan2(dy, dx);
-      offset -= kTwoPi * std::round((angle - previous) / kTwoPi);
-      previous = angle, known = true;
-    }
-    previousQuarter = quarter;
-  }
-  const double back = known ? previous : std::atan2(y[n - 1] - cy, x[n - 1] - cx);
-  return (back + offset) - front;
+  const UnwrapWalk walk = walkUnwrapAbout(x, y, n, cx, cy, [](std::size_t, double) {});
+  const double back = walk.lastKnown ? walk.last : std::atan2(y[n - 1] - cy, x[n - 1] - cx);
+  return (back + walk.offset) - walk.front;
 }
 
 }  // namespace hemiroll::analysis
