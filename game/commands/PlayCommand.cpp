@@ -239,6 +239,15 @@ int runPlayCommand(const std::vector<std::string>& args) {
   const PlayOptionsResult parsed = parsePlayOptions(args);
   if (const std::optional<int> exit = exitBeforeRunning(kPrefix, parsed, playUsage())) return *exit;
   PlayOptions o = parsed.options;
+  // A level that is not there is said here, before any window: in the window
+  // the loader would say it on a screen that --autoplay and --tour never show.
+  const std::string levelsDir = o.levelsDir.empty() ? findLevelsDirectory() : o.levelsDir;
+  o.level = resolveLevelPath(o.level, levelsDir);
+  if (std::error_code ec; !o.level.empty() && !std::filesystem::is_regular_file(o.level, ec)) {
+    std::cerr << kPrefix << "no level file '" << o.level << "'"
+              << (levelsDir.empty() ? std::string() : " (nor one of that name in " + levelsDir + ")") << "\n";
+    return kExitUsage;
+  }
   if (!haveDisplay()) {
     std::cerr << playNoDisplayMessage("DISPLAY is not set") << "\n";
     return kExitUsage;
@@ -251,7 +260,6 @@ int runPlayCommand(const std::vector<std::string>& args) {
     def.levelsDir = o.levelsDir;
     def.deviceProfile = o.deviceProfile;
     App app(def);
-    o.level = resolveLevelPath(o.level, app.levelsDir());
     // What the game starts without (no sound card, missing assets), once,
     // in our words; the title screen shows the same.
     for (const std::string& note : app.notes()) std::cerr << kPrefix << note << "\n";

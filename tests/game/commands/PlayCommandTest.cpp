@@ -53,5 +53,22 @@ TEST(PlayCommandTest, NoDisplayGivesTheHeadlessWaysAndExitCode2) {
   }
 }
 
+// A level that is not there: named, with where else it was looked for, and
+// exit 2 before any window (so also without a display, and under --autoplay,
+// whose window would never show the loader's words).
+TEST(PlayCommandTest, AMissingLevelIsNamedBeforeAnyWindow) {
+  unsetenv("DISPLAY");
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"play", "no_such_level.lua"},
+        std::vector<std::string>{"play", "no_such_level.lua", "--autoplay", "1", "--levels", "."}}) {
+    const test::ProcessResult r = test::runProcess(HEMIROLL_BINARY, args);
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_NE(r.err.find("no level file 'no_such_level.lua'"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("no display"), std::string::npos) << r.err;
+  }
+  const test::ProcessResult r = test::runProcess(HEMIROLL_BINARY, {"play", "no_such_level.lua", "--levels", "."});
+  EXPECT_NE(r.err.find("(nor one of that name in .)"), std::string::npos) << r.err;
+}
+
 }  // namespace
 }  // namespace hemiroll::game
