@@ -8,6 +8,7 @@
 #include "engine/analysis/CircleFit.h"
 #include "engine/analysis/DominantTone.h"
 #include "engine/analysis/Filters.h"
+#include "engine/analysis/LoopCrossings.h"
 #include "engine/analysis/Wording.h"
 
 namespace hemiroll::analysis {
@@ -15,12 +16,6 @@ namespace hemiroll::analysis {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-
-std::vector<double> headings(const std::vector<double>& vx, const std::vector<double>& vy) {
-  std::vector<double> a(vx.size());
-  for (std::size_t i = 0; i < a.size(); ++i) a[i] = std::atan2(vy[i], vx[i]);
-  return unwrapAngles(a);
-}
 
 // The arc through the low-passed trace lx, ly (already cut to full windows).
 void measureArc(const std::vector<double>& lx, const std::vector<double>& ly, double dt, double period,
@@ -77,43 +72,22 @@ void lowPassArc(const UniformSeries& s, double period, std::size_t h, ArcFeature
   measureArc(arc.x, arc.y, s.dt, period, arc);
 }
 
-// Direction of travel relative to the arc's tangent (held constant over the
-// cut ends), unwrapped and shifted to start within (-pi, pi].
-std::vector<double> travelAgainstArc(const ArcFeatures& arc, const std::vector<double>& vx,
-                                     const std::vector<double>& vy, double dt, std::size_t h) {
-  const std::vector<double> tx = localSlope(arc.x, dt, 1), ty = localSlope(arc.y, dt, 1);
-  const std::vector<double> tangent = headings(tx, ty), travel = headings(vx, vy);
-  std::vector<double> relative(travel.size());
-  for (std::size_t i = 0; i < relative.size(); ++i) {
-    const std::size_t k = std::min(i < h ? 0 : i - h, tangent.size() - 1);
-    relative[i] = travel[i] - tangent[k];
-  }
-  relative = unwrapAngles(relative);
-  const double shift = -2.0 * kPi * std::round(relative.front() / (2.0 * kPi));
-  for (double& r : relative) r += shift;
-  return relative;
-}
-
-// A loop each time the relative direction passes an odd multiple of pi in
-// the loops' sense: its time, place and distance along the arc; then the
-// spacings between loops.
-void findLoops(const std::vector<double>& relative, const UniformSeries& s, const std::vector<double>& sx,
-               const std::vector<double>& sy, const ArcFeatures& arc, std::size_t h, LoopFeatures& loops) {
-  const double sense = loops.sense;
-  // The first odd multiple of pi beyond the start, in the loops' sense.
-  double target = sense * kPi * (2.0 * std::floor((sense * relative.front() / kPi + 1.0) / 2.0) + 1.0);
+// A loop each time the direction of travel, relative to the arc's tangent
+// (held constant over the cut ends), passes an odd multiple of pi in the
+// loops' sense (loopCrossings): its time, place and distance along the arc;
+// then the spacings between loops.
+void findLoops(const ArcFeatures& arc, const std::vector<double>& vx, const std::vector<double>& vy,
+               const UniformSeries& s, const std::vector<double>& sx, const std::vector<double>& sy, std::size_t h,
+               LoopFeatures& loops) {
+  const std::vector<double> tx = localSlope(arc.x, s.dt, 1), ty = localSlope(arc.y, s.dt, 1);
   const std::vector<double>& arcLength = arc.along;
   std::vector<double> along;
-  for (std::size_t i = 1; i < relative.size(); ++i) {
-    if (sense * (relative[i] - target) < 0.0) continue;
-    const double w = (target - relative[i - 1]) / (relative[i] - relative[i - 1]);
-    const double position = static_cast<double>(i - 1) + std::clamp(w, 0.0, 1.0);
+  for (const double position : loopCrossings(tx, ty, vx, vy, h, loops.sense)) {
     loops.times.push_back(s.t0 + position * s.dt);
     const auto j = static_cast<std::size_t>(position);
     loops.x.push_back(sx[j]), loops.y.push_back(sy[j]);
     const double k = std::clamp(position - static_cast<double>(h), 0.0, static_cast<double>(arcLength.size() - 1));
     along.push_back(arcLength[static_cast<std::size_t>(std::lround(k))]);
-    target += sense * 2.0 * kPi;
   }
   loops.count = static_cast<int>(loops.times.size());
   std::vector<double> dtLoops, dsLoops;
@@ -170,7 +144,7 @@ HelixFeatures detectHelix(const UniformSeries& s, const HelixDef& def) {
     return out;
   }
   loops.sense = tone.frequency >= 0.0 ? 1 : -1;
-  findLoops(travelAgainstArc(arc, vx, vy, s.dt, h), s, sx, sy, arc, h, loops);
+  findLoops(arc, vx, vy, s, sx, sy, h, loops);
   if (loops.count < def.minLoops) {
     loops.reason = "no loops: the direction of travel turns full circle only " + std::to_string(loops.count) +
                    " times (a wiggle, not a loop; needs " + std::to_string(def.minLoops) + ")";
