@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <cstring>
 #include <numbers>
 
 namespace hemiroll::analysis {
@@ -12,16 +13,56 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr double kTwoPi = 2.0 * kPi;
 
-// Inlined into the loops below so that they need no call per sample.
-[[gnu::always_inline]] inline double cheapAtan2Inline(double y, double x) {
-  const double ax = std::abs(x), ay = std::abs(y);
-  const bool steep = ay > ax;
-  const double t = steep ? ax / ay : ay / ax;  // in [0, 1]
-  const double t2 = t * t;
-  double r = t * (0.9998660 + t2 * (-0.3302995 + t2 * (0.1801410 + t2 * (-0.0851330 + t2 * 0.0208351))));
-  if (steep) r = 0.5 * kPi - r;
-  if (std::signbit(x)) r = kPi - r;
-  return std::signbit(y) ? -r : r;
+// Branch-free (the quarter changes every quarter loop, a branch there is
+// mispredicted), so that the lanes below can run it side by side: the same
+// operations in every lane, lanes of one double included.
+template <std::size_t W>
+[[gnu::always_inline]] inline void cheapAtan2At(const double* y, const double* x, double* out) {
+  typedef double V __attribute__((vector_size(W * sizeof(double))));
+  typedef long long Mask __attribute__((vector_size(W * sizeof(long long))));
+  V vy, vx;
+  std::memcpy(&vy, y, sizeof vy);
+  std::memcpy(&vx, x, sizeof vx);
+  const V ax = vx < 0.0 ? -vx : vx, ay = vy < 0.0 ? -vy : vy;
+  const Mask steep = ay > ax;
+  const V t = (steep ? ax : ay) / (steep ? ay : ax);  // in [0, 1]
+  const V t2 = t * t;
+  V r = t * (0.9998660 + t2 * (-0.3302995 + t2 * (0.1801410 + t2 * (-0.0851330 + t2 * 0.0208351))));
+  r = steep ? 0.5 * kPi - r : r;
+  const Mask signX = (Mask)vx < 0, signY = (Mask)vy < 0;  // a vector cast: the bits
+  r = signX ? kPi - r : r;
+  r = signY ? -r : r;  // r >= 0 (or NaN) before: y's sign, as atan2's
+  std::memcpy(out, &r, sizeof r);
+}
+
+[[gnu::always_inline]] inline double cheapAtan2Scalar(double y, double x) {
+  double r;
+  cheapAtan2At<1>(&y, &x, &r);
+  return r;
+}
+
+// Each direction's cheap angle, W lanes at a time (one copy per instruction
+// set, chosen once by the CPU as Filters' sums are).
+template <std::size_t W>
+[[gnu::always_inline]] inline void cheapAtan2s(const double* y, const double* x, std::size_t n, double* out) {
+  std::size_t i = 0;
+  for (; i + W <= n; i += W) {
+    cheapAtan2At<W>(y + i, x + i, out + i);
+  }
+  for (; i < n; ++i) out[i] = cheapAtan2Scalar(y[i], x[i]);
+}
+__attribute__((target("avx512f"))) void cheapAtan2s8(const double* y, const double* x, std::size_t n, double* out) {
+  cheapAtan2s<8>(y, x, n, out);
+}
+__attribute__((target("avx2"))) void cheapAtan2s4(const double* y, const double* x, std::size_t n, double* out) {
+  cheapAtan2s<4>(y, x, n, out);
+}
+void cheapAtan2s2(const double* y, const double* x, std::size_t n, double* out) { cheapAtan2s<2>(y, x, n, out); }
+using CheapAtan2s = void (*)(const double*, const double*, std::size_t, double*);
+CheapAtan2s cheapAtan2sForThisCpu() {
+  if (__builtin_cpu_supports("avx512f")) return cheapAtan2s8;
+  if (__builtin_cpu_supports("avx2")) return cheapAtan2s4;
+  return cheapAtan2s2;
 }
 
 // The multiple of 2 pi that unwrapAngles takes off for a step (under 3 rad
@@ -40,24 +81,25 @@ bool turnIsClear(double step, double margin) {
 // unwrapAngles' offsets (what it adds to each angle: 0 for the first) for
 // angles whose approximations `approx` make each step within `margin` of the
 // exact one; exact(i) is angle i, asked only where a step's turn is not clear.
+struct Offsets {
+  std::vector<double> at;
+  double largest = 0.0;  // the largest magnitude among them (NaN if one is)
+};
 template <class Exact>
-std::vector<double> unwrapOffsets(const std::vector<double>& approx, double margin, Exact exact) {
-  std::vector<double> offsets(approx.size(), 0.0);
+Offsets unwrapOffsets(const std::vector<double>& approx, double margin, Exact exact) {
+  Offsets offsets{std::vector<double>(approx.size(), 0.0)};
   double offset = 0.0;
   for (std::size_t i = 1; i < approx.size(); ++i) {
     const double step = approx[i] - approx[i - 1];
     const double turn = turnIsClear(step, margin) ? turnOf(step) : turnOf(exact(i) - exact(i - 1));
     // Subtracting 2 pi x (+-0) leaves the offset as it is (it is never -0).
-    if (turn != 0.0) offset -= kTwoPi * turn;
-    offsets[i] = offset;
+    if (turn != 0.0) {
+      offset -= kTwoPi * turn;
+      offsets.largest = std::isnan(offset) ? offset : std::max(offsets.largest, std::abs(offset));
+    }
+    offsets.at[i] = offset;
   }
   return offsets;
-}
-
-double largestMagnitude(const std::vector<double>& v) {
-  double m = 0.0;
-  for (const double x : v) m = std::max(m, std::abs(x));  // NaN is skipped: then the margins below are NaN anyway
-  return m;
 }
 
 // A rounding's error bound for values of magnitude up to `magnitude` (and a
@@ -66,7 +108,7 @@ double roundingSlack(double magnitude) { return 64.0 * DBL_EPSILON * (magnitude 
 
 }  // namespace
 
-double cheapAtan2(double y, double x) { return cheapAtan2Inline(y, x); }
+double cheapAtan2(double y, double x) { return cheapAtan2Scalar(y, x); }
 
 std::vector<double> loopCrossings(std::span<const double> tx, std::span<const double> ty,
                                   std::span<const double> vx, std::span<const double> vy, std::size_t lag,
@@ -80,14 +122,15 @@ std::vector<double> loopCrossings(std::span<const double> tx, std::span<const do
 
   // The headings, unwrapped: the exact construction's offsets, from cheap angles.
   std::vector<double> travel(n), tangent(m);
-  for (std::size_t i = 0; i < n; ++i) travel[i] = cheapAtan2Inline(vy[i], vx[i]);
-  for (std::size_t k = 0; k < m; ++k) tangent[k] = cheapAtan2Inline(ty[k], tx[k]);
+  static const CheapAtan2s cheapAtan2s = cheapAtan2sForThisCpu();
+  cheapAtan2s(vy.data(), vx.data(), n, travel.data());
+  cheapAtan2s(ty.data(), tx.data(), m, tangent.data());
   const double headingMargin = 2.0 * kCheapAtan2Error + roundingSlack(0.0);
-  const std::vector<double> travelOffset = unwrapOffsets(travel, headingMargin, travelAngle);
-  const std::vector<double> tangentOffset = unwrapOffsets(tangent, headingMargin, tangentAngle);
+  const Offsets travelOffset = unwrapOffsets(travel, headingMargin, travelAngle);
+  const Offsets tangentOffset = unwrapOffsets(tangent, headingMargin, tangentAngle);
   // unwrapAngles leaves the first angle as it is and adds the offset to the others.
-  auto unwrapped = [](double angle, const std::vector<double>& offsets, std::size_t i) {
-    return i == 0 ? angle : angle + offsets[i];
+  auto unwrapped = [](double angle, const Offsets& offsets, std::size_t i) {
+    return i == 0 ? angle : angle + offsets.at[i];
   };
   auto exactRaw = [&](std::size_t i) {
     const std::size_t k = tangentAt(i);
@@ -101,9 +144,9 @@ std::vector<double> loopCrossings(std::span<const double> tx, std::span<const do
     const std::size_t k = tangentAt(i);
     raw[i] = unwrapped(travel[i], travelOffset, i) - unwrapped(tangent[k], tangentOffset, k);
   }
-  const double offsetsMagnitude = largestMagnitude(travelOffset) + largestMagnitude(tangentOffset);
+  const double offsetsMagnitude = travelOffset.largest + tangentOffset.largest;
   const double rawMargin = 4.0 * kCheapAtan2Error + roundingSlack(offsetsMagnitude);
-  const std::vector<double> relativeOffset = unwrapOffsets(raw, rawMargin, exactRaw);
+  const Offsets relativeOffset = unwrapOffsets(raw, rawMargin, exactRaw);
 
   // HelixDetector's shift to (-pi, pi] and first target, from the exact front.
   const double front = exactRaw(0);
@@ -113,7 +156,7 @@ std::vector<double> loopCrossings(std::span<const double> tx, std::span<const do
   const double s = sense;
   double target = s * kPi * (2.0 * std::floor((s * frontShifted / kPi + 1.0) / 2.0) + 1.0);
   const double crossMargin =
-      2.0 * kCheapAtan2Error + roundingSlack(offsetsMagnitude + largestMagnitude(relativeOffset) + std::abs(shift));
+      2.0 * kCheapAtan2Error + roundingSlack(offsetsMagnitude + relativeOffset.largest + std::abs(shift));
   double previous = frontShifted;  // the exact relative direction at i - 1, where known
   bool previousKnown = true;
   for (std::size_t i = 1; i < n; ++i) {
