@@ -16,7 +16,8 @@
 namespace hemiroll::analysis {
 
 // |cheapAtan2(y, x) - std::atan2(y, x)| <= kCheapAtan2Error for finite x, y
-// not both zero; NaN when both are zero or either is infinite or NaN.
+// not both zero (one of them infinite too); NaN where both are zero, both
+// are infinite or either is NaN.
 // Abramowitz & Stegun 4.4.49's polynomial (their 1e-5 is 1.15e-5 with the
 // printed coefficients: LoopCrossingsTest scans it, and the error changes by
 // less than the scan's spacing between its points, the derivative of the
