@@ -5,6 +5,8 @@
 #include <cstring>
 #include <numbers>
 
+#include "engine/analysis/CpuLanes.h"
+
 namespace hemiroll::analysis {
 
 std::size_t halfWidthFor(double duration, double dt) {
@@ -93,12 +95,6 @@ void wholeWindowSums2(const double* v, std::size_t first, std::size_t last, std:
   wholeWindowSums<2, 4>(v, first, last, h, out);
 }
 
-using WholeWindowSums = void (*)(const double*, std::size_t, std::size_t, std::size_t, double*);
-WholeWindowSums wholeWindowSumsForThisCpu() {
-  if (__builtin_cpu_supports("avx512f")) return wholeWindowSums8;
-  if (__builtin_cpu_supports("avx2")) return wholeWindowSums4;
-  return wholeWindowSums2;
-}
 
 }  // namespace
 
@@ -129,7 +125,7 @@ std::vector<double> localSlope(std::span<const double> values, double dt, std::s
   // Whole windows: i in [halfWidth, n - halfWidth).
   const std::size_t first = std::min(halfWidth, n), last = n > halfWidth ? std::max(first, n - halfWidth) : first;
   if (last > first) {
-    static const WholeWindowSums sums = wholeWindowSumsForThisCpu();
+    static const auto sums = copyForThisCpu(&wholeWindowSums8, &wholeWindowSums4, &wholeWindowSums2);
     sums(values.data(), first, last, halfWidth, out.data());
     const double scale = denominators[halfWidth] * dt;
     for (std::size_t i = first; i < last; ++i) out[i] /= scale;

@@ -6,6 +6,8 @@
 #include <cstring>
 #include <numbers>
 
+#include "engine/analysis/CpuLanes.h"
+
 namespace hemiroll::analysis {
 
 namespace {
@@ -58,12 +60,6 @@ __attribute__((target("avx2"))) void cheapAtan2s4(const double* y, const double*
   cheapAtan2s<4>(y, x, n, out);
 }
 void cheapAtan2s2(const double* y, const double* x, std::size_t n, double* out) { cheapAtan2s<2>(y, x, n, out); }
-using CheapAtan2s = void (*)(const double*, const double*, std::size_t, double*);
-CheapAtan2s cheapAtan2sForThisCpu() {
-  if (__builtin_cpu_supports("avx512f")) return cheapAtan2s8;
-  if (__builtin_cpu_supports("avx2")) return cheapAtan2s4;
-  return cheapAtan2s2;
-}
 
 // The multiple of 2 pi that unwrapAngles takes off for a step (under 3 rad
 // it skips the rounding, whose answer is 0 there).
@@ -122,7 +118,7 @@ std::vector<double> loopCrossings(std::span<const double> tx, std::span<const do
 
   // The headings, unwrapped: the exact construction's offsets, from cheap angles.
   std::vector<double> travel(n), tangent(m);
-  static const CheapAtan2s cheapAtan2s = cheapAtan2sForThisCpu();
+  static const auto cheapAtan2s = copyForThisCpu(&cheapAtan2s8, &cheapAtan2s4, &cheapAtan2s2);
   cheapAtan2s(vy.data(), vx.data(), n, travel.data());
   cheapAtan2s(ty.data(), tx.data(), m, tangent.data());
   const double headingMargin = 2.0 * kCheapAtan2Error + roundingSlack(0.0);

@@ -7,6 +7,8 @@
 
 #include <immintrin.h>
 
+#include "engine/analysis/CpuLanes.h"
+
 namespace hemiroll::analysis {
 
 double mean(std::span<const double> values) {
@@ -67,8 +69,7 @@ __attribute__((target("avx512f"))) std::size_t keepWithin(const double* v, std::
 // kept) of the whole, so the values found are the sort's. Where the bracket
 // misses the ranks (or a value is NaN), the selection runs over all.
 bool selectsByBracket(std::size_t n) {
-  static const bool wide = __builtin_cpu_supports("avx512f");
-  return wide && n >= 2048;  // below, a sort of the sample is no longer small beside the selection
+  return widestDoubleLanes() == 8 && n >= 2048;  // below, a sort of the sample is no longer small beside the selection
 }
 
 Ranked selectRanks(std::span<const double> values, std::size_t below, std::size_t above) {
