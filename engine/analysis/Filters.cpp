@@ -1,6 +1,7 @@
 #include "engine/analysis/Filters.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <numbers>
@@ -14,35 +15,39 @@ std::size_t halfWidthFor(double duration, double dt) {
   return static_cast<std::size_t>(std::lround(0.5 * duration / dt));
 }
 
-std::vector<double> movingAverage(std::span<const double> values, std::size_t halfWidth) {
-  const std::size_t n = values.size();
-  std::vector<double> out(n);
-  // Prefix sums make every window O(1); the values are O(1) physical
-  // quantities, so the cancellation in the difference is harmless.
-  std::vector<double> prefix(n + 1, 0.0);
-  for (std::size_t i = 0; i < n; ++i) prefix[i + 1] = prefix[i] + values[i];
+namespace {
+
+// The centred moving averages of C columns of equal length, their running
+// sums side by side (so that none waits on the latency of its own chain of
+// additions); each column's operations are one column's alone, so the same
+// bits for any C. Prefix sums make every window O(1); the values are O(1)
+// physical quantities, so the cancellation in the difference is harmless.
+template <std::size_t C>
+std::array<std::vector<double>, C> movingAveragesOf(const std::array<std::span<const double>, C>& columns,
+                                                    std::size_t halfWidth) {
+  const std::size_t n = columns[0].size();
+  std::array<std::vector<double>, C> out, prefix;
+  for (std::size_t c = 0; c < C; ++c) out[c].resize(n), prefix[c].assign(n + 1, 0.0);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t c = 0; c < C; ++c) prefix[c][i + 1] = prefix[c][i] + columns[c][i];
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t h = std::min({halfWidth, i, n - 1 - i});
-    out[i] = (prefix[i + h + 1] - prefix[i - h]) / static_cast<double>(2 * h + 1);
+    const auto width = static_cast<double>(2 * h + 1);
+    for (std::size_t c = 0; c < C; ++c) out[c][i] = (prefix[c][i + h + 1] - prefix[c][i - h]) / width;
   }
   return out;
+}
+
+}  // namespace
+
+std::vector<double> movingAverage(std::span<const double> values, std::size_t halfWidth) {
+  return std::move(movingAveragesOf<1>({values}, halfWidth)[0]);
 }
 
 std::pair<std::vector<double>, std::vector<double>> movingAverages(std::span<const double> x,
                                                                    std::span<const double> y, std::size_t halfWidth) {
   if (x.size() != y.size()) return {movingAverage(x, halfWidth), movingAverage(y, halfWidth)};
-  const std::size_t n = x.size();
-  std::vector<double> outX(n), outY(n), prefixX(n + 1, 0.0), prefixY(n + 1, 0.0);
-  for (std::size_t i = 0; i < n; ++i) {
-    prefixX[i + 1] = prefixX[i] + x[i];
-    prefixY[i + 1] = prefixY[i] + y[i];
-  }
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::size_t h = std::min({halfWidth, i, n - 1 - i});
-    const auto width = static_cast<double>(2 * h + 1);
-    outX[i] = (prefixX[i + h + 1] - prefixX[i - h]) / width;
-    outY[i] = (prefixY[i + h + 1] - prefixY[i - h]) / width;
-  }
+  auto [outX, outY] = movingAveragesOf<2>({x, y}, halfWidth);
   return {std::move(outX), std::move(outY)};
 }
 
