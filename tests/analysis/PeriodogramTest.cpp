@@ -4,9 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <complex>
 #include <iostream>
 #include <random>
+#include <thread>
 #include <vector>
 
 #include "engine/analysis/DominantTone.h"
@@ -91,6 +94,30 @@ TEST(Periodogram, TheKeptFilterServesAnotherSignalOfTheSameShape) {
     periodogramPowers(z, freqs, dt, direct);
     const double top = *std::max_element(direct.begin(), direct.end());
     for (std::size_t k = 0; k < count; ++k) ASSERT_NEAR(chirpZ[k], direct[k], kRelativeTolerance * top) << start << " " << k;
+  }
+}
+
+// The filters are kept per sign, and a sweep point's searches alternate
+// signs (the helix's two sides): each search must give the very bits a
+// thread that kept nothing gives it, whatever searches went before.
+TEST(Periodogram, KeptFiltersOfBothSignsGiveTheBitsOfAFreshSearch) {
+  std::mt19937 rng(99);
+  std::normal_distribution<double> noise(0.0, 1.0);
+  const std::size_t n = 600, fftLength = 4 * n, count = 250;
+  const double dt = 0.01, start = 0.3;
+  std::vector<std::complex<double>> z;
+  for (std::size_t i = 0; i < n; ++i) z.emplace_back(noise(rng), noise(rng));
+  auto search = [&](int sign) {
+    std::vector<double> powers(count);
+    fftGridPowers(z, dt, fftLength, start, sign, count, powers);
+    return powers;
+  };
+  for (const int sign : {+1, -1, +1, -1, -1, +1}) {
+    const std::vector<double> kept = search(sign);
+    std::vector<double> fresh;
+    std::thread([&] { fresh = search(sign); }).join();  // a new thread: nothing kept
+    for (std::size_t k = 0; k < count; ++k)
+      ASSERT_EQ(std::bit_cast<std::uint64_t>(kept[k]), std::bit_cast<std::uint64_t>(fresh[k])) << sign << " " << k;
   }
 }
 
