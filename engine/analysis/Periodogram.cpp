@@ -69,23 +69,17 @@ struct Chirp {
   int sign = 0;
   std::vector<std::complex<double>> values;
 };
-// The filter is kept per sign: a sweep point's searches go +1 (the rose),
-// +1 and -1 (the helix's two sides), so one kept filter was made anew at
-// every change of sign, three transforms of eight a point.
 struct Workspace {
   std::size_t length = 0;
-  FftwBuffer signal;
-  FftwBuffer filters[2];     // by sign: [0] negative, [1] positive
-  FilterKey filterKeys[2];   // what each filter holds the transform of; empty: nothing
-  Chirp chirps[2];           // by sign
+  FftwBuffer signal, filter;
+  Chirp chirps[2];  // by sign: [0] negative, [1] positive
+  FilterKey filterKey;  // what `filter` holds the transform of; empty: nothing
   void reserve(std::size_t n) {
     if (n <= length) return;
     signal = fftwBuffer(n);
-    for (int side = 0; side < 2; ++side) {
-      filters[side] = fftwBuffer(n);
-      filterKeys[side] = {};
-    }
+    filter = fftwBuffer(n);
     length = n;
+    filterKey = {};
   }
 };
 
@@ -164,11 +158,10 @@ void fftGridPowers(std::span<const std::complex<double>> samples, double dt, std
   const std::size_t length = powerOfTwoAtLeast(n + count - 1);
   thread_local Workspace work;
   work.reserve(length);
-  const int side = sign > 0 ? 1 : 0;
   fftw_complex* a = work.signal.get();
-  fftw_complex* h = work.filters[side].get();
+  fftw_complex* h = work.filter.get();
   const auto twiceL = static_cast<std::int64_t>(2 * fftLength);
-  Chirp& chirp = work.chirps[side];
+  Chirp& chirp = work.chirps[sign > 0 ? 1 : 0];
   if (chirp.twiceL != twiceL || chirp.sign != sign || chirp.values.size() < std::max(n, count)) {
     chirp.twiceL = twiceL, chirp.sign = sign;
     chirp.values.resize(std::max(n, count));
@@ -196,7 +189,7 @@ void fftGridPowers(std::span<const std::complex<double>> samples, double dt, std
   }
   for (std::size_t m = n; m < length; ++m) a[m][0] = a[m][1] = 0.0;
   const FilterKey key{length, fftLength, n, count, sign};
-  if (!(work.filterKeys[side] == key)) {
+  if (!(work.filterKey == key)) {
     // conj(c_j) at j = 0 .. count - 1 and, wrapped round, j = -(n - 1) .. -1.
     for (std::size_t m = 0; m < length; ++m) h[m][0] = h[m][1] = 0.0;
     for (std::size_t j = 0; j < count; ++j) {
@@ -208,7 +201,7 @@ void fftGridPowers(std::span<const std::complex<double>> samples, double dt, std
       h[length - j][1] = -c[j].imag();
     }
     fftw_execute_dft(planOf(length, FFTW_FORWARD), h, h);
-    work.filterKeys[side] = key;
+    work.filterKey = key;
   }
   fftw_execute_dft(planOf(length, FFTW_FORWARD), a, a);
   for (std::size_t m = 0; m < length; ++m) {
