@@ -71,11 +71,23 @@ struct Chirp {
   int sign = 0;
   std::vector<std::complex<double>> values;
 };
+// The factors w_m = exp(-2 pi i sign start m dt) c_m that multiply the
+// samples: they depend on these alone, and a sweep point's three searches
+// (the rose's, the helix's two sides) share them.
+struct TurnKey {
+  std::size_t samples = 0;
+  std::int64_t twiceL = 0;
+  int sign = 0;
+  double start = 0.0, dt = 0.0;
+  bool operator==(const TurnKey&) const = default;
+};
 struct Workspace {
   std::size_t length = 0;
   FftwBuffer signal, spectrum, filter;
   Chirp chirps[2];  // by sign: [0] negative, [1] positive
   FilterKey filterKey;  // what `filter` holds the transform of; empty: nothing
+  std::vector<std::complex<double>> turned;  // w_m for turnedKey
+  TurnKey turnedKey;                         // empty: nothing
   void reserve(std::size_t n) {
     if (n <= length) return;
     signal = fftwBuffer(n);
@@ -173,23 +185,33 @@ void fftGridPowers(std::span<const std::complex<double>> samples, double dt, std
   }
   const std::complex<double>* c = chirp.values.data();
   // The shift that puts `start` on bin 0, exp(-2 pi i sign start m dt), times
-  // the chirp c_m.
-  const double turn = -2.0 * std::numbers::pi * (sign > 0 ? 1.0 : -1.0) * start * dt;
-  const std::complex<double> turnStep = std::polar(1.0, turn);
-  for (std::size_t run = 0; run * kRestart < n; run += kSideBySide) {
-    std::complex<double> shift[kSideBySide];
-    const std::size_t runs = std::min(kSideBySide, (n - run * kRestart + kRestart - 1) / kRestart);
-    for (std::size_t g = 0; g < runs; ++g) shift[g] = std::polar(1.0, turn * static_cast<double>((run + g) * kRestart));
-    for (std::size_t r = 0; r < kRestart; ++r) {
-      for (std::size_t g = 0; g < runs; ++g) {
-        const std::size_t m = (run + g) * kRestart + r;
-        if (m >= n) continue;
-        const std::complex<double> z = times(samples[m], times(shift[g], c[m]));
-        a[m][0] = z.real();
-        a[m][1] = z.imag();
-        shift[g] = times(shift[g], turnStep);
+  // the chirp c_m: w_m, made once for a search's shape (each w_m by the
+  // very products a search made for it alone, so the same bits).
+  const TurnKey turnKey{n, twiceL, sign, start, dt};
+  if (!(work.turnedKey == turnKey)) {
+    work.turned.resize(n);
+    const double turn = -2.0 * std::numbers::pi * (sign > 0 ? 1.0 : -1.0) * start * dt;
+    const std::complex<double> turnStep = std::polar(1.0, turn);
+    for (std::size_t run = 0; run * kRestart < n; run += kSideBySide) {
+      std::complex<double> shift[kSideBySide];
+      const std::size_t runs = std::min(kSideBySide, (n - run * kRestart + kRestart - 1) / kRestart);
+      for (std::size_t g = 0; g < runs; ++g) shift[g] = std::polar(1.0, turn * static_cast<double>((run + g) * kRestart));
+      for (std::size_t r = 0; r < kRestart; ++r) {
+        for (std::size_t g = 0; g < runs; ++g) {
+          const std::size_t m = (run + g) * kRestart + r;
+          if (m >= n) continue;
+          work.turned[m] = times(shift[g], c[m]);
+          shift[g] = times(shift[g], turnStep);
+        }
       }
     }
+    work.turnedKey = turnKey;
+  }
+  const std::complex<double>* w = work.turned.data();
+  for (std::size_t m = 0; m < n; ++m) {
+    const std::complex<double> z = times(samples[m], w[m]);
+    a[m][0] = z.real();
+    a[m][1] = z.imag();
   }
   for (std::size_t m = n; m < length; ++m) a[m][0] = a[m][1] = 0.0;
   const FilterKey key{length, fftLength, n, count, sign};
