@@ -9,6 +9,7 @@
 #include "engine/physics/Energy.h"
 #include "engine/physics/ForceDrivenSystem.h"
 #include "engine/physics/IntegratorRegistry.h"
+#include "engine/physics/LastSampleTrajectory.h"
 #include "engine/physics/Orientation.h"
 #include "engine/physics/PrescribedDriveSystem.h"
 #include "engine/physics/RoseDrive.h"
@@ -109,7 +110,9 @@ RunSummary ScenarioRun::run(const RowCallback& onRow) const {
 
 RunSummary ScenarioRun::runRose(const RowCallback& onRow) const {
   const physics::RoseDrive rose(scenario_.drive.rose);
-  const physics::PrescribedDriveSystem system(scenario_.params, rose);
+  // This run's alone (LastSampleTrajectory.h: a step asks the rose at ~2 distinct times of 6).
+  const physics::LastSampleTrajectory remembered(rose);
+  const physics::PrescribedDriveSystem system(scenario_.params, remembered);
   auto integrator = makeIntegrator<8>(settings_.integrator, settings_.tolerance);
   const physics::BodyState x0 = scenario_.initial.tail<8>();
   auto observe = [&](double t, const physics::BodyState& x) { return roseRow(system, t, x); };
