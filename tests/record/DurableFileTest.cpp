@@ -43,5 +43,32 @@ TEST(DurableFileTest, AppendsLandWhole) {
   EXPECT_EQ(hemiroll::test::TempDirectory::read(file), "a,b\n1,2\n");
 }
 
+TEST(DurableFileTest, AFlushSkipsOnlyWhenNothingWasWrittenSinceTheLast) {
+  // A flush after nothing new syncs nothing (DurableFile::flush); every write
+  // after it must still reach the file at the next flush.
+  test::TempDirectory dir;
+  const fs::path file = dir.path() / "rows.csv";
+  DurableFile out(file, "wb");
+  ASSERT_TRUE(out.write("a\n") && out.flush());
+  EXPECT_EQ(hemiroll::test::TempDirectory::read(file), "a\n");
+  EXPECT_TRUE(out.flush());
+  ASSERT_TRUE(out.write("b\n") && out.flush());
+  EXPECT_EQ(hemiroll::test::TempDirectory::read(file), "a\nb\n");
+  ASSERT_TRUE(out.writeAt(0, "A", 1) && out.flush());
+  EXPECT_EQ(hemiroll::test::TempDirectory::read(file), "A\nb\n");
+  EXPECT_TRUE(out.close());
+}
+
+TEST(DurableFileTest, AnAppendToAFileJustReplacedKeepsItsContent) {
+  // The sweep's partial table: replaced atomically, then reopened for rows
+  // without another sync of the folder (DurableFile::Entry::AlreadyCovered).
+  test::TempDirectory dir;
+  const fs::path file = dir.path() / "sweep.csv.partial";
+  writeFileAtomically(file, "header\n");
+  DurableFile out(file, "ab", DurableFile::Entry::AlreadyCovered);
+  ASSERT_TRUE(out.write("row\n") && out.close());
+  EXPECT_EQ(hemiroll::test::TempDirectory::read(file), "header\nrow\n");
+}
+
 }  // namespace
 }  // namespace hemiroll::record

@@ -174,7 +174,9 @@ SweepPartReport runSweepPart(const SweepPartRequest& r) {
   SweepProgress progress(stderr, report.points, report.resumed, r.terminal);
   try {
     record::writeFileAtomically(partial, start);
-    record::DurableFile out(partial, "ab");
+    // The rename that just put `partial` in place was synced with its
+    // directory: the entry is durable, and opening it again adds no entry.
+    record::DurableFile out(partial, "ab", record::DurableFile::Entry::AlreadyCovered);
     computeRows(r, grid, points, kept.size(), out, progress);
     if (!out.close()) environment(out.path().string() + ": " + out.error());
     report.computed = report.points - report.resumed;
