@@ -136,7 +136,10 @@ void computeRows(const SweepPartRequest& r, const SweepGrid& grid, const std::ve
         if (!out.write(rows) || !out.flush()) environment(out.path().string() + ": " + out.error());
         delivered = std::min(remaining, (job + 1) * batch);
       },
-      [&](std::size_t) { progress.update(static_cast<long long>(first + delivered)); });
+      // Off a terminal the bar draws nothing: no tick, and one thread then
+      // needs no pool (OrderedPool::run).
+      r.terminal ? OrderedPool::Tick([&](std::size_t) { progress.update(static_cast<long long>(first + delivered)); })
+                 : OrderedPool::Tick());
 }
 
 }  // namespace
