@@ -89,7 +89,7 @@ bool DurableFile::close() {
   return ok();
 }
 
-void writeFileAtomically(const std::filesystem::path& path, std::string_view content) {
+void writeFileAtomically(const std::filesystem::path& path, std::string_view content, DirectorySync sync) {
   std::filesystem::path temp = path;
   temp += ".tmp";
   // The temporary file never outlives a failure: a folder in the target's
@@ -110,7 +110,7 @@ void writeFileAtomically(const std::filesystem::path& path, std::string_view con
     std::filesystem::remove(temp, ignored);
     throw RecordError(error);
   }
-  syncDirectory(path.parent_path());
+  if (sync == DirectorySync::Now) syncDirectory(path.parent_path());
 }
 
 void moveFileDurably(const std::filesystem::path& from, const std::filesystem::path& to) {

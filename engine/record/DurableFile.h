@@ -56,8 +56,15 @@ class DurableFile {
   bool unsynced_ = true;
 };
 
+// Whether a replacement is durable when writeFileAtomically returns (the
+// directory synced after the rename), or atomic only: a later sync of the same
+// directory (another replacement's, moveFileDurably's) makes it durable, and
+// the caller says why nothing needs it durable before then.
+enum class DirectorySync { Now, Deferred };
+
 // Replaces path's content atomically. Throws RecordError naming the file.
-void writeFileAtomically(const std::filesystem::path& path, std::string_view content);
+void writeFileAtomically(const std::filesystem::path& path, std::string_view content,
+                         DirectorySync sync = DirectorySync::Now);
 // Renames `from` to `to` (replacing it) and syncs the directory: a file
 // written and flushed under a temporary name becomes durable under its own.
 // Throws RecordError.

@@ -24,6 +24,17 @@ TEST(DurableFileTest, AtomicReplacementWritesTheWholeContent) {
   EXPECT_FALSE(fs::exists(dir.path() / "map.svg.tmp"));
 }
 
+TEST(DurableFileTest, AReplacementWhoseDirectorySyncIsDeferredIsAsWhole) {
+  // Durable only with the folder's next sync (the sweep's first manifest),
+  // but as visible and as whole at once.
+  test::TempDirectory dir;
+  const fs::path file = dir.path() / "sweep.json";
+  writeFileAtomically(file, "first", DirectorySync::Deferred);
+  writeFileAtomically(file, "second", DirectorySync::Deferred);
+  EXPECT_EQ(hemiroll::test::TempDirectory::read(file), "second");
+  EXPECT_FALSE(fs::exists(dir.path() / "sweep.json.tmp"));
+}
+
 TEST(DurableFileTest, AFailedReplacementLeavesNoTemporaryFile) {
   // A folder where the file should go: the rename fails, and the temporary
   // file went on lying beside it (issue 19: sweep map --out DIR left DIR.tmp).
