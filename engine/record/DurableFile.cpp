@@ -72,7 +72,7 @@ bool DurableFile::flush() {
   if (file_ == nullptr) return false;
   // Nothing written since the last successful flush: the stdio buffer is
   // empty and every byte through this descriptor is on disk already, so
-  // another fdatasync would sync nothing (~80 us of CPU in a VM; close()
+  // another fdatasync would sync nothing but still wait on the disk (close()
   // after a final flush, a recorder's idle interval).
   if (!unsynced_) return ok();
   if (std::fflush(file_) != 0) fail("flush failed");
