@@ -29,7 +29,7 @@ void syncDirectory(const std::filesystem::path& dir) {
 
 }  // namespace
 
-DurableFile::DurableFile(const std::filesystem::path& path, const char* mode) : path_(path) {
+DurableFile::DurableFile(const std::filesystem::path& path, const char* mode, Entry entry) : path_(path) {
   file_ = std::fopen(path.c_str(), mode);
   if (file_ == nullptr)
     throw RecordError(errno == EEXIST ? path.string() + ": already exists (a recording is never overwritten)"
@@ -43,7 +43,7 @@ DurableFile::DurableFile(const std::filesystem::path& path, const char* mode) : 
   // a few hundred bytes (issue 32: ~700 of a sweep's 2 000 faults).
   buffer_ = std::make_unique_for_overwrite<char[]>(kBufferSize);
   std::setvbuf(file_, buffer_.get(), _IOFBF, kBufferSize);
-  syncDirectory(path.parent_path());
+  if (entry == Entry::Sync) syncDirectory(path.parent_path());
 }
 
 DurableFile::~DurableFile() { close(); }
@@ -54,12 +54,14 @@ void DurableFile::fail(const char* what) {
 
 bool DurableFile::write(std::string_view bytes) {
   if (file_ == nullptr) return false;
+  unsynced_ = true;
   if (std::fwrite(bytes.data(), 1, bytes.size(), file_) != bytes.size()) fail("write failed");
   return ok();
 }
 
 bool DurableFile::writeAt(long offset, const void* bytes, std::size_t size) {
   if (file_ == nullptr) return false;
+  unsynced_ = true;
   if (std::fseek(file_, offset, SEEK_SET) != 0 || std::fwrite(bytes, 1, size, file_) != size ||
       std::fseek(file_, 0, SEEK_END) != 0)
     fail("write failed");
@@ -68,8 +70,14 @@ bool DurableFile::writeAt(long offset, const void* bytes, std::size_t size) {
 
 bool DurableFile::flush() {
   if (file_ == nullptr) return false;
+  // Nothing written since the last successful flush: the stdio buffer is
+  // empty and every byte through this descriptor is on disk already, so
+  // another fdatasync would sync nothing but still wait on the disk (close()
+  // after a final flush, a recorder's idle interval).
+  if (!unsynced_) return ok();
   if (std::fflush(file_) != 0) fail("flush failed");
   else if (::fdatasync(::fileno(file_)) != 0) fail("fdatasync failed");
+  else unsynced_ = false;
   return ok();
 }
 
@@ -81,14 +89,18 @@ bool DurableFile::close() {
   return ok();
 }
 
-void writeFileAtomically(const std::filesystem::path& path, std::string_view content) {
+void writeFileAtomically(const std::filesystem::path& path, std::string_view content, DirectorySync sync) {
   std::filesystem::path temp = path;
   temp += ".tmp";
   // The temporary file never outlives a failure: a folder in the target's
   // place (sweep map --out DIR) left DIR.tmp behind.
   std::string error;
   {
-    DurableFile out(temp, "wb");
+    // Its entry needs no sync of its own: a crash before the rename leaves
+    // the old file under `path` (the temporary one, whole, cut or gone, is
+    // read by nobody and truncated by the next attempt); after it, the sync
+    // of the directory below makes the new name durable with the rename.
+    DurableFile out(temp, "wb", DurableFile::Entry::AlreadyCovered);
     out.write(content);
     if (!out.close()) error = out.error();
   }
@@ -98,7 +110,7 @@ void writeFileAtomically(const std::filesystem::path& path, std::string_view con
     std::filesystem::remove(temp, ignored);
     throw RecordError(error);
   }
-  syncDirectory(path.parent_path());
+  if (sync == DirectorySync::Now) syncDirectory(path.parent_path());
 }
 
 void moveFileDurably(const std::filesystem::path& from, const std::filesystem::path& to) {

@@ -22,6 +22,12 @@
 //                                rows) of 10, 60 and 600 s, as
 //                                PointMeasurement analyses them; the rows are
 //                                made outside the timed loop.
+//   BM_PhysicsFingerprint        the manifest's physics fingerprint
+//                                (PhysicsFingerprint.h): 4 s of the rose from
+//                                rest with rk4 and with dop853, measured and
+//                                hashed, a fixed cost of every `hemiroll
+//                                sweep` (its FFT plans made in the first
+//                                iteration only, as once per process).
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -35,6 +41,7 @@
 #include "engine/physics/StateLayout.h"
 #include "engine/script/SweepLoader.h"
 #include "game/research/sim/ScenarioRun.h"
+#include "game/research/sweep/PhysicsFingerprint.h"
 #include "game/research/sweep/PointMeasurement.h"
 #include "game/research/sweep/SweepGrid.h"
 #include "game/research/sweep/SweepPartRun.h"
@@ -149,6 +156,11 @@ void BM_SweepPointAnalysis(benchmark::State& state) {
   state.counters["samples"] = static_cast<double>(rows.time.size());
 }
 BENCHMARK(BM_SweepPointAnalysis)->Arg(10)->Arg(60)->Arg(600)->ArgName("seconds")->Unit(benchmark::kMillisecond);
+
+void BM_PhysicsFingerprint(benchmark::State& state) {
+  for (auto _ : state) benchmark::DoNotOptimize(game::physicsFingerprintOf(task::SweepDef{}));
+}
+BENCHMARK(BM_PhysicsFingerprint)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 

@@ -24,12 +24,10 @@ class RoseLockstepRun {
 
   static bool eligible(const task::ScenarioDef& scenario, const RunSettings& settings);
 
-  // What a row holds: everything ScenarioRun's has, or only the time, the
-  // mass point's position and the body's state (the mass point's velocity,
-  // the energy and the face force left 0, and so the summary's final
-  // energy): a sweep measures none of those, and they cost it ~8 % (issue
-  // 32); the position comes from the lanes' own evaluation of the rose.
-  enum class RowContent { Full, StateOnly };
+  // What a row holds, as ScenarioRun's (ScenarioRun.h): the StateOnly rows
+  // cost a sweep ~8 % less (issue 32); their position comes from the lanes'
+  // own evaluation of the rose.
+  using RowContent = game::RowContent;
 
   // Every scenario eligible; width is a lane width this CPU runs
   // (physics::laneWidthSupported). Throws std::invalid_argument otherwise.

@@ -9,6 +9,7 @@
 #include "engine/physics/Energy.h"
 #include "engine/physics/ForceDrivenSystem.h"
 #include "engine/physics/IntegratorRegistry.h"
+#include "engine/physics/LastSampleTrajectory.h"
 #include "engine/physics/Orientation.h"
 #include "engine/physics/PrescribedDriveSystem.h"
 #include "engine/physics/RoseDrive.h"
@@ -100,8 +101,8 @@ long long ScenarioRun::stepCount(const RunSettings& settings) {
   return static_cast<long long>(std::ceil(ratio));
 }
 
-ScenarioRun::ScenarioRun(const task::ScenarioDef& scenario, const RunSettings& settings)
-    : scenario_(scenario), settings_(settings) {}
+ScenarioRun::ScenarioRun(const task::ScenarioDef& scenario, const RunSettings& settings, RowContent content)
+    : scenario_(scenario), settings_(settings), content_(content) {}
 
 RunSummary ScenarioRun::run(const RowCallback& onRow) const {
   return scenario_.drive.kind == task::DriveKind::Rose ? runRose(onRow) : runForceDriven(onRow);
@@ -109,9 +110,21 @@ RunSummary ScenarioRun::run(const RowCallback& onRow) const {
 
 RunSummary ScenarioRun::runRose(const RowCallback& onRow) const {
   const physics::RoseDrive rose(scenario_.drive.rose);
-  const physics::PrescribedDriveSystem system(scenario_.params, rose);
+  // This run's alone (LastSampleTrajectory.h: a step asks the rose at ~2 distinct times of 6).
+  const physics::LastSampleTrajectory remembered(rose);
+  const physics::PrescribedDriveSystem system(scenario_.params, remembered);
   auto integrator = makeIntegrator<8>(settings_.integrator, settings_.tolerance);
   const physics::BodyState x0 = scenario_.initial.tail<8>();
+  if (content_ == RowContent::StateOnly) {
+    auto observe = [&](double t, const physics::BodyState& x) {
+      TrajectoryRow row;
+      row.time = t;
+      row.state.segment<2>(physics::force_slot::x_p) = remembered.at(t).p;
+      row.state.tail<8>() = x;
+      return row;
+    };
+    return integrate<8>(system, *integrator, x0, settings_, observe, onRow);
+  }
   auto observe = [&](double t, const physics::BodyState& x) { return roseRow(system, t, x); };
   return integrate<8>(system, *integrator, x0, settings_, observe, onRow);
 }

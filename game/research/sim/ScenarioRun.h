@@ -38,6 +38,14 @@ struct RunSummary {
   physics::DomainEvent event = physics::DomainEvent::None;
 };
 
+// What a rose drive's row holds: everything, or only the time, the mass
+// point's position and the body's state (the mass point's velocity, the
+// energy and the face force left 0, and so the summary's final energy): a
+// sweep point measures none of those (PointMeasurement), and they cost a
+// geometry and a dynamics evaluation per row. Rows of the other drives are
+// always whole.
+enum class RowContent { Full, StateOnly };
+
 // The row of the 8-state rose drive at (t, x): the 12-state with p and p'
 // from the curve, the energy and the driving force of eq. (46). Shared by
 // ScenarioRun and RoseLockstepRun, so that both write the same rows.
@@ -50,7 +58,7 @@ class ScenarioRun {
   // Steps of length timeStep; the last one is shortened to end at duration.
   static long long stepCount(const RunSettings& settings);
 
-  ScenarioRun(const task::ScenarioDef& scenario, const RunSettings& settings);
+  ScenarioRun(const task::ScenarioDef& scenario, const RunSettings& settings, RowContent content = RowContent::Full);
 
   // True when rows carry F_h (the proxy drive).
   bool hasHandForce() const { return scenario_.drive.kind == task::DriveKind::Proxy; }
@@ -66,6 +74,7 @@ class ScenarioRun {
 
   task::ScenarioDef scenario_;  // a copy: shares the proxy (and its Lua state), owns the rest
   RunSettings settings_;
+  RowContent content_;
 };
 
 }  // namespace hemiroll::game

@@ -6,7 +6,8 @@
 // `deliver`) sees them in a fixed order.
 //
 // The calling thread only delivers and reports progress; `work` runs on the
-// pool's threads and must not touch shared state. An exception from `work`
+// pool's threads and must not touch shared state. (With one thread and no
+// tick, everything runs on the calling thread, in the same order.) An exception from `work`
 // stops the pool (jobs not yet started are skipped) and is rethrown from
 // run() after every thread has joined; so is one from `deliver` or `tick`.
 

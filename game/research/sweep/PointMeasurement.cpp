@@ -141,7 +141,10 @@ class PointRecorder {
 PointMeasurement measureScenario(const task::SweepDef& def, const task::ScenarioDef& scenario,
                                  const RunSettings& settings) {
   PointRecorder recorder(settings);
-  const RunSummary summary = ScenarioRun(scenario, settings).run([&](const TrajectoryRow& row) { recorder.add(row); });
+  // StateOnly: the recorder reads the time, the position and the body's state alone.
+  const RunSummary summary = ScenarioRun(scenario, settings, RowContent::StateOnly).run([&](const TrajectoryRow& row) {
+    recorder.add(row);
+  });
   return recorder.finish(def, summary);
 }
 

@@ -66,9 +66,10 @@ std::vector<std::string> keptRows(const fs::path& partial, const std::vector<lon
   return rows;
 }
 
-void writeManifest(const fs::path& path, const SweepManifest& m) {
+void writeManifest(const fs::path& path, const SweepManifest& m,
+                   record::DirectorySync sync = record::DirectorySync::Now) {
   try {
-    record::writeFileAtomically(path, manifestJson(m));
+    record::writeFileAtomically(path, manifestJson(m), sync);
   } catch (const record::RecordError& e) {
     environment(e.what());
   }
@@ -136,7 +137,10 @@ void computeRows(const SweepPartRequest& r, const SweepGrid& grid, const std::ve
         if (!out.write(rows) || !out.flush()) environment(out.path().string() + ": " + out.error());
         delivered = std::min(remaining, (job + 1) * batch);
       },
-      [&](std::size_t) { progress.update(static_cast<long long>(first + delivered)); });
+      // Off a terminal the bar draws nothing: no tick, and one thread then
+      // needs no pool (OrderedPool::run).
+      r.terminal ? OrderedPool::Tick([&](std::size_t) { progress.update(static_cast<long long>(first + delivered)); })
+                 : OrderedPool::Tick());
 }
 
 }  // namespace
@@ -168,13 +172,23 @@ SweepPartReport runSweepPart(const SweepPartRequest& r) {
       earlier == EarlierRun::Interrupted ? keptRows(partial, points) : std::vector<std::string>{};
   report.resumed = static_cast<long long>(kept.size());
   m.resumedPoints = report.resumed;
-  writeManifest(report.manifest, m);
+  // Durable with the partial table's rename below, by the one sync of the
+  // folder that follows it. A crash before that sync leaves either manifest
+  // (the new one, or the earlier run's: the same sweep's, else the folder was
+  // refused above, or none) beside either partial table (the new one, holding
+  // only rows kept, or the earlier one): a rerun keeps what the manifest
+  // allows and computes the rest, the same bytes. Rows are computed only
+  // after the sync, so none is ever durable before the manifest naming its
+  // sweep.
+  writeManifest(report.manifest, m, record::DirectorySync::Deferred);
   std::string start = sweepHeader();
   for (const std::string& row : kept) start += row;
   SweepProgress progress(stderr, report.points, report.resumed, r.terminal);
   try {
     record::writeFileAtomically(partial, start);
-    record::DurableFile out(partial, "ab");
+    // The rename that just put `partial` in place was synced with its
+    // directory: the entry is durable, and opening it again adds no entry.
+    record::DurableFile out(partial, "ab", record::DurableFile::Entry::AlreadyCovered);
     computeRows(r, grid, points, kept.size(), out, progress);
     if (!out.close()) environment(out.path().string() + ": " + out.error());
     report.computed = report.points - report.resumed;

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <memory>
 #include <vector>
 
@@ -68,6 +69,43 @@ TEST(ScenarioRun, RoseRowsCarryTheCurveAndTheDrivingForce) {
   EXPECT_EQ(rows.front().state[physics::force_slot::y_p], 0.0);
   EXPECT_NE(rows.front().faceForce.norm(), 0.0);
   EXPECT_EQ(rows.front().handForce, physics::Vec3::Zero());
+}
+
+// StateOnly rows (a sweep point's) are the full rows' time, position and
+// body state, bit for bit, with nothing else: from rest (chaotic, where any
+// difference would grow) and in a run that tips over (the event row too).
+TEST(ScenarioRun, StateOnlyRoseRowsAreTheFullRowsWithoutTheRest) {
+  task::ScenarioDef tipping = roseScenario();
+  tipping.drive.rose.r1 = 0.03;
+  tipping.drive.rose.omega = -3.0;
+  bool sawEvent = false;
+  for (const task::ScenarioDef& def : {roseScenario(), tipping}) {
+    for (const char* integrator : {"rk4", "dop853"}) {
+      const RunSettings settings{2.0, 0.001, integrator, 10};
+      std::vector<TrajectoryRow> full, only;
+      const RunSummary a = ScenarioRun(def, settings).run([&](const TrajectoryRow& row) { full.push_back(row); });
+      const RunSummary b = ScenarioRun(def, settings, RowContent::StateOnly).run([&](const TrajectoryRow& row) {
+        only.push_back(row);
+      });
+      EXPECT_EQ(a.steps, b.steps);
+      EXPECT_EQ(a.event, b.event);
+      EXPECT_EQ(std::memcmp(&a.endTime, &b.endTime, sizeof(double)), 0);
+      EXPECT_EQ(b.finalEnergy, 0.0);
+      sawEvent = sawEvent || a.event != physics::DomainEvent::None;
+      ASSERT_EQ(full.size(), only.size()) << integrator;
+      for (std::size_t i = 0; i < full.size(); ++i) {
+        namespace slot = physics::force_slot;
+        physics::ForceDrivenState expected = full[i].state;
+        expected[slot::xd_p] = expected[slot::yd_p] = 0.0;
+        ASSERT_EQ(std::memcmp(&full[i].time, &only[i].time, sizeof(double)), 0) << integrator << " row " << i;
+        ASSERT_EQ(std::memcmp(expected.data(), only[i].state.data(), sizeof(double) * 12), 0)
+            << integrator << " row " << i;
+        EXPECT_EQ(only[i].energy, 0.0);
+        EXPECT_EQ(only[i].faceForce, physics::Vec2::Zero());
+      }
+    }
+  }
+  EXPECT_TRUE(sawEvent);  // the second scenario tips over within 2 s
 }
 
 TEST(ScenarioRun, InitialStateOutsideTheDomainStopsAtOnce) {

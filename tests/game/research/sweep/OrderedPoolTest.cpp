@@ -94,5 +94,43 @@ TEST(OrderedPool, AFailingDeliveryStopsThePoolAndIsRethrown) {
   EXPECT_LT(started.load(), 1000);
 }
 
+TEST(OrderedPool, OneThreadWithoutTicksRunsOnTheCallingThreadInOrder) {
+  constexpr std::size_t kJobs = 12;
+  const std::thread::id caller = std::this_thread::get_id();
+  std::vector<std::string> results;
+  std::vector<std::string> events;  // work and delivery interleaved, as they happened
+  OrderedPool(1).run(
+      kJobs,
+      [&](std::size_t job) {
+        EXPECT_EQ(std::this_thread::get_id(), caller);
+        events.push_back("work " + std::to_string(job));
+        return slowFirst(job, kJobs);
+      },
+      [&](std::size_t job, std::string&& r) {
+        events.push_back("deliver " + std::to_string(job));
+        results.push_back(std::move(r));
+      });
+  ASSERT_EQ(results.size(), kJobs);
+  for (std::size_t j = 0; j < kJobs; ++j) {
+    EXPECT_EQ(results[j], "job " + std::to_string(j));
+    EXPECT_EQ(events[2 * j], "work " + std::to_string(j));  // each delivered before the next starts
+    EXPECT_EQ(events[2 * j + 1], "deliver " + std::to_string(j));
+  }
+  // A failing job: the earlier ones delivered, the later ones never started.
+  std::vector<std::size_t> delivered;
+  std::size_t started = 0;
+  EXPECT_THROW(OrderedPool(1).run(
+                   10,
+                   [&](std::size_t job) -> std::string {
+                     ++started;
+                     if (job == 5) throw std::runtime_error("job 5 failed");
+                     return "";
+                   },
+                   [&](std::size_t job, std::string&&) { delivered.push_back(job); }),
+               std::runtime_error);
+  EXPECT_EQ(started, 6u);
+  EXPECT_EQ(delivered, (std::vector<std::size_t>{0, 1, 2, 3, 4}));
+}
+
 }  // namespace
 }  // namespace hemiroll::game
