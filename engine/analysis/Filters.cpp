@@ -179,19 +179,25 @@ std::vector<double> unwrapAngles(std::span<const double> angles) {
 namespace {
 
 // Which quarter about the centre a point lies in strictly inside: 0 about
-// +x, 1 about +y, 2 about -y; 3 about -x, on a diagonal, at the centre or
-// not finite. Two points strictly inside one of the first three have atan2
-// at most pi / 2 apart (plus rounding): a step that unwrapAngles rounds to
-// no turn. About -x the angle wraps from pi to -pi, and atan2(0, -0) = pi.
+// +x, 1 about +y, 2 about -y, 3 and 4 the halves of the one about -x above
+// and below the axis; 5 on a diagonal, on the -x axis, at the centre or not
+// finite. Two points strictly inside one of the first five have atan2 at
+// most pi / 2 apart (plus rounding): a step that unwrapAngles rounds to no
+// turn. Across the -x axis the angle wraps from pi to -pi (and there,
+// atan2(+-0, x < 0) is +-pi, atan2(0, -0) = pi): hence the two halves
+// (issue 32: with the whole quarter about -x asked, a quarter of a rose's
+// points took an atan2 each).
 int quarterOf(double dx, double dy) {
   if (dx > std::abs(dy)) return 0;
   if (dy > std::abs(dx)) return 1;
   if (-dy > std::abs(dx)) return 2;
-  return 3;
+  if (-dx > std::abs(dy)) return dy > 0.0 ? 3 : dy < 0.0 ? 4 : 5;
+  return 5;
 }
+constexpr int kNoQuarter = 5;
 
 // unwrapAngles' offset changes only at a step that rounds to a turn; steps
-// within one of the three safe quarters round to none (and subtracting 0
+// within one of the safe quarters round to none (and subtracting 0
 // from the offset, which is never -0, changes no bit), so their angles are
 // not needed: only the ends' and those either side of any other step.
 // Calls atStep(i, offset) for each i >= 1 with the offset there (n >= 1).
@@ -212,7 +218,7 @@ UnwrapWalk walkUnwrapAbout(std::span<const double> x, std::span<const double> y,
   for (std::size_t i = 1; i < n; ++i) {
     const double dx = x[i] - cx, dy = y[i] - cy;
     const int quarter = quarterOf(dx, dy);
-    if (quarter == previousQuarter && quarter != 3) {
+    if (quarter == previousQuarter && quarter != kNoQuarter) {
       walk.lastKnown = false;
     } else {
       if (!walk.lastKnown) walk.last = std::atan2(y[i - 1] - cy, x[i - 1] - cx);

@@ -59,7 +59,7 @@ TEST(Filters, MovingAveragesAreTwoMovingAverages) {
 // sweptAngleAbout and unwrapOffsetsAbout skip the atan2 of steps that
 // cannot wrap (issue 32): they must give unwrapAngles' turn and angles to
 // the bit, on paths that cross the -x axis
-// many times, stop at the centre (where atan2(0, -0) = pi), lie on the
+// many times (on it with dy = +0 and -0), stop at the centre (where atan2(0, -0) = pi), lie on the
 // axes and diagonals, jump, or hold a NaN.
 TEST(Filters, SweptAngleAndOffsetsAboutAreUnwrapAnglesOfEveryAtan2) {
   auto plain = [](const std::vector<double>& x, const std::vector<double>& y, double cx, double cy) {
@@ -87,6 +87,7 @@ TEST(Filters, SweptAngleAndOffsetsAboutAreUnwrapAnglesOfEveryAtan2) {
         case 2: x[i] = cx; break;                                  // on the y axis
         case 3: y[i] = cy + (x[i] - cx); break;                    // on a diagonal
         case 4: x[i] = cx - std::abs(y[i] - cy) * 1e-17; break;    // just left of the y axis
+        case 5: y[i] = cy == 0.0 ? -0.0 : cy; break;               // on the x axis, dy = -0 where it can be
         default: break;
       }
       if (trial % 50 == 7 && i == n / 2) x[i] = std::nan("");
