@@ -2,28 +2,22 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <memory>
 
 #include <immintrin.h>
+
+#include "engine/analysis/CpuLanes.h"
 
 namespace hemiroll::analysis {
 
 namespace {
 
-// Two points at a time in SSE2's pairs (every x86-64; the divisions and
-// square roots that bound these loops go hardly faster per value in wider
-// registers): each lane does the scalar operations of its point, so
-// the same bits (issue 32: the fit of a sweep point's helix arc divided
-// and took roots one value at a time, X and Y twice).
-typedef double Pair __attribute__((vector_size(2 * sizeof(double))));
+// Two points at a time (CpuLanes.h's pairs), each lane the scalar
+// operations of its point, so the same bits (issue 32: the fit of a sweep
+// point's helix arc divided and took roots one value at a time, X and Y
+// twice).
+using Pair = DoublePair;
 typedef long long PairBits __attribute__((vector_size(2 * sizeof(long long))));
-
-Pair load(const double* p) {
-  Pair v;
-  std::memcpy(&v, p, sizeof v);
-  return v;
-}
 
 // max(|x - mx|, |y - my|) over the points and 0, NaNs passed over, as
 // std::max's chain from 0 does: the largest of values that are all +0 or
@@ -33,7 +27,7 @@ double largestOffset(std::span<const double> x, std::span<const double> y, std::
   Pair largest = {0.0, 0.0};
   std::size_t i = 0;
   for (; i + 2 <= n; i += 2) {
-    for (const Pair v : {load(&x[i]) - mx, load(&y[i]) - my}) {
+    for (const Pair v : {loadPair(&x[i]) - mx, loadPair(&y[i]) - my}) {
       const Pair a = (Pair)((PairBits)v & magnitude);
       largest = largest < a ? a : largest;
     }
@@ -48,9 +42,9 @@ void scaledCoordinates(std::span<const double> x, std::span<const double> y, std
                        double scale, double* X, double* Y) {
   std::size_t i = 0;
   for (; i + 2 <= n; i += 2) {
-    const Pair sx = (load(&x[i]) - mx) / scale, sy = (load(&y[i]) - my) / scale;
-    std::memcpy(X + i, &sx, sizeof sx);
-    std::memcpy(Y + i, &sy, sizeof sy);
+    const Pair sx = (loadPair(&x[i]) - mx) / scale, sy = (loadPair(&y[i]) - my) / scale;
+    storePair(X + i, sx);
+    storePair(Y + i, sy);
   }
   for (; i < n; ++i) X[i] = (x[i] - mx) / scale, Y[i] = (y[i] - my) / scale;
 }
@@ -61,12 +55,11 @@ void squaredDistances(const double* X, const double* Y, std::size_t n, double A,
                       double* dd) {
   std::size_t i = 0;
   for (; i + 2 <= n; i += 2) {
-    const Pair x = load(X + i), y = load(Y + i);
+    const Pair x = loadPair(X + i), y = loadPair(Y + i);
     const Pair P = A * (x * x + y * y) + B * x + C * y + D;
     const Pair inside = 1.0 + 4.0 * A * P;
     const Pair d = 2.0 * P / (1.0 + (Pair)_mm_sqrt_pd(0.0 < inside ? inside : Pair{0.0, 0.0}));  // std::max(0.0, inside)
-    const Pair squared = d * d;
-    std::memcpy(dd + i, &squared, sizeof squared);
+    storePair(dd + i, d * d);
   }
   for (; i < n; ++i) {
     const double P = A * (X[i] * X[i] + Y[i] * Y[i]) + B * X[i] + C * Y[i] + D;
