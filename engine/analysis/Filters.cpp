@@ -80,16 +80,18 @@ std::pair<std::vector<double>, std::vector<double>> movingAverages(std::span<con
 
 namespace {
 
-// The sums of whole windows, num_i = sum_k k (v[i+k] - v[i-k]) for k = 1 ..
-// h in ascending k, for i in [first, last): groups of R vectors of W samples
-// held in registers while k runs (issue 32: with the sums in memory, each k
-// loaded and stored every sample's sum again, and the rate's 150-sample
-// windows made this 12 % of a sweep point's analysis). Each lane does the
-// scalar operations of its sample in the scalar order (no contraction:
-// -ffp-contract=off), so the sums have the same bits at every width.
+// The slopes of whole windows, num_i / scale with num_i = sum_k k (v[i+k] -
+// v[i-k]) for k = 1 .. h in ascending k, for i in [first, last): groups of
+// R vectors of W samples held in registers while k runs (issue 32: with the
+// sums in memory, each k loaded and stored every sample's sum again, and
+// the rate's 150-sample windows made this 12 % of a sweep point's analysis),
+// divided there too (a pass dividing one value at a time had been most of
+// a 3-sample window's cost). Each lane does the scalar operations of its
+// sample in the scalar order (no contraction: -ffp-contract=off), so the
+// slopes have the same bits at every width.
 template <std::size_t W, std::size_t R>
-[[gnu::always_inline]] inline void wholeWindowSums(const double* v, std::size_t first, std::size_t last,
-                                                   std::size_t h, double* out) {
+[[gnu::always_inline]] inline void wholeWindowSlopes(const double* v, std::size_t first, std::size_t last,
+                                                     std::size_t h, double scale, double* out) {
   typedef double Lanes __attribute__((vector_size(W * sizeof(double))));
   constexpr std::size_t kGroup = W * R;
   std::size_t i = first;
@@ -104,35 +106,38 @@ template <std::size_t W, std::size_t R>
         sum[r] += kk * (ahead - behind);
       }
     }
-    for (std::size_t r = 0; r < R; ++r) std::memcpy(out + i + r * W, &sum[r], sizeof sum[r]);
+    for (std::size_t r = 0; r < R; ++r) {
+      const Lanes slope = sum[r] / scale;
+      std::memcpy(out + i + r * W, &slope, sizeof slope);
+    }
   }
   for (; i < last; ++i) {
     double sum = 0.0;
     for (std::size_t k = 1; k <= h; ++k) sum += static_cast<double>(k) * (v[i + k] - v[i - k]);
-    out[i] = sum;
+    out[i] = sum / scale;
   }
 }
 
 // One copy per instruction set, chosen once by the CPU (as BatchedRk4's
 // lanes are): 8 lanes under AVX-512F, 4 under AVX2, SSE2's 2 otherwise.
-__attribute__((target("avx512f"))) void wholeWindowSums8(const double* v, std::size_t first, std::size_t last,
-                                                         std::size_t h, double* out) {
-  wholeWindowSums<8, 4>(v, first, last, h, out);
+__attribute__((target("avx512f"))) void wholeWindowSlopes8(const double* v, std::size_t first, std::size_t last,
+                                                           std::size_t h, double scale, double* out) {
+  wholeWindowSlopes<8, 4>(v, first, last, h, scale, out);
 }
-__attribute__((target("avx2"))) void wholeWindowSums4(const double* v, std::size_t first, std::size_t last,
-                                                      std::size_t h, double* out) {
-  wholeWindowSums<4, 4>(v, first, last, h, out);
+__attribute__((target("avx2"))) void wholeWindowSlopes4(const double* v, std::size_t first, std::size_t last,
+                                                        std::size_t h, double scale, double* out) {
+  wholeWindowSlopes<4, 4>(v, first, last, h, scale, out);
 }
-void wholeWindowSums2(const double* v, std::size_t first, std::size_t last, std::size_t h, double* out) {
-  wholeWindowSums<2, 4>(v, first, last, h, out);
+void wholeWindowSlopes2(const double* v, std::size_t first, std::size_t last, std::size_t h, double scale,
+                        double* out) {
+  wholeWindowSlopes<2, 4>(v, first, last, h, scale, out);
 }
-
 
 }  // namespace
 
 // Each sample's slope is sum_k k (v[i+k] - v[i-k]) / (sum_k 2 k^2 dt), k = 1
 // .. h, both sums in ascending k. Where the window is whole (h = halfWidth)
-// the samples' sums advance side by side in registers (wholeWindowSums) and
+// the samples' sums advance side by side in registers (wholeWindowSlopes) and
 // the denominator is summed once; each sum still takes its terms in the same
 // order, so the slopes have the same bits.
 std::vector<double> localSlope(std::span<const double> values, double dt, std::size_t halfWidth) {
@@ -157,10 +162,8 @@ std::vector<double> localSlope(std::span<const double> values, double dt, std::s
   // Whole windows: i in [halfWidth, n - halfWidth).
   const std::size_t first = std::min(halfWidth, n), last = n > halfWidth ? std::max(first, n - halfWidth) : first;
   if (last > first) {
-    static const auto sums = copyForThisCpu(&wholeWindowSums8, &wholeWindowSums4, &wholeWindowSums2);
-    sums(values.data(), first, last, halfWidth, out.data());
-    const double scale = denominators[halfWidth] * dt;
-    for (std::size_t i = first; i < last; ++i) out[i] /= scale;
+    static const auto slopes = copyForThisCpu(&wholeWindowSlopes8, &wholeWindowSlopes4, &wholeWindowSlopes2);
+    slopes(values.data(), first, last, halfWidth, denominators[halfWidth] * dt, out.data());
   }
   // The ends' shrinking windows: sample i and its mirror n - 1 - i have the
   // same width, so their sums run side by side (each in its own order).
@@ -178,13 +181,16 @@ std::vector<double> localSlope(std::span<const double> values, double dt, std::s
     out[j] = numJ / (denominators[h] * dt);
     done[i] = done[j] = true;
   }
-  for (std::size_t i = 0; i < n; ++i) {
-    if ((i >= first && i < last) || done[i]) continue;
+  // The rest of the ends, one at a time.
+  auto end = [&](std::size_t i) {
+    if (done[i]) return;
     const std::size_t h = std::min({halfWidth, i, n - 1 - i});
     // An end sample: the one-sided difference to its neighbour.
     if (h == 0) out[i] = i == 0 ? (values[1] - values[0]) / dt : (values[n - 1] - values[n - 2]) / dt;
     else out[i] = windowSlope(i, h);
-  }
+  };
+  for (std::size_t i = 0; i < first; ++i) end(i);
+  for (std::size_t i = last; i < n; ++i) end(i);
   return out;
 }
 
