@@ -123,8 +123,9 @@ TEST(Filters, SweptAngleAndOffsetsAboutAreUnwrapAnglesOfEveryAtan2) {
 }
 
 // localSlope runs its whole windows side by side, in registers as wide as
-// the CPU has (issue 32); each slope must keep the bits of the plain
-// one-window-at-a-time definition, ends and groups' remainders included.
+// the CPU has, long ones from a transposed copy in overlapping stretches
+// (issue 32); each slope must keep the bits of the plain one-window-at-a-
+// time definition, ends, groups' remainders and overlaps included.
 TEST(Filters, LocalSlopeHasTheBitsOfOneWindowAtATime) {
   auto plain = [](const std::vector<double>& v, double dt, std::size_t halfWidth) {
     const std::size_t n = v.size();
@@ -147,11 +148,11 @@ TEST(Filters, LocalSlopeHasTheBitsOfOneWindowAtATime) {
   };
   std::mt19937 rng(32);
   std::normal_distribution<double> normal(0.0, 1.0);
-  for (const std::size_t n : {2u, 3u, 7u, 100u, 1001u, 6001u}) {
+  for (const std::size_t n : {2u, 3u, 7u, 47u, 48u, 100u, 333u, 1001u, 6001u}) {
     std::vector<double> v(n);
     double walk = 0.0;
     for (double& x : v) x = walk += normal(rng);
-    for (const std::size_t halfWidth : {0u, 1u, 3u, 50u, 150u, 600u}) {
+    for (const std::size_t halfWidth : {0u, 1u, 3u, 7u, 8u, 50u, 150u, 600u}) {
       const std::vector<double> fast = localSlope(v, 0.01, halfWidth), slow = plain(v, 0.01, halfWidth);
       ASSERT_EQ(fast.size(), slow.size());
       EXPECT_EQ(std::memcmp(fast.data(), slow.data(), sizeof(double) * n), 0) << "n " << n << " half width " << halfWidth;
