@@ -25,38 +25,38 @@ bool noneSet(const PairFlags (&flags)[kPairs]) {
   return (any[0] | any[1]) == 0;
 }
 
-// x - x is 0 for a finite x, NaN for an infinite or NaN one.
-bool allFinite(std::span<const double> v) {
-  PairFlags bad[kPairs] = {};
-  std::size_t i = 0;
-  for (; i + 2 * kPairs <= v.size(); i += 2 * kPairs) {
-    for (std::size_t p = 0; p < kPairs; ++p) {
-      Pair x;
-      std::memcpy(&x, v.data() + i + 2 * p, sizeof x);
-      bad[p] |= ~(x - x == 0.0);
-    }
-  }
-  bool ok = noneSet(bad);
-  for (; i < v.size(); ++i) ok = ok && v[i] - v[i] == 0.0;
-  return ok;
-}
-
-// Each time finite and above the one before.
-bool finiteAndIncreasing(std::span<const double> t) {
-  if (t.empty()) return true;
+// Every row usable: every value finite (x - x is 0 for a finite x, NaN for
+// an infinite or NaN one), each time above the one before (between two
+// finite ends, every time is then finite). All columns in one pass, so
+// that their streams from memory overlap: the columns are read here first,
+// from farther than the caches, and one column after another had waited
+// on each in turn.
+bool allRowsUsable(std::span<const double> t, std::span<const std::span<const double>> channels) {
+  const std::size_t n = t.size();
+  if (n == 0) return true;
   if (!(t.front() - t.front() == 0.0) || !(t.back() - t.back() == 0.0)) return false;
   PairFlags bad[kPairs] = {};
-  std::size_t i = 1;  // t[i - 1] < t[i]; between two finite ends, every time is finite
-  for (; i + 2 * kPairs <= t.size(); i += 2 * kPairs) {
+  std::size_t i = 0;
+  for (; i + 2 * kPairs + 1 <= n; i += 2 * kPairs) {  // rows i .. i + 7, times up to i + 8
     for (std::size_t p = 0; p < kPairs; ++p) {
-      Pair before, at;
-      std::memcpy(&before, t.data() + i + 2 * p - 1, sizeof before);
-      std::memcpy(&at, t.data() + i + 2 * p, sizeof at);
-      bad[p] |= ~(before < at);
+      Pair before, after;
+      std::memcpy(&before, t.data() + i + 2 * p, sizeof before);
+      std::memcpy(&after, t.data() + i + 2 * p + 1, sizeof after);
+      bad[p] |= ~(before < after);
+    }
+    for (const auto& c : channels) {
+      for (std::size_t p = 0; p < kPairs; ++p) {
+        Pair x;
+        std::memcpy(&x, c.data() + i + 2 * p, sizeof x);
+        bad[p] |= ~(x - x == 0.0);
+      }
     }
   }
   bool ok = noneSet(bad);
-  for (; i < t.size(); ++i) ok = ok && t[i - 1] < t[i];
+  for (; i < n; ++i) {
+    ok = ok && (i + 1 == n || t[i] < t[i + 1]);
+    for (const auto& c : channels) ok = ok && c[i] - c[i] == 0.0;
+  }
   return ok;
 }
 
@@ -150,9 +150,7 @@ UniformSeries resampleUniform(std::span<const double> time, std::span<const std:
       return out;
     }
   }
-  bool allUsable = finiteAndIncreasing(time);
-  for (const auto& c : channels) allUsable = allUsable && allFinite(c);
-  if (allUsable) return fromRows(time, channels, [](std::size_t k) { return k; }, time.size(), std::move(out), def);
+  if (allRowsUsable(time, channels)) return fromRows(time, channels, [](std::size_t k) { return k; }, time.size(), std::move(out), def);
   // Usable rows: finite everywhere, time strictly increasing.
   std::vector<std::size_t> rows;
   rows.reserve(time.size());

@@ -173,6 +173,19 @@ TEST(UniformSeries, HasThePlainConstructionsBits) {
     }
   }
   EXPECT_GT(compared, 1500);
+  // One repeated time, among the last rows (tested one by one) or the others.
+  for (std::size_t n = 1000; n < 1020; ++n) {
+    for (const std::size_t repeated : {n - 1, n - 9, n / 2}) {
+      std::vector<double> t(n), v(n);
+      for (std::size_t i = 0; i < n; ++i) t[i] = 0.01 * static_cast<double>(i), v[i] = normal(rng);
+      t[repeated] = t[repeated - 1];
+      const std::span<const double> channels[] = {v};
+      const UniformSeries fast = resampleUniform(t, channels, {}), slow = plainResample(t, channels, {});
+      EXPECT_EQ(fast.droppedRows, slow.droppedRows) << "n " << n << " repeated " << repeated;
+      ASSERT_EQ(fast.size(), slow.size());
+      EXPECT_EQ(std::memcmp(fast.channels[0].data(), slow.channels[0].data(), sizeof(double) * fast.size()), 0);
+    }
+  }
 }
 
 }  // namespace
