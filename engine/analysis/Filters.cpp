@@ -40,7 +40,7 @@ std::array<std::vector<double>, C> movingAveragesOf(const std::array<std::span<c
     for (; summed < last; ++summed)
       for (std::size_t c = 0; c < C; ++c) prefix[c][summed + 1] = run[c] = run[c] + columns[c][summed];
   };
-  const std::size_t wholeFirst = std::min(h, n), wholeLast = n > 2 * h ? n - h : wholeFirst;
+  const std::size_t wholeFirst = std::min(h, n), wholeLast = n > h && n - h > h ? n - h : wholeFirst;
   std::size_t i = wholeFirst;
   if (wholeLast > wholeFirst) {
     sumTo(wholeFirst + h);
