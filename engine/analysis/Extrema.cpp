@@ -27,24 +27,49 @@ bool swungInto(std::span<const double> v, std::size_t at, double delta, bool isM
   return false;
 }
 
+// The extremes so far: where, and their values (values[maxAt], values[minAt]).
+struct Extremes {
+  std::size_t maxAt, minAt;
+  double maxValue, minValue;
+};
+
+// Updates the extremes from sample i on and returns the first sample at
+// which the signal has turned by delta the way it is looked for (the end
+// if none). Held as values, in registers in a loop without calls (issue
+// 32: read through the index, or from the stack where the loop held calls,
+// each sample waited on the previous one's load); the same comparisons as
+// one loop over every sample, so the same extrema. Not inlined: GCC would
+// then keep the extremes on the stack for the calls around it.
+[[gnu::noinline]] std::size_t scanToTurn(std::span<const double> values, std::size_t i, int looking, double delta,
+                                          Extremes& at) {
+  Extremes e = at;
+  for (; i < values.size(); ++i) {
+    const double v = values[i];
+    if (v > e.maxValue) e.maxAt = i, e.maxValue = v;
+    if (v < e.minValue) e.minAt = i, e.minValue = v;
+    if ((looking >= 0 && v < e.maxValue - delta) || (looking <= 0 && v > e.minValue + delta)) break;
+  }
+  at = e;
+  return i;
+}
+
 }  // namespace
 
 std::vector<Extremum> findExtrema(std::span<const double> values, double delta) {
   std::vector<Extremum> out;
   if (values.size() < 3 || !(delta > 0.0)) return out;
-  std::size_t maxAt = 0, minAt = 0;
+  Extremes e{0, 0, values[0], values[0]};
   int looking = 0;  // +1 for a maximum, -1 for a minimum, 0 not yet decided
-  for (std::size_t i = 1; i < values.size(); ++i) {
-    if (values[i] > values[maxAt]) maxAt = i;
-    if (values[i] < values[minAt]) minAt = i;
-    if (looking >= 0 && values[i] < values[maxAt] - delta) {
-      if (looking > 0 || swungInto(values, maxAt, delta, true)) out.push_back(refined(values, maxAt, true));
+  for (std::size_t i = scanToTurn(values, 1, looking, delta, e); i < values.size();
+       i = scanToTurn(values, i + 1, looking, delta, e)) {
+    if (looking >= 0 && values[i] < e.maxValue - delta) {
+      if (looking > 0 || swungInto(values, e.maxAt, delta, true)) out.push_back(refined(values, e.maxAt, true));
       looking = -1;
-      minAt = i;
-    } else if (looking <= 0 && values[i] > values[minAt] + delta) {
-      if (looking < 0 || swungInto(values, minAt, delta, false)) out.push_back(refined(values, minAt, false));
+      e.minAt = i, e.minValue = values[i];
+    } else {
+      if (looking < 0 || swungInto(values, e.minAt, delta, false)) out.push_back(refined(values, e.minAt, false));
       looking = 1;
-      maxAt = i;
+      e.maxAt = i, e.maxValue = values[i];
     }
   }
   return out;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <vector>
 
 #include "engine/analysis/Filters.h"
@@ -18,18 +19,21 @@ struct Run {
   std::size_t length() const { return last - first + 1; }
 };
 
-// Indices in a vector with a moving front: each enters once and leaves
-// once, so one reserve serves the whole sweep below (std::deque allocates
-// in blocks and reaches each item through its map).
+// Indices in an array with a moving front: each enters once and leaves
+// once, so room for every index serves the whole sweep below (std::deque
+// allocates in blocks and reaches each item through its map; a vector's
+// push_back holds a call to grow, around which the sweep's loop kept its
+// state on the stack: issue 32).
 struct IndexQueue {
-  std::vector<std::size_t> items;
-  std::size_t head = 0;
-  bool empty() const { return head == items.size(); }
+  explicit IndexQueue(std::size_t capacity) : items(new std::size_t[capacity]) {}
+  std::unique_ptr<std::size_t[]> items;
+  std::size_t head = 0, tail = 0;
+  bool empty() const { return head == tail; }
   std::size_t front() const { return items[head]; }
-  std::size_t back() const { return items.back(); }
+  std::size_t back() const { return items[tail - 1]; }
   void popFront() { ++head; }
-  void popBack() { items.pop_back(); }
-  void push(std::size_t i) { items.push_back(i); }
+  void popBack() { --tail; }
+  void push(std::size_t i) { items[tail++] = i; }
 };
 
 // The longest interval whose values all lie within +-(rel |mid| + abs) of
@@ -37,8 +41,7 @@ struct IndexQueue {
 // as the allowed band (rel < 1), so the two-pointer sweep is exact.
 Run longestWithinOwnBand(const std::vector<double>& r, double rel, double abs) {
   Run best;
-  IndexQueue maxQ, minQ;  // indices of decreasing maxima / increasing minima
-  maxQ.items.reserve(r.size()), minQ.items.reserve(r.size());
+  IndexQueue maxQ(r.size()), minQ(r.size());  // indices of decreasing maxima / increasing minima
   std::size_t first = 0;
   for (std::size_t i = 0; i < r.size(); ++i) {
     while (!maxQ.empty() && r[maxQ.back()] <= r[i]) maxQ.popBack();

@@ -72,17 +72,24 @@ bool selectsByBracket(std::size_t n) {
   return widestDoubleLanes() == 8 && n >= 2048;  // below, a sort of the sample is no longer small beside the selection
 }
 
-Ranked selectRanks(std::span<const double> values, std::size_t below, std::size_t above) {
-  constexpr std::size_t kSample = 256, kMargin = 20;
-  const std::size_t n = values.size();
-  if (!selectsByBracket(n)) return selectOverAll(values, below, above);
-  double sample[kSample];
-  const std::size_t stride = n / kSample;
+constexpr std::size_t kSample = 256;
+
+// The sample the brackets come from, sorted; false where one of it is NaN.
+bool sortedSample(std::span<const double> values, double (&sample)[kSample]) {
+  const std::size_t stride = values.size() / kSample;
   for (std::size_t j = 0; j < kSample; ++j) {
     sample[j] = values[j * stride + stride / 2];
-    if (std::isnan(sample[j])) return selectOverAll(values, below, above);
+    if (std::isnan(sample[j])) return false;
   }
   std::sort(sample, sample + kSample);
+  return true;
+}
+
+// By the bracket the sorted sample gives ranks below and above.
+Ranked selectRanksBracketed(std::span<const double> values, std::size_t below, std::size_t above,
+                            const double (&sample)[kSample]) {
+  constexpr std::size_t kMargin = 20;
+  const std::size_t n = values.size();
   const auto at = static_cast<std::size_t>((static_cast<double>(below) + 0.5) / static_cast<double>(n) * kSample);
   constexpr double kInfinity = std::numeric_limits<double>::infinity();
   const double lo = at < kMargin ? -kInfinity : sample[at - kMargin];
@@ -99,6 +106,23 @@ Ranked selectRanks(std::span<const double> values, std::size_t below, std::size_
   return {low, high};
 }
 
+Ranked selectRanks(std::span<const double> values, std::size_t below, std::size_t above) {
+  double sample[kSample];
+  if (!selectsByBracket(values.size()) || !sortedSample(values, sample)) return selectOverAll(values, below, above);
+  return selectRanksBracketed(values, below, above, sample);
+}
+
+// quantile's two ranks and the weight between them, for q.
+struct QuantileRanks {
+  std::size_t below, above;
+  double w;
+};
+QuantileRanks ranksOf(std::size_t n, double q) {
+  const double at = std::clamp(q, 0.0, 1.0) * static_cast<double>(n - 1);
+  const auto below = static_cast<std::size_t>(std::floor(at));
+  return {below, std::min(below + 1, n - 1), at - static_cast<double>(below)};
+}
+
 }  // namespace
 
 // The two order statistics by selection, not by sorting (issue 32: the
@@ -106,12 +130,9 @@ Ranked selectRanks(std::span<const double> values, std::size_t below, std::size_
 // the same result to the bit.
 double quantile(std::span<const double> values, double q) {
   if (values.empty()) return 0.0;
-  const double at = std::clamp(q, 0.0, 1.0) * static_cast<double>(values.size() - 1);
-  const auto below = static_cast<std::size_t>(std::floor(at));
-  const std::size_t above = std::min(below + 1, values.size() - 1);
-  const double w = at - static_cast<double>(below);
-  const Ranked r = selectRanks(values, below, above);
-  return r.low * (1.0 - w) + r.high * w;
+  const QuantileRanks at = ranksOf(values.size(), q);
+  const Ranked r = selectRanks(values, at.below, at.above);
+  return r.low * (1.0 - at.w) + r.high * at.w;
 }
 
 // From the highest rank down: after the selection of rank b within [0, end),
@@ -121,8 +142,17 @@ double quantile(std::span<const double> values, double q) {
 std::vector<double> quantiles(std::span<const double> values, std::span<const double> qs) {
   std::vector<double> out(qs.size(), 0.0);
   if (values.empty()) return out;
-  if (selectsByBracket(values.size())) {  // one pass per q is then cheaper than the nesting below
-    for (std::size_t i = 0; i < qs.size(); ++i) out[i] = quantile(values, qs[i]);
+  if (selectsByBracket(values.size())) {
+    // One pass per q is then cheaper than the nesting below: quantile's,
+    // but the sample is the same for every q, so it is sorted once (issue 32).
+    double sample[kSample];
+    const bool bracketed = sortedSample(values, sample);
+    for (std::size_t i = 0; i < qs.size(); ++i) {
+      const QuantileRanks at = ranksOf(values.size(), qs[i]);
+      const Ranked r = bracketed ? selectRanksBracketed(values, at.below, at.above, sample)
+                                 : selectOverAll(values, at.below, at.above);
+      out[i] = r.low * (1.0 - at.w) + r.high * at.w;
+    }
     return out;
   }
   std::vector<double> work(values.begin(), values.end());

@@ -46,8 +46,11 @@ std::pair<RoseFeatures, HelixFeatures> roseAndHelix(const TrialSamples& s, Part 
     UniformSeries joint = resampleUniform(part(s.time), channels, def.rose.sampling);
     if (joint.ok() && joint.droppedRows == 0) {
       UniformSeries mass{joint.t0, joint.dt, {}, 0, {}}, contact{joint.t0, joint.dt, {}, 0, {}};
-      mass.channels = {std::move(joint.channels[0]), std::move(joint.channels[1])};
-      contact.channels = {std::move(joint.channels[2]), std::move(joint.channels[3])};
+      // Moved one by one: a braced list would copy them (its elements are const).
+      for (std::size_t c = 0; c < 2; ++c) {
+        mass.channels.push_back(std::move(joint.channels[c]));
+        contact.channels.push_back(std::move(joint.channels[c + 2]));
+      }
       return {detectRose(mass, def.rose), detectHelix(contact, def.helix)};
     }
   }

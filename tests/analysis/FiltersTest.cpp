@@ -32,22 +32,35 @@ TEST(Filters, LocalSlopeIsExactOnAQuadratic) {
   for (std::size_t i = 0; i < v.size(); ++i) EXPECT_NEAR(s[i], 0.6 * i * dt - 2.0, i == 0 || i + 1 == v.size() ? 4e-3 : 1e-9);
 }
 
-// movingAverages runs two columns' sums side by side (issue 32): each must
-// be movingAverage's to the bit, ends included.
-TEST(Filters, MovingAveragesAreTwoMovingAverages) {
+// movingAverages runs two columns' sums side by side, and both divide
+// their whole windows two at a time (issue 32): each must be the plain
+// prefix-sum average's to the bit (this is it), ends included.
+TEST(Filters, MovingAveragesAreTwoPlainMovingAverages) {
+  auto plain = [](const std::vector<double>& v, std::size_t halfWidth) {
+    const std::size_t n = v.size();
+    std::vector<double> out(n), prefix(n + 1, 0.0);
+    for (std::size_t i = 0; i < n; ++i) prefix[i + 1] = prefix[i] + v[i];
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t h = std::min({halfWidth, i, n - 1 - i});
+      out[i] = (prefix[i + h + 1] - prefix[i - h]) / static_cast<double>(2 * h + 1);
+    }
+    return out;
+  };
   std::mt19937 rng(34);
   std::normal_distribution<double> normal(0.0, 1.0);
-  for (const std::size_t n : {0u, 1u, 2u, 7u, 1001u}) {
+  for (const std::size_t n : {0u, 1u, 2u, 7u, 8u, 1000u, 1001u}) {
     std::vector<double> x(n), y(n);
     double wx = 0.0, wy = 0.0;
     for (std::size_t i = 0; i < n; ++i) x[i] = wx += normal(rng), y[i] = wy += 1e-3 * normal(rng);
-    for (const std::size_t halfWidth : {0u, 1u, 3u, 50u, 600u}) {
+    for (const std::size_t halfWidth : {0u, 1u, 2u, 3u, 4u, 50u, 499u, 500u, 600u}) {
       const auto [ax, ay] = movingAverages(x, y, halfWidth);
-      const std::vector<double> bx = movingAverage(x, halfWidth), by = movingAverage(y, halfWidth);
+      const std::vector<double> bx = plain(x, halfWidth), by = plain(y, halfWidth), cx = movingAverage(x, halfWidth);
       ASSERT_EQ(ax.size(), n);
       ASSERT_EQ(ay.size(), n);
+      ASSERT_EQ(cx.size(), n);
       EXPECT_TRUE(n == 0 || std::memcmp(ax.data(), bx.data(), sizeof(double) * n) == 0) << "n " << n << " half width " << halfWidth;
       EXPECT_TRUE(n == 0 || std::memcmp(ay.data(), by.data(), sizeof(double) * n) == 0) << "n " << n << " half width " << halfWidth;
+      EXPECT_TRUE(n == 0 || std::memcmp(cx.data(), bx.data(), sizeof(double) * n) == 0) << "n " << n << " half width " << halfWidth;
     }
   }
   const std::vector<double> longer(5, 1.0), shorter(3, 2.0);  // unequal: each on its own
@@ -59,7 +72,7 @@ TEST(Filters, MovingAveragesAreTwoMovingAverages) {
 // sweptAngleAbout and unwrapOffsetsAbout skip the atan2 of steps that
 // cannot wrap (issue 32): they must give unwrapAngles' turn and angles to
 // the bit, on paths that cross the -x axis
-// many times, stop at the centre (where atan2(0, -0) = pi), lie on the
+// many times (on it with dy = +0 and -0), stop at the centre (where atan2(0, -0) = pi), lie on the
 // axes and diagonals, jump, or hold a NaN.
 TEST(Filters, SweptAngleAndOffsetsAboutAreUnwrapAnglesOfEveryAtan2) {
   auto plain = [](const std::vector<double>& x, const std::vector<double>& y, double cx, double cy) {
@@ -87,6 +100,7 @@ TEST(Filters, SweptAngleAndOffsetsAboutAreUnwrapAnglesOfEveryAtan2) {
         case 2: x[i] = cx; break;                                  // on the y axis
         case 3: y[i] = cy + (x[i] - cx); break;                    // on a diagonal
         case 4: x[i] = cx - std::abs(y[i] - cy) * 1e-17; break;    // just left of the y axis
+        case 5: y[i] = cy == 0.0 ? -0.0 : cy; break;               // on the x axis, dy = -0 where it can be
         default: break;
       }
       if (trial % 50 == 7 && i == n / 2) x[i] = std::nan("");
@@ -109,8 +123,9 @@ TEST(Filters, SweptAngleAndOffsetsAboutAreUnwrapAnglesOfEveryAtan2) {
 }
 
 // localSlope runs its whole windows side by side, in registers as wide as
-// the CPU has (issue 32); each slope must keep the bits of the plain
-// one-window-at-a-time definition, ends and groups' remainders included.
+// the CPU has, long ones from a transposed copy in overlapping stretches
+// (issue 32); each slope must keep the bits of the plain one-window-at-a-
+// time definition, ends, groups' remainders and overlaps included.
 TEST(Filters, LocalSlopeHasTheBitsOfOneWindowAtATime) {
   auto plain = [](const std::vector<double>& v, double dt, std::size_t halfWidth) {
     const std::size_t n = v.size();
@@ -133,11 +148,11 @@ TEST(Filters, LocalSlopeHasTheBitsOfOneWindowAtATime) {
   };
   std::mt19937 rng(32);
   std::normal_distribution<double> normal(0.0, 1.0);
-  for (const std::size_t n : {2u, 3u, 7u, 100u, 1001u, 6001u}) {
+  for (const std::size_t n : {2u, 3u, 7u, 47u, 48u, 100u, 333u, 1001u, 6001u}) {
     std::vector<double> v(n);
     double walk = 0.0;
     for (double& x : v) x = walk += normal(rng);
-    for (const std::size_t halfWidth : {0u, 1u, 3u, 50u, 150u, 600u}) {
+    for (const std::size_t halfWidth : {0u, 1u, 3u, 7u, 8u, 50u, 150u, 600u}) {
       const std::vector<double> fast = localSlope(v, 0.01, halfWidth), slow = plain(v, 0.01, halfWidth);
       ASSERT_EQ(fast.size(), slow.size());
       EXPECT_EQ(std::memcmp(fast.data(), slow.data(), sizeof(double) * n), 0) << "n " << n << " half width " << halfWidth;
