@@ -53,10 +53,11 @@ std::size_t powerOfTwoAtLeast(std::size_t n) {
   return p;
 }
 
-// Each thread's two transform buffers, grown as needed and kept (a sweep's
-// worker analyses many points of one length; no allocation per search).
-// The filter's transform depends only on the key below, so a search of the
-// same shape as the last one (the rose's rho at every sweep point) reuses it.
+// Each thread's transform buffers (the signal, its spectrum, the filter's),
+// grown as needed and kept (a sweep's worker analyses many points of one
+// length; no allocation per search). The filter's transform depends only on
+// the key below, so a search of the same shape as the last one (a sweep
+// point's three searches, on one window) reuses it.
 struct FilterKey {
   std::size_t length = 0, fftLength = 0, samples = 0, count = 0;
   int sign = 0;
