@@ -198,18 +198,15 @@ void fftPowers(std::span<const std::complex<double>> tapered, double dt, const T
                std::size_t steps, std::vector<double>& powers) {
   const std::size_t fftLength = static_cast<std::size_t>(std::max(search.oversampling, 1)) * tapered.size();
   std::vector<double> side(steps + 1);
-  fftGridPowers(tapered, dt, fftLength, fMin, +1, steps + 1, side);
+  fftGridPowers(tapered, dt, fftLength, fMin, steps + 1, side);
   const std::size_t negatives = powers.size() - (steps + 1);
   for (std::size_t k = 0; k <= steps; ++k) powers[negatives + k] = side[k];
   if (negatives > 0) {
-    // The power of z at -f is the power of conj(z) at +f (conjugating the
-    // sum conjugates each term): the negative side as the positive side of
-    // the conjugate runs on the filter the positive side has just made
-    // (Periodogram.cpp keeps one), where a search of sign -1 made its own,
-    // a transform more for every search of both sides.
+    // The negative side as the positive side of the conjugate (Periodogram.h),
+    // on the filter the positive side has just made.
     std::vector<std::complex<double>> conjugate(tapered.size());
     for (std::size_t m = 0; m < tapered.size(); ++m) conjugate[m] = std::conj(tapered[m]);
-    fftGridPowers(conjugate, dt, fftLength, fMin, +1, steps + 1, side);
+    fftGridPowers(conjugate, dt, fftLength, fMin, steps + 1, side);
     const std::size_t first = fMin > 0.0 ? 0 : 1;  // f = 0 is on the positive side only
     for (std::size_t k = first; k <= steps; ++k) powers[negatives - 1 - (k - first)] = side[k];
   }

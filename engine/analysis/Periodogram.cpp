@@ -60,32 +60,29 @@ std::size_t powerOfTwoAtLeast(std::size_t n) {
 // point's three searches, on one window) reuses it.
 struct FilterKey {
   std::size_t length = 0, fftLength = 0, samples = 0, count = 0;
-  int sign = 0;
   bool operator==(const FilterKey&) const = default;
 };
-// The chirp c_j of one (2L, sign), for j below its size: a value depends
-// on j, 2L and the sign alone, so a search of another count or sample count
+// The chirp c_j of one 2L, for j below its size: a value depends on j and
+// 2L alone, so a search of another count or sample count
 // with the same 2L reuses it (a sweep point's rose and helix searches have
 // the same window, hence the same 2L = 2 x oversampling x n).
 struct Chirp {
   std::int64_t twiceL = 0;
-  int sign = 0;
   std::vector<std::complex<double>> values;
 };
-// The factors w_m = exp(-2 pi i sign start m dt) c_m that multiply the
+// The factors w_m = exp(-2 pi i start m dt) c_m that multiply the
 // samples: they depend on these alone, and a sweep point's three searches
 // (the rose's, the helix's two sides) share them.
 struct TurnKey {
   std::size_t samples = 0;
   std::int64_t twiceL = 0;
-  int sign = 0;
   double start = 0.0, dt = 0.0;
   bool operator==(const TurnKey&) const = default;
 };
 struct Workspace {
   std::size_t length = 0;
   FftwBuffer signal, spectrum, filter;
-  Chirp chirps[2];  // by sign: [0] negative, [1] positive
+  Chirp chirp;
   FilterKey filterKey;  // what `filter` holds the transform of; empty: nothing
   std::vector<std::complex<double>> turned;  // w_m for turnedKey
   TurnKey turnedKey;                         // empty: nothing
@@ -99,11 +96,11 @@ struct Workspace {
   }
 };
 
-// exp(-i pi sign j^2 / L): the chirp, its phase reduced in integers (j^2
+// exp(-i pi j^2 / L): the chirp, its phase reduced in integers (j^2
 // mod 2L is exact below 2^63), so it is as accurate for j = 10^5 as for 1.
-double chirpPhase(std::int64_t j, std::int64_t twiceL, int sign) {
+double chirpPhase(std::int64_t j, std::int64_t twiceL) {
   const std::int64_t r = (j * j) % twiceL;
-  return -std::numbers::pi * sign * 2.0 * static_cast<double>(r) / static_cast<double>(twiceL);
+  return -std::numbers::pi * 2.0 * static_cast<double>(r) / static_cast<double>(twiceL);
 }
 
 // Samples of exp(i phase) are made by complex products from an exact start
@@ -129,18 +126,18 @@ inline std::complex<double> times(std::complex<double> a, std::complex<double> b
 // products it did alone, so the same bits).
 constexpr std::size_t kSideBySide = 8;
 
-// c_j = exp(-i pi sign j^2 / L) for j = 0 .. count - 1. From j to j + 1 the
-// phase grows by -pi sign (2 j + 1) / L, and that step by -2 pi sign / L.
-void chirps(std::int64_t twiceL, int sign, std::size_t count, std::complex<double>* out) {
-  const std::complex<double> stepRatio = std::polar(1.0, -2.0 * std::numbers::pi * sign * 2.0 / static_cast<double>(twiceL));
+// c_j = exp(-i pi j^2 / L) for j = 0 .. count - 1. From j to j + 1 the
+// phase grows by -pi (2 j + 1) / L, and that step by -2 pi / L.
+void chirps(std::int64_t twiceL, std::size_t count, std::complex<double>* out) {
+  const std::complex<double> stepRatio = std::polar(1.0, -2.0 * std::numbers::pi * 2.0 / static_cast<double>(twiceL));
   for (std::size_t run = 0; run * kRestart < count; run += kSideBySide) {
     std::complex<double> c[kSideBySide], step[kSideBySide];
     const std::size_t runs = std::min(kSideBySide, (count - run * kRestart + kRestart - 1) / kRestart);
     for (std::size_t g = 0; g < runs; ++g) {
       const auto jj = static_cast<std::int64_t>((run + g) * kRestart);
-      c[g] = std::polar(1.0, chirpPhase(jj, twiceL, sign));
+      c[g] = std::polar(1.0, chirpPhase(jj, twiceL));
       const std::int64_t odd = (2 * jj + 1) % twiceL;
-      step[g] = std::polar(1.0, -std::numbers::pi * sign * 2.0 * static_cast<double>(odd) / static_cast<double>(twiceL));
+      step[g] = std::polar(1.0, -std::numbers::pi * 2.0 * static_cast<double>(odd) / static_cast<double>(twiceL));
     }
     for (std::size_t r = 0; r < kRestart; ++r) {
       for (std::size_t g = 0; g < runs; ++g) {
@@ -157,14 +154,14 @@ void chirps(std::int64_t twiceL, int sign, std::size_t count, std::complex<doubl
 }  // namespace
 
 // The grid's k-th power is |X_k|^2 with X_k = sum_m a_m w^(k m), a_m the
-// shifted samples and w = exp(-2 pi i sign / fftLength): a transform of
+// shifted samples and w = exp(-2 pi i / fftLength): a transform of
 // fftLength points read at its first `count` bins. Bluestein's identity
 // k m = (k^2 + m^2 - (k - m)^2) / 2 makes it a convolution,
 //   X_k = c_k sum_m (a_m c_m) conj(c_(k-m)),   c_j = w^(j^2 / 2),
 // of n samples with count + n - 1 chirp values, done by transforms of a
 // power of two P >= n + count - 1. |c_k| = 1, so the power is |y_k|^2 / P^2.
 void fftGridPowers(std::span<const std::complex<double>> samples, double dt, std::size_t fftLength, double start,
-                   int sign, std::size_t count, std::span<double> out) {
+                   std::size_t count, std::span<double> out) {
   const std::size_t n = samples.size();
   if (count == 0) return;
   if (n == 0) {
@@ -178,20 +175,20 @@ void fftGridPowers(std::span<const std::complex<double>> samples, double dt, std
   fftw_complex* spectrum = work.spectrum.get();
   fftw_complex* h = work.filter.get();
   const auto twiceL = static_cast<std::int64_t>(2 * fftLength);
-  Chirp& chirp = work.chirps[sign > 0 ? 1 : 0];
-  if (chirp.twiceL != twiceL || chirp.sign != sign || chirp.values.size() < std::max(n, count)) {
-    chirp.twiceL = twiceL, chirp.sign = sign;
+  Chirp& chirp = work.chirp;
+  if (chirp.twiceL != twiceL || chirp.values.size() < std::max(n, count)) {
+    chirp.twiceL = twiceL;
     chirp.values.resize(std::max(n, count));
-    chirps(twiceL, sign, chirp.values.size(), chirp.values.data());
+    chirps(twiceL, chirp.values.size(), chirp.values.data());
   }
   const std::complex<double>* c = chirp.values.data();
-  // The shift that puts `start` on bin 0, exp(-2 pi i sign start m dt), times
+  // The shift that puts `start` on bin 0, exp(-2 pi i start m dt), times
   // the chirp c_m: w_m, made once for a search's shape (each w_m by the
   // very products a search made for it alone, so the same bits).
-  const TurnKey turnKey{n, twiceL, sign, start, dt};
+  const TurnKey turnKey{n, twiceL, start, dt};
   if (!(work.turnedKey == turnKey)) {
     work.turned.resize(n);
-    const double turn = -2.0 * std::numbers::pi * (sign > 0 ? 1.0 : -1.0) * start * dt;
+    const double turn = -2.0 * std::numbers::pi * start * dt;
     const std::complex<double> turnStep = std::polar(1.0, turn);
     for (std::size_t run = 0; run * kRestart < n; run += kSideBySide) {
       std::complex<double> shift[kSideBySide];
@@ -215,7 +212,7 @@ void fftGridPowers(std::span<const std::complex<double>> samples, double dt, std
     a[m][1] = z.imag();
   }
   for (std::size_t m = n; m < length; ++m) a[m][0] = a[m][1] = 0.0;
-  const FilterKey key{length, fftLength, n, count, sign};
+  const FilterKey key{length, fftLength, n, count};
   if (!(work.filterKey == key)) {
     // conj(c_j) at j = 0 .. count - 1 and, wrapped round, j = -(n - 1) .. -1,
     // laid out in `spectrum` (free until the signal's transform) and

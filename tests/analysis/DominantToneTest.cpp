@@ -134,7 +134,10 @@ TEST(DominantTone, TheFftGridIsTheDirectSumsGrid) {
   for (const int sign : {+1, -1}) {
     std::vector<double> fft(count), direct(count), freqs(count);
     for (std::size_t k = 0; k < count; ++k) freqs[k] = sign * (start + static_cast<double>(k) * df);
-    fftGridPowers(z, dt, fftLength, start, sign, count, fft);
+    std::vector<std::complex<double>> side(z);  // the negative side: the positive side of conj(z) (Periodogram.h)
+    if (sign < 0)
+      for (auto& v : side) v = std::conj(v);
+    fftGridPowers(side, dt, fftLength, start, count, fft);
     periodogramPowers(z, freqs, dt, direct);
     const double top = *std::max_element(direct.begin(), direct.end());
     for (std::size_t k = 0; k < count; ++k) EXPECT_NEAR(fft[k], direct[k], 1e-10 * top) << sign << " " << k;
